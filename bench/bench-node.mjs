@@ -1,0 +1,98 @@
+// Benchmark of one slider update in Node (the wasm-pack nodejs build in pkg-node/):
+// tune + simulate 3001 points (t_end 30, dt 0.01, set-point step at 0, load step at 15) +
+// analyze, on the boiler steam drum; then every method of methods() on its first preset.
+//
+//   node bench/bench-node.mjs [runs]      (scripts/bench.sh builds pkg-node and runs this)
+import { createRequire } from 'node:module';
+import { fileURLToPath } from 'node:url';
+import path from 'node:path';
+import os from 'node:os';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const require = createRequire(import.meta.url);
+const pidlab = require(path.resolve(here, '../pkg-node/pidlab.js'));
+
+const RUNS = Math.max(200, Number(process.argv[2]) || 1000);
+const WARMUP = 100;
+const BOILER = { family: 'ipdt_ir', k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 };
+const IPD = { cr: { num: [0.6029], den: [1, 0] }, cy: { num: [1.4976, 1.9849, 0.6029], den: [1, 0] } };
+const SCENARIO = { t_end: 30, dt: 0.01, setpoint: { time: 0, size: 1 }, disturbance: { time: 15, size: 1 } };
+
+function stats(samples) {
+  const s = [...samples].sort((a, b) => a - b);
+  const q = (p) => s[Math.min(s.length - 1, Math.floor(p * s.length))];
+  return { n: s.length, median: q(0.5), p95: q(0.95), min: s[0], mean: s.reduce((a, b) => a + b, 0) / s.length };
+}
+function time(fn, runs, warmup = WARMUP) {
+  for (let i = 0; i < warmup; i++) fn();
+  const out = new Array(runs);
+  for (let i = 0; i < runs; i++) {
+    const t0 = process.hrtime.bigint();
+    fn();
+    out[i] = Number(process.hrtime.bigint() - t0) / 1e6; // ms
+  }
+  return stats(out);
+}
+const f = (ms) => (ms < 1 ? `${(ms * 1000).toFixed(0)} µs` : `${ms.toFixed(2)} ms`);
+
+const ids = new Set(pidlab.methods().methods.map((m) => m.id));
+let tuneCall = null;
+if (ids.has('praveen_kumar')) tuneCall = { method: 'praveen_kumar', plant: BOILER, params: { lambda: 1.9, epsilon: 0.2 } };
+else if (ids.has('arvanitis_alg1')) tuneCall = { method: 'arvanitis_alg1', plant: BOILER, params: {} };
+
+function update() {
+  const controller = tuneCall ? pidlab.tune(tuneCall).controller : IPD;
+  const sim = pidlab.simulate({ plant: BOILER, controller, scenario: SCENARIO });
+  const an = pidlab.analyze({ plant: BOILER, controller });
+  return [sim, an];
+}
+const [sim0, an0] = update();
+if (sim0.y.length !== 3001) throw new Error(`expected 3001 samples, got ${sim0.y.length}`);
+
+console.log(`# pidlab benchmark: wasm in Node ${process.version} (${os.cpus()[0]?.model ?? '?'}, ${os.cpus().length} cpus)`);
+console.log();
+console.log(`One slider update on the boiler: ${tuneCall ? `tune(${tuneCall.method}${tuneCall.params.lambda ? `, λ = ${tuneCall.params.lambda}` : ''})` : 'literal I-PD (no rule on main yet)'} + simulate (3001 points, set-point + load step) + analyze; ${RUNS} runs after ${WARMUP} warm-up runs.`);
+console.log(`(Ms = ${an0.ms?.toFixed?.(3)}, stable = ${an0.stable}, diverged = ${sim0.diverged ?? false})`);
+console.log();
+console.log('| step | median | p95 | min | mean |');
+console.log('|---|---:|---:|---:|---:|');
+const row = (name, s) => console.log(`| ${name} | ${f(s.median)} | ${f(s.p95)} | ${f(s.min)} | ${f(s.mean)} |`);
+const full = time(update, RUNS);
+row('**update (tune + simulate + analyze)**', full);
+let ctl = IPD;
+if (tuneCall) {
+  row('tune', time(() => pidlab.tune(tuneCall), RUNS));
+  ctl = pidlab.tune(tuneCall).controller;
+}
+row('simulate (3001 points)', time(() => pidlab.simulate({ plant: BOILER, controller: ctl, scenario: SCENARIO }), RUNS));
+row('analyze', time(() => pidlab.analyze({ plant: BOILER, controller: ctl }), RUNS));
+
+// Every method on its first preset.
+const presets = (() => { const p = pidlab.presets?.(); return Array.isArray(p) ? p : p?.presets ?? []; })();
+const methods = pidlab.methods().methods;
+if (methods.length) {
+  console.log();
+  console.log(`Each method tuned on its first preset (${Math.min(RUNS, 200)} runs each; update = tune + simulate the preset's scenario + analyze):`);
+  console.log();
+  console.log('| method | preset | tune median | tune p95 | points | update median | update p95 |');
+  console.log('|---|---|---:|---:|---:|---:|---:|');
+  for (const m of methods) {
+    const p = presets.find((x) => x.tune && x.tune.method === m.id);
+    if (!p) { console.log(`| ${m.id} | (no preset) | | | | | |`); continue; }
+    const call = { method: m.id, plant: p.plant, params: p.tune.params ?? {} };
+    try {
+      const c = pidlab.tune(call).controller;
+      const n = pidlab.simulate({ plant: p.plant, controller: c, scenario: p.scenario }).y.length;
+      const runs = Math.min(RUNS, 200);
+      const tt = time(() => pidlab.tune(call), runs, 20);
+      const tu = time(() => {
+        const cc = pidlab.tune(call).controller;
+        pidlab.simulate({ plant: p.plant, controller: cc, scenario: p.scenario });
+        pidlab.analyze({ plant: p.plant, controller: cc });
+      }, runs, 20);
+      console.log(`| ${m.id} | ${p.id} | ${f(tt.median)} | ${f(tt.p95)} | ${n} | ${f(tu.median)} | ${f(tu.p95)} |`);
+    } catch (e) {
+      console.log(`| ${m.id} | ${p.id} | error: ${e.message} | | | | |`);
+    }
+  }
+}

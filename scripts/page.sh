@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# THE run command of pidlab: builds the wasm for the browser and serves the page.
+#
+#   bash scripts/page.sh             # build, then serve www/ on http://127.0.0.1:8000/
+#   bash scripts/page.sh --no-serve  # build only
+#   PORT=8080 bash scripts/page.sh   # another port
+#
+# Installs what is missing first (scripts/ensure-tools.sh). Builds www/pkg/ (wasm-pack, target
+# web) and, once the page has its bundler (scripts/build-page.sh), dist/pidlab.html: the whole
+# page in one file that works offline (open it straight from disk).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export PATH="$HOME/.cargo/bin:$PATH"
+
+serve=1
+for a in "$@"; do
+  case "$a" in
+    --no-serve) serve=0 ;;
+    *) echo "page.sh: unknown argument $a (use --no-serve)" >&2; exit 2 ;;
+  esac
+done
+PORT=${PORT:-8000}
+
+bash scripts/ensure-tools.sh
+echo "== wasm-pack build --release --target web --out-dir www/pkg"
+wasm-pack build --release --target web --out-dir www/pkg
+if [ -f scripts/build-page.sh ]; then
+  echo "== scripts/build-page.sh"
+  bash scripts/build-page.sh
+fi
+
+echo
+if [ -f dist/pidlab.html ]; then
+  echo "single-file page: $(pwd)/dist/pidlab.html (open it directly, no server needed)"
+fi
+if [ "$serve" = 0 ]; then
+  echo "built www/pkg/ (serve www/ with: python3 -m http.server $PORT --bind 127.0.0.1 --directory www)"
+  exit 0
+fi
+[ -f www/index.html ] || echo "page.sh: warning: www/index.html does not exist yet" >&2
+echo "serving www/ at http://127.0.0.1:$PORT/  (Ctrl-C to stop)"
+exec python3 -m http.server "$PORT" --bind 127.0.0.1 --directory www
