@@ -2,14 +2,13 @@
 # Installs whatever this machine lacks to build and test pidlab. Idempotent; takes about a
 # second when everything is present.
 #
-#   bash scripts/ensure-tools.sh            # Rust wasm toolchain, wasm-pack, wasm-opt, npm deps
+#   bash scripts/ensure-tools.sh            # Rust wasm toolchain, wasm-pack, npm deps
 #   bash scripts/ensure-tools.sh --browser  # the same plus Debian's chromium (browser tests)
 #
 # What it installs when missing (a new machine has rustup's Rust, Node 20/npm and Python 3):
 #   - rustup components rustfmt and clippy, and the wasm32-unknown-unknown target;
 #   - wasm-pack (cargo install --locked; ~3 min). wasm-pack itself installs the wasm-bindgen CLI
 #     matching Cargo.lock on its first build (~5 min, cached under ~/.cache/.wasm-pack);
-#   - wasm-opt from Debian's binaryen package (apt-get), used by wasm-pack's release builds;
 #   - the npm devDependencies of package.json (npm ci), e.g. playwright-core;
 #   - with --browser: Debian's chromium (/usr/bin/chromium) for the browser tests.
 set -euo pipefail
@@ -67,12 +66,8 @@ if ! command -v wasm-pack >/dev/null; then
   cargo install wasm-pack --locked --version "$WASM_PACK_VERSION"
 fi
 
-# --- wasm-opt (Debian binaryen; wasm-pack cannot download it here) ---------------------------
-# Cargo.toml's [package.metadata.wasm-pack.profile.*] passes the feature flags that rustc's
-# default wasm32 output needs (binaryen 108 does not enable them by itself).
-if ! command -v wasm-opt >/dev/null; then
-  apt_install binaryen
-fi
+# --- wasm-opt: not used. Cargo.toml sets wasm-opt = false for wasm-pack (Debian's binaryen 108
+# breaks the module, npm's binaryen 132 gains nothing measurable; see README "wasm-opt").
 
 # --- npm devDependencies (playwright-core for the browser tests) -----------------------------
 if [ -f package.json ]; then
@@ -98,4 +93,4 @@ if [ "$want_browser" = 1 ] && [ ! -x /usr/bin/chromium ]; then
   apt_install chromium
 fi
 
-say "ok ($(wasm-pack --version), $(wasm-opt --version 2>/dev/null | head -1)$([ "$want_browser" = 1 ] && echo ", $(/usr/bin/chromium --version 2>/dev/null)"))"
+say "ok ($(rustc --version), $(wasm-pack --version), node $(node --version)$([ "$want_browser" = 1 ] && echo ", $(/usr/bin/chromium --version 2>/dev/null)"))"

@@ -1,0 +1,263 @@
+//! `cargo run --release --example bench [runs]` — the native half of the benchmark
+//! (`scripts/bench.sh` runs it and the Node half, `bench/bench-node.mjs`).
+//!
+//! One slider update for the boiler steam drum: tune (Praveen Kumar & Narayana λ = 1.9 when
+//! that rule is registered, else Arvanitis Algorithm I, else a literal I-PD controller) +
+//! simulate 3001 points (t_end 30, dt 0.01, set-point step at 0, load step at 15) + analyze.
+//! Median and p95 over `runs` (default 1000, at least 200) after 100 warm-up runs; then each
+//! registered method tuned on its first preset.
+
+use pidlab::controller::Controller;
+use pidlab::freq::analyze;
+use pidlab::plant::{Family, Plant};
+use pidlab::rules::{self, Params};
+use pidlab::sim::{simulate, Scenario};
+use serde_json::Value;
+use std::hint::black_box;
+use std::time::Instant;
+
+const WARMUP: usize = 100;
+
+struct Stats {
+    median: f64,
+    p95: f64,
+    min: f64,
+    mean: f64,
+}
+
+/// Times `f` (milliseconds per call).
+fn time(mut f: impl FnMut(), runs: usize, warmup: usize) -> Stats {
+    for _ in 0..warmup {
+        f();
+    }
+    let mut v: Vec<f64> = (0..runs)
+        .map(|_| {
+            let t0 = Instant::now();
+            f();
+            t0.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    v.sort_by(f64::total_cmp);
+    let q = |p: f64| v[((p * v.len() as f64) as usize).min(v.len() - 1)];
+    Stats {
+        median: q(0.5),
+        p95: q(0.95),
+        min: v[0],
+        mean: v.iter().sum::<f64>() / v.len() as f64,
+    }
+}
+
+fn fmt(ms: f64) -> String {
+    if ms < 1.0 {
+        format!("{:.0} µs", ms * 1e3)
+    } else {
+        format!("{ms:.2} ms")
+    }
+}
+
+fn row(name: &str, s: &Stats) {
+    println!(
+        "| {name} | {} | {} | {} | {} |",
+        fmt(s.median),
+        fmt(s.p95),
+        fmt(s.min),
+        fmt(s.mean)
+    );
+}
+
+fn num(v: &Value, key: &str) -> Option<f64> {
+    v.get(key).and_then(Value::as_f64)
+}
+
+fn nums(v: &Value, key: &str) -> Option<Vec<f64>> {
+    v.get(key)?.as_array()?.iter().map(Value::as_f64).collect()
+}
+
+/// A preset's plant (`{family, …}` or `{num, den, delay}`).
+fn plant_of(v: &Value) -> Option<Plant> {
+    if let Some(fam) = v.get("family").and_then(Value::as_str) {
+        return Family::from_params(fam, |n| num(v, n))
+            .ok()
+            .map(|f| f.plant());
+    }
+    Plant::from_desc(
+        &nums(v, "num")?,
+        &nums(v, "den")?,
+        num(v, "delay").unwrap_or(0.0),
+    )
+    .ok()
+}
+
+/// A preset's scenario.
+fn scenario_of(v: &Value) -> Option<Scenario> {
+    let step = |k: &str| -> (f64, f64) {
+        v.get(k)
+            .map(|s| (num(s, "time").unwrap_or(0.0), num(s, "size").unwrap_or(0.0)))
+            .unwrap_or((0.0, 0.0))
+    };
+    let (st, ss) = step("setpoint");
+    let (dt_, ds) = step("disturbance");
+    Some(Scenario::steps(
+        num(v, "t_end")?,
+        num(v, "dt")?,
+        st,
+        ss,
+        dt_,
+        ds,
+    ))
+}
+
+fn main() {
+    let runs: usize = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(1000)
+        .max(200);
+    let plant = Family::IpdtIr {
+        k: 0.547,
+        tau: 1.06,
+        tau_z: 0.418,
+        theta: 0.1,
+    }
+    .plant();
+    let scenario = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
+    let ipd = Controller::from_desc(
+        &[0.6029],
+        &[1.0, 0.0],
+        &[1.4976, 1.9849, 0.6029],
+        &[1.0, 0.0],
+    )
+    .expect("literal I-PD controller");
+    let ids: Vec<String> = rules::methods().into_iter().map(|m| m.id).collect();
+    let tune_call: Option<(&str, Params)> = if ids.iter().any(|i| i == "praveen_kumar") {
+        Some((
+            "praveen_kumar",
+            Params::default().with("lambda", 1.9).with("epsilon", 0.2),
+        ))
+    } else if ids.iter().any(|i| i == "arvanitis_alg1") {
+        Some(("arvanitis_alg1", Params::default()))
+    } else {
+        None
+    };
+    let controller = |call: &Option<(&str, Params)>| -> Controller {
+        match call {
+            Some((id, p)) => {
+                rules::tune(id, &plant, p)
+                    .expect("tune the boiler")
+                    .controller
+            }
+            None => ipd.clone(),
+        }
+    };
+
+    let c0 = controller(&tune_call);
+    let s0 = simulate(&plant, &c0, &scenario).expect("simulate");
+    let a0 = analyze(&plant, &c0).expect("analyze");
+    assert_eq!(s0.y.len(), 3001);
+
+    println!("# pidlab benchmark: native");
+    println!();
+    println!(
+        "One slider update on the boiler: {} + simulate (3001 points, set-point + load step) + analyze; {runs} runs after {WARMUP} warm-up runs.",
+        match &tune_call {
+            Some((id, _)) => format!("tune({id})"),
+            None => "literal I-PD (no boiler rule registered yet)".into(),
+        }
+    );
+    println!(
+        "(Ms = {}, stable = {}, diverged = {})",
+        a0.ms.map_or("-".into(), |m| format!("{m:.3}")),
+        a0.stable,
+        s0.diverged
+    );
+    println!();
+    println!("| step | median | p95 | min | mean |");
+    println!("|---|---:|---:|---:|---:|");
+    let full = time(
+        || {
+            let c = controller(&tune_call);
+            black_box(simulate(&plant, &c, &scenario).ok());
+            black_box(analyze(&plant, &c).ok());
+        },
+        runs,
+        WARMUP,
+    );
+    row("**update (tune + simulate + analyze)**", &full);
+    if tune_call.is_some() {
+        row(
+            "tune",
+            &time(|| drop(black_box(controller(&tune_call))), runs, WARMUP),
+        );
+    }
+    row(
+        "simulate (3001 points)",
+        &time(
+            || drop(black_box(simulate(&plant, &c0, &scenario).ok())),
+            runs,
+            WARMUP,
+        ),
+    );
+    row(
+        "analyze",
+        &time(|| drop(black_box(analyze(&plant, &c0).ok())), runs, WARMUP),
+    );
+
+    let methods = rules::methods();
+    if methods.is_empty() {
+        return;
+    }
+    let presets = rules::presets();
+    let per = runs.min(200);
+    println!();
+    println!("Each method tuned on its first preset ({per} runs each; update = tune + simulate the preset's scenario + analyze):");
+    println!();
+    println!("| method | preset | tune median | tune p95 | points | update median | update p95 |");
+    println!("|---|---|---:|---:|---:|---:|---:|");
+    for m in methods {
+        let Some(p) = presets
+            .iter()
+            .find(|p| p.tune.get("method").and_then(Value::as_str) == Some(m.id.as_str()))
+        else {
+            println!("| {} | (no preset) | | | | | |", m.id);
+            continue;
+        };
+        let (Some(pl), Some(sc)) = (plant_of(&p.plant), scenario_of(&p.scenario)) else {
+            println!("| {} | {} | (preset not parsed) | | | | |", m.id, p.id);
+            continue;
+        };
+        let params =
+            Params::from_value(p.tune.get("params").unwrap_or(&Value::Null)).unwrap_or_default();
+        let c = match rules::tune(&m.id, &pl, &params) {
+            Ok(t) => t.controller,
+            Err(e) => {
+                println!("| {} | {} | error: {e} | | | | |", m.id, p.id);
+                continue;
+            }
+        };
+        let n = simulate(&pl, &c, &sc).map_or(0, |s| s.y.len());
+        let tt = time(
+            || drop(black_box(rules::tune(&m.id, &pl, &params).ok())),
+            per,
+            20,
+        );
+        let tu = time(
+            || {
+                if let Ok(t) = rules::tune(&m.id, &pl, &params) {
+                    black_box(simulate(&pl, &t.controller, &sc).ok());
+                    black_box(analyze(&pl, &t.controller).ok());
+                }
+            },
+            per,
+            20,
+        );
+        println!(
+            "| {} | {} | {} | {} | {n} | {} | {} |",
+            m.id,
+            p.id,
+            fmt(tt.median),
+            fmt(tt.p95),
+            fmt(tu.median),
+            fmt(tu.p95)
+        );
+    }
+}
