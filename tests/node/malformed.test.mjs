@@ -83,13 +83,13 @@ function mutate(base, r) {
     const all = paths(v);
     const p = pick(all);
     const roll = r();
-    if (roll < 0.6) v = setPath(v, p, pick(GARBAGE), false);
+    if (roll < 0.6) v = setPath(v, p, clone(pick(GARBAGE)), false);
     else if (roll < 0.8 && p.length > 0) v = setPath(v, p, undefined, true);
-    else if (roll < 0.9 && v && typeof v === 'object') v = setPath(v, [...p.slice(0, -1), 'extra_' + e], pick(GARBAGE), false);
+    else if (roll < 0.9 && v && typeof v === 'object') v = setPath(v, [...p.slice(0, -1), "extra_" + e], clone(pick(GARBAGE)), false);
     else if (typeof (p.length ? p.slice(0, -1).reduce((o, k) => o[k], v)[p[p.length - 1]] : v) === 'number') {
       // Scale a number to an extreme: huge gains, tiny steps, negative times.
       v = setPath(v, p, pick([1e5, 1e6, -1e6, 1e-12, -3, 1e9, 0]), false);
-    } else v = setPath(v, p, pick(GARBAGE), false);
+    } else v = setPath(v, p, clone(pick(GARBAGE)), false);
   }
   return v;
 }
@@ -201,9 +201,16 @@ for (const name of EXPORTS) {
       const ms = checkCall(name, input, failures);
       if (ms > slowest.ms) slowest = { ms, input };
     }
-    const report = failures
-      .slice(0, 10)
-      .map((f) => `  ${f.name}(${show(f.input)}) -> ${JSON.stringify(f.msg)}`)
+    // Group the failures by message shape (numbers and quoted values blanked) so that each
+    // distinct defect shows once, with its first input.
+    const groups = new Map();
+    for (const f of failures) {
+      const key = f.msg.replace(/-?[0-9][0-9.e+-]*/g, '#').replace(/'[^']*'/g, "'…'").slice(0, 80);
+      if (!groups.has(key)) groups.set(key, { n: 0, f });
+      groups.get(key).n++;
+    }
+    const report = [...groups.values()]
+      .map(({ n, f }) => `  ${n}× ${JSON.stringify(f.msg.slice(0, 200))}, e.g. ${f.name}(${show(f.input)})`)
       .join('\n');
     test.diagnostic?.(`slowest ${name} call: ${slowest.ms.toFixed(1)} ms for ${show(slowest.input)}`);
     assert.equal(failures.length, 0, `${failures.length} of ${inputs.length} calls broke the contract:\n${report}`);
