@@ -7,7 +7,8 @@
 # --release (native unit, integration and doc tests), wasm-pack test --node --release (the same
 # test sources compiled to wasm32), the Node tests of the wasm-pack nodejs package
 # (tests/node/), and, when the page is there (scripts/build-page.sh and tests/browser/), the
-# browser tests in headless Chromium. Fails on the first failing section; ends with a summary.
+# browser tests in headless Chromium. Runs every section even after a failure (FAIL_FAST=1 stops
+# at the first), ends with a summary, and exits non-zero when anything failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -18,6 +19,7 @@ LOG=$(mktemp -t pidlab-test.XXXXXX)
 trap 'rm -f "$LOG"' EXIT
 T0=$(date +%s)
 TIMES=()
+FAILED=()
 
 section() {
   echo
@@ -34,9 +36,10 @@ run() {
   "$@" 2>&1 | tee -a "$LOG" || rc=$?
   TIMES+=("$(printf '%-28s %5ss' "$name" $(( $(date +%s) - t )))")
   if [ "$rc" != 0 ]; then
+    FAILED+=("$name")
     echo
     echo "FAILED: $name (exit $rc) after $(( $(date +%s) - T0 ))s"
-    exit "$rc"
+    if [ "${FAIL_FAST:-0}" = 1 ] || [ "$name" = tools ]; then exit "$rc"; fi
   fi
 }
 
@@ -48,7 +51,7 @@ if [ "$with_browser" = 1 ]; then
 else
   run tools bash scripts/ensure-tools.sh
 fi
-run fmt cargo fmt --all -- --check
+run fmt cargo fmt --all -- --check --color never
 run clippy cargo clippy --all-targets -- -D warnings
 run cargo-test cargo test --release
 run wasm-test wasm-pack test --node --release
@@ -76,5 +79,11 @@ read -r passed failed < <(awk '
   END { print p + 0, f + 0 }' "$LOG")
 echo "total time $(( $(date +%s) - T0 ))s"
 echo
+if [ "${#FAILED[@]}" != 0 ]; then
+  echo "FAILED sections: ${FAILED[*]}"
+  echo
+  echo "all: $passed passed, $(( failed > 0 ? failed : 1 )) failed"
+  exit 1
+fi
 echo "all: $passed passed, $failed failed"
 [ "$failed" = 0 ]
