@@ -7,6 +7,7 @@
 //! Median and p95 over `runs` (default 1000, at least 200) after 100 warm-up runs; then each
 //! registered method tuned on its first preset.
 
+use pidlab::api;
 use pidlab::controller::Controller;
 use pidlab::freq::analyze;
 use pidlab::plant::{Family, Plant};
@@ -183,6 +184,33 @@ fn main() {
         WARMUP,
     );
     row("**update (tune + simulate + analyze)**", &full);
+    // The same update through the JSON-level API (what the wasm exports call).
+    let plant_v = serde_json::json!(
+        {"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1});
+    let scen_v = serde_json::json!({"t_end": 30, "dt": 0.01,
+        "setpoint": {"time": 0, "size": 1}, "disturbance": {"time": 15, "size": 1}});
+    let ipd_v = serde_json::json!({"cr": {"num": [0.6029], "den": [1, 0]},
+        "cy": {"num": [1.4976, 1.9849, 0.6029], "den": [1, 0]}});
+    let json_update = || -> Option<()> {
+        let ctl = match &tune_call {
+            Some((id, p)) => {
+                let params = Value::Object(p.0.clone());
+                let input = serde_json::json!({"method": id, "plant": plant_v, "params": params});
+                api::tune(&input).ok()?.get("controller")?.clone()
+            }
+            None => ipd_v.clone(),
+        };
+        let sim_in = serde_json::json!({"plant": plant_v, "controller": ctl, "scenario": scen_v});
+        black_box(api::simulate(&sim_in).ok()?);
+        let an_in = serde_json::json!({"plant": plant_v, "controller": ctl});
+        black_box(api::analyze(&an_in).ok()?);
+        Some(())
+    };
+    assert!(json_update().is_some(), "JSON API update");
+    row(
+        "update through the JSON API (`pidlab::api`)",
+        &time(|| drop(json_update()), runs, WARMUP),
+    );
     if tune_call.is_some() {
         row(
             "tune",
