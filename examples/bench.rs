@@ -209,7 +209,13 @@ fn main() {
     assert!(json_update().is_some(), "JSON API update");
     row(
         "update through the JSON API (`pidlab::api`)",
-        &time(|| drop(json_update()), runs, WARMUP),
+        &time(
+            || {
+                let _ = black_box(json_update());
+            },
+            runs,
+            WARMUP,
+        ),
     );
     if tune_call.is_some() {
         row(

@@ -54,7 +54,7 @@ fi
 run fmt cargo fmt --all -- --check --color never
 run clippy cargo clippy --all-targets -- -D warnings
 run cargo-test cargo test --release
-run wasm-test wasm-pack test --node --release
+run wasm-test wasm-pack test --node --release -- --lib --test '*'
 run pkg-node wasm-pack build --release --target nodejs --out-dir pkg-node
 run node-test node --test tests/node/
 if [ "$with_browser" = 1 ]; then
