@@ -18,20 +18,27 @@ const BOILER = { family: 'ipdt_ir', k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.
 const IPD = { cr: { num: [0.6029], den: [1, 0] }, cy: { num: [1.4976, 1.9849, 0.6029], den: [1, 0] } };
 const SCENARIO = { t_end: 30, dt: 0.01, setpoint: { time: 0, size: 1 }, disturbance: { time: 15, size: 1 } };
 
-function stats(samples) {
+function stats(samples, cpu) {
   const s = [...samples].sort((a, b) => a - b);
-  const q = (p) => s[Math.min(s.length - 1, Math.floor(p * s.length))];
-  return { n: s.length, median: q(0.5), p95: q(0.95), min: s[0], mean: s.reduce((a, b) => a + b, 0) / s.length };
+  const c = [...cpu].sort((a, b) => a - b);
+  const q = (v, p) => v[Math.min(v.length - 1, Math.floor(p * v.length))];
+  return { n: s.length, median: q(s, 0.5), p95: q(s, 0.95), min: s[0], mean: s.reduce((a, b) => a + b, 0) / s.length, cpuMedian: q(c, 0.5) };
 }
+/** Wall time per call and process CPU time per call (the latter unaffected by other processes
+ *  competing for the cores; it includes Node's own GC threads, if any run meanwhile). */
 function time(fn, runs, warmup = WARMUP) {
   for (let i = 0; i < warmup; i++) fn();
   const out = new Array(runs);
+  const cpu = new Array(runs);
   for (let i = 0; i < runs; i++) {
+    const c0 = process.cpuUsage();
     const t0 = process.hrtime.bigint();
     fn();
     out[i] = Number(process.hrtime.bigint() - t0) / 1e6; // ms
+    const c = process.cpuUsage(c0);
+    cpu[i] = (c.user + c.system) / 1e3; // ms
   }
-  return stats(out);
+  return stats(out, cpu);
 }
 const f = (ms) => (ms < 1 ? `${(ms * 1000).toFixed(0)} µs` : `${ms.toFixed(2)} ms`);
 
@@ -54,9 +61,9 @@ console.log();
 console.log(`One slider update on the boiler: ${tuneCall ? `tune(${tuneCall.method}${tuneCall.params.lambda ? `, λ = ${tuneCall.params.lambda}` : ''})` : 'literal I-PD (no rule on main yet)'} + simulate (3001 points, set-point + load step) + analyze; ${RUNS} runs after ${WARMUP} warm-up runs.`);
 console.log(`(Ms = ${an0.ms?.toFixed?.(3)}, stable = ${an0.stable}, diverged = ${sim0.diverged ?? false})`);
 console.log();
-console.log('| step | median | p95 | min | mean |');
-console.log('|---|---:|---:|---:|---:|');
-const row = (name, s) => console.log(`| ${name} | ${f(s.median)} | ${f(s.p95)} | ${f(s.min)} | ${f(s.mean)} |`);
+console.log('| step | median | p95 | min | mean | CPU-time median |');
+console.log('|---|---:|---:|---:|---:|---:|');
+const row = (name, s) => console.log(`| ${name} | ${f(s.median)} | ${f(s.p95)} | ${f(s.min)} | ${f(s.mean)} | ${f(s.cpuMedian)} |`);
 const full = time(update, RUNS);
 row('**update (tune + simulate + analyze)**', full);
 let ctl = IPD;
