@@ -31,3 +31,18 @@ fn debug_print() {
     for _ in 0..100 { let _ = algorithm1(d, tz, 0.6, 1.0, TdSource::Exact); }
     println!("alg1 time {:?}", t.elapsed() / 100);
 }
+
+#[test]
+fn debug_alg3() {
+    let p = Process::new(0.547, 1.06, 0.418, 0.1).unwrap();
+    let t = std::time::Instant::now();
+    let r = algorithm3(&p, 0.6, "isenscod", None);
+    println!("alg3 {:?} {:?}", r, t.elapsed());
+    if let Ok((s, _)) = r {
+        let g = p.ipd_from_series(s.kc, s.ti, s.td);
+        println!("alg3 gains {:?} printed {:?}", g, (g.0*1.06, g.1*1.06, g.2*1.06));
+    }
+    let t = std::time::Instant::now();
+    let r = algorithm3(&p, 0.6, "isenscod", Some((0.3807, 1.3296)));
+    println!("alg3b {:?} {:?}", r, t.elapsed());
+}

@@ -34,6 +34,7 @@ use crate::controller::{lead_lag, Pid};
 use crate::error::{Error, Result};
 use crate::plant::{Family, Plant};
 use crate::poly::Poly;
+use crate::sim::{simulate, Scenario};
 use serde_json::{json, Map, Value};
 use std::f64::consts::PI;
 
@@ -899,6 +900,160 @@ pub fn algorithm2(d: f64, tz: f64, zeta: f64, init: Option<(f64, f64)>) -> Resul
     ))
 }
 
+/// Eq. (13) or (14) of a unit load step at the plant input (t = 0, no set-point change),
+/// simulated exactly (`pidlab::sim`) on the process in its own units with the physically
+/// consistent I-PD gains; K = K̄, τ_P = τ̄_P weight the control terms. `f64::INFINITY` when
+/// the loop diverges. ISENSDCO (14) is infinite whenever u jumps (an ideal derivative on a
+/// plant of relative degree one, i.e. τ̄_Z > 0): that is an error naming `params.criterion`.
+pub fn load_criterion(p: &Process, kp: f64, ki: f64, kd: f64, criterion: &str, t_end: f64) -> Result<f64> {
+    let plant = Family::IpdtIr { k: p.k, tau: p.tau_p, tau_z: p.tau_z, theta: p.theta }.plant();
+    let c = Pid::ipd(kp, ki, kd).to_controller()?;
+    let dt = (t_end / 1500.0).max(p.theta / 4.0).min(t_end / 200.0);
+    let mut sc = Scenario::steps(t_end, dt, 0.0, 0.0, 0.0, 1.0);
+    sc.isens_k = Some(p.k);
+    sc.isens_tau = Some(p.tau_p);
+    let res = simulate(&plant, &c, &sc)?;
+    if res.diverged {
+        return Ok(f64::INFINITY);
+    }
+    let m = res
+        .metrics
+        .regulatory
+        .ok_or_else(|| Error::new("params.criterion", "no regulatory window in the simulation"))?;
+    let j = if criterion == "isensdco" { m.isensdco } else { m.isenscod };
+    match j {
+        Some(v) if v.is_finite() => Ok(v),
+        Some(_) => Ok(f64::INFINITY),
+        None => Err(Error::new(
+            "params.criterion",
+            "ISENSDCO (Eq. 14) is infinite here: the control signal jumps after a load step (ideal derivative on a plant of relative degree one, τ̄_Z > 0); use 'isenscod'",
+        )),
+    }
+}
+
+/// Golden-section minimization of `f` on `[a, b]` to a bracket of `tol`; returns
+/// (x, f(x), evaluations).
+fn golden_min(mut f: impl FnMut(f64) -> Result<f64>, mut a: f64, mut b: f64, tol: f64, maxit: usize) -> Result<(f64, f64, usize)> {
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    let mut c = b - r * (b - a);
+    let mut d = a + r * (b - a);
+    let mut fc = f(c)?;
+    let mut fd = f(d)?;
+    let mut n = 2;
+    while (b - a).abs() > tol && n < maxit {
+        if fc <= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - r * (b - a);
+            fc = f(c)?;
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + r * (b - a);
+            fd = f(d)?;
+        }
+        n += 1;
+    }
+    Ok(if fc <= fd { (c, fc, n) } else { (d, fd, n) })
+}
+
+/// What Algorithm III returns beside the solution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Alg3Info {
+    /// Criterion value at the solution.
+    pub j: f64,
+    /// Number of simulations run.
+    pub simulations: usize,
+}
+
+/// Algorithm III: start from (τ_D,init, τ_I,init) (Eqs. 21-22 exact unless given), Steps 2-4
+/// (fixed point of Eqs. 10, 11, 20), then Step 5: at that τ_I, τ_D minimizing criterion (13)
+/// or (14) of a unit load step (K_C following Eq. 11 for each trial τ_D), by golden-section
+/// search (a coarse scan brackets the minimum first); repeat until τ_D settles (relative
+/// 1e-5, at most 40 outer passes).
+pub fn algorithm3(p: &Process, zeta: f64, criterion: &str, init: Option<(f64, f64)>) -> Result<(MethodISolution, Alg3Info)> {
+    let (d, tz) = (p.d(), p.tz());
+    let (td0, ti0) = match init {
+        Some(x) => x,
+        None => {
+            let td0 = tau_d_gm_max(d, tz, f64::INFINITY)?;
+            (td0, 1.2 * (d + tz + 1.0 - td0))
+        }
+    };
+    let mut sims = 0usize;
+    let mut total = 0usize;
+    let mut td = td0;
+    let mut ti = ti0;
+    let mut bracket: Option<(f64, f64)> = None;
+    for outer in 1..=40 {
+        let (_, ti_n, _, _, it) = fixed_point(d, tz, td, zeta, ti)?;
+        total += it;
+        ti = ti_n;
+        let t_end = p.tau_p * (60.0 + 20.0 * ti);
+        let lo = (d + tz + 1.0 - ti).max(0.0) * (1.0 + 1e-6) + 1e-6;
+        let hi = (3.0 * (d + tz + 1.0)).max(2.0 * td).max(lo + 1.0);
+        let mut j_of = |x: f64| -> Result<f64> {
+            sims += 1;
+            let pk = match IpdLoop::new(d, tz, ti, x).phase_peak() {
+                Ok(v) => v,
+                Err(_) => return Ok(f64::INFINITY),
+            };
+            let (kp, ki, kd) = p.ipd_from_series(pk.kc, ti, x);
+            load_criterion(p, kp, ki, kd, criterion, t_end)
+        };
+        let (a, b) = match bracket {
+            Some(br) => br,
+            None => {
+                // coarse scan
+                let n = 12;
+                let xs: Vec<f64> = (0..=n).map(|i| lo + (hi - lo) * i as f64 / n as f64).collect();
+                let mut js = vec![];
+                for &x in &xs {
+                    js.push(j_of(x)?);
+                }
+                let (ib, _) = js
+                    .iter()
+                    .enumerate()
+                    .min_by(|x, y| x.1.total_cmp(y.1))
+                    .unwrap_or((0, &0.0));
+                (xs[ib.saturating_sub(1)], xs[(ib + 1).min(n)])
+            }
+        };
+        let (x, _j, _) = golden_min(&mut j_of, a, b, 1e-7 * b.max(1.0), 200)?;
+        let at_edge = (x - a).abs() < 1e-5 * (b - a) || (b - x).abs() < 1e-5 * (b - a);
+        let step = x - td;
+        td = x;
+        bracket = if at_edge { None } else { Some(((x - 0.15 * x.max(0.1)).max(lo), x + 0.15 * x.max(0.1))) };
+        if step.abs() <= 1e-5 * td.max(1.0) && !at_edge {
+            let (kc, ti_f, w_p, pm_max, it) = fixed_point(d, tz, td, zeta, ti)?;
+            total += it;
+            let (kp, ki, kd) = p.ipd_from_series(kc, ti_f, td);
+            let j = load_criterion(p, kp, ki, kd, criterion, p.tau_p * (60.0 + 20.0 * ti_f))?;
+            sims += 1;
+            return Ok((
+                MethodISolution {
+                    kc,
+                    ti: ti_f,
+                    td,
+                    w_p,
+                    pm_max,
+                    iterations: total,
+                    outer_iterations: outer,
+                    ti_init: ti0,
+                    td_init: td0,
+                },
+                Alg3Info { j, simulations: sims },
+            ));
+        }
+    }
+    Err(Error::new(
+        "params.zeta",
+        format!("Algorithm III did not converge in 40 outer iterations (ζ = {zeta})"),
+    ))
+}
+
 // ---------------------------------------------------------------------------------------------
 // Section 5: Method II (direct synthesis)
 // ---------------------------------------------------------------------------------------------
@@ -1656,11 +1811,12 @@ fn tune_inner(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
         "arvanitis_alg3" => {
             let zeta = params.f64_in("zeta", 0.6, 0.3, 2.0)?;
             let crit = params.choice("criterion", "isenscod", &["isenscod", "isensdco"])?;
-            let _ = (zeta, crit);
-            Err(Error::new(
-                "method",
-                "Algorithm III needs the exact simulator (pidlab::sim), not available in this build",
-            ))
+            let (s, info) = algorithm3(&p, zeta, &crit, None)?;
+            let mut extra = Map::new();
+            extra.insert("criterion".into(), json!(crit));
+            extra.insert("j".into(), num(info.j));
+            extra.insert("simulations".into(), json!(info.simulations));
+            method1_tuning(id, &p, &s, warnings, extra)
         }
         "arvanitis_m2_xi" => {
             let xi = params.f64_in("xi", 0.707, 0.3, 3.0)?;
