@@ -59,7 +59,10 @@ fn section6_printed_settings() {
         Row {
             what: "Alg I 1.25 variant",
             id: "arvanitis_alg1",
-            params: Params::default().with("zeta", 0.6).with("td_factor", 1.25).with("td_source", "table"),
+            params: Params::default()
+                .with("zeta", 0.6)
+                .with("td_factor", 1.25)
+                .with("td_source", "table"),
             printed: (2.0026, 0.5695, 1.7289),
             tol: (0.0025, 0.0025, 0.0025),
             rel: true,
@@ -78,7 +81,13 @@ fn section6_printed_settings() {
         let t = tune(r.id, r.params).unwrap();
         let p = printed(&t);
         let (a, b, c) = (r.printed.0, r.printed.1, r.printed.2);
-        let err = |x: f64, y: f64| if r.rel { (x - y).abs() / y } else { (x - y).abs() };
+        let err = |x: f64, y: f64| {
+            if r.rel {
+                (x - y).abs() / y
+            } else {
+                (x - y).abs()
+            }
+        };
         assert!(err(p.0, a) <= r.tol.0, "{}: K̄_P {} vs {}", r.what, p.0, a);
         assert!(err(p.1, b) <= r.tol.1, "{}: K̄_I {} vs {}", r.what, p.1, b);
         assert!(err(p.2, c) <= r.tol.2, "{}: K̄_D {} vs {}", r.what, p.2, c);
@@ -114,11 +123,19 @@ fn method2_theta_and_definitions() {
     assert!((kd - (dmax * kp - dmax * dmax * ki)).abs() < 1e-12);
     assert!((kp / ki - th).abs() < 1e-12);
     // θ ≤ θ_min is an error naming the parameter
-    let e = tune("arvanitis_m2_theta", Params::default().with("theta_design", theta_min(d, tz) * 0.99)).unwrap_err();
+    let e = tune(
+        "arvanitis_m2_theta",
+        Params::default().with("theta_design", theta_min(d, tz) * 0.99),
+    )
+    .unwrap_err();
     assert_eq!(e.path, "params.theta_design");
     let e = tune("arvanitis_m2_theta", Params::default()).unwrap_err();
     assert_eq!(e.path, "params.theta_design");
-    let t = tune("arvanitis_m2_theta", Params::default().with("theta_design", th)).unwrap();
+    let t = tune(
+        "arvanitis_m2_theta",
+        Params::default().with("theta_design", th),
+    )
+    .unwrap();
     assert!((gains(&t).0 - 3.5624).abs() < 5e-5);
 }
 
@@ -160,8 +177,15 @@ fn method1_defining_equations_and_crossover() {
     ];
     for s in &sols {
         let lp = IpdLoop::new(d, tz, s.ti, s.td);
-        assert!(lp.eq10(s.w_p).abs() <= 1e-10, "Eq. 10 residual {}", lp.eq10(s.w_p));
-        assert!((s.kc * lp.magnitude(1.0, s.w_p) - 1.0).abs() <= 1e-10, "Eq. 11");
+        assert!(
+            lp.eq10(s.w_p).abs() <= 1e-10,
+            "Eq. 10 residual {}",
+            lp.eq10(s.w_p)
+        );
+        assert!(
+            (s.kc * lp.magnitude(1.0, s.w_p) - 1.0).abs() <= 1e-10,
+            "Eq. 11"
+        );
         let z = [0.6, 0.85, 0.6, 1.0][sols.iter().position(|x| x == s).unwrap()];
         let r20 = eq20_residual(d, tz, s.td, s.kc, z, s.ti);
         assert!(r20.abs() <= 1e-10, "Eq. 20 residual {r20}");
@@ -172,15 +196,27 @@ fn method1_defining_equations_and_crossover() {
         let a = analyze(&BOILER.plant(), &c).unwrap();
         assert!(a.stable);
         let wgc = a.w_gc.unwrap();
-        assert!((wgc - s.w_p / p.tau_p).abs() <= 1e-6 * wgc, "w_gc {wgc} vs {}", s.w_p / p.tau_p);
-        assert!((a.pm.unwrap() - s.pm_max.to_degrees()).abs() <= 1e-5, "PM {:?}", a.pm);
+        assert!(
+            (wgc - s.w_p / p.tau_p).abs() <= 1e-6 * wgc,
+            "w_gc {wgc} vs {}",
+            s.w_p / p.tau_p
+        );
+        assert!(
+            (a.pm.unwrap() - s.pm_max.to_degrees()).abs() <= 1e-5,
+            "PM {:?}",
+            a.pm
+        );
         // the PM is a maximum over frequency: the phase at nearby frequencies is lower
-        assert!(lp.phase(s.w_p * 1.01) < lp.phase(s.w_p) && lp.phase(s.w_p * 0.99) < lp.phase(s.w_p));
+        assert!(
+            lp.phase(s.w_p * 1.01) < lp.phase(s.w_p) && lp.phase(s.w_p * 0.99) < lp.phase(s.w_p)
+        );
     }
     // ERRATA check: with the printed (Table 1 row) gains the crossover misses w_P/τ̄_P
     let s = &sols[0];
     let (kp, ki, kd) = p.ipd_from_series(s.kc, s.ti, s.td);
-    let c = Pid::ipd(kp * 1.06, ki * 1.06, kd * 1.06).to_controller().unwrap();
+    let c = Pid::ipd(kp * 1.06, ki * 1.06, kd * 1.06)
+        .to_controller()
+        .unwrap();
     let a = analyze(&BOILER.plant(), &c).unwrap();
     assert!((a.w_gc.unwrap() - s.w_p / p.tau_p).abs() > 0.01);
 }
@@ -237,7 +273,9 @@ fn equivalence_and_normalization() {
         assert!((pre - ki / s).norm() < 1e-12);
     }
     let back = ipd_to_series(kp, ki, kd).unwrap();
-    assert!(back.iter().any(|&(a, b, c)| (a - kc).abs() < 1e-12 && (b - ti).abs() < 1e-12 && (c - td).abs() < 1e-12));
+    assert!(back.iter().any(|&(a, b, c)| (a - kc).abs() < 1e-12
+        && (b - ti).abs() < 1e-12
+        && (c - td).abs() < 1e-12));
     assert_eq!(ipd_to_series(1.0, 1.0, 1.0).unwrap_err().path, "kp");
     let p = boiler();
     let (a, b, c) = p.ipd_from_normalized(1.1, 0.4, 0.9);
@@ -257,16 +295,25 @@ fn algorithm3_boiler_and_initial_pair() {
     let p = boiler();
     let (a, _) = algorithm3(&p, 0.6, "isenscod", Some((0.3807, 1.3296))).unwrap();
     let (kp, ki, kd) = p.ipd_from_series(a.kc, a.ti, a.td);
-    for (x, y) in [(kp * 1.06, 2.1069), (ki * 1.06, 0.6426), (kd * 1.06, 1.5732)] {
+    for (x, y) in [
+        (kp * 1.06, 2.1069),
+        (ki * 1.06, 0.6426),
+        (kd * 1.06, 1.5732),
+    ] {
         assert!((x - y).abs() / y <= 0.005, "{x} vs {y}");
     }
     // the alternative initialization of Step 1 (τ_D,init = min τ_D,maxGM,I-P)
     let (d, tz) = (p.d(), p.tz());
     let t3 = tau_d_max_gm_ip(d, tz, f64::INFINITY).unwrap();
     let (b, _) = algorithm3(&p, 0.6, "isenscod", Some((t3, 1.2 * (d + tz + 1.0 - t3)))).unwrap();
-    assert!((a.td - b.td).abs() < 1e-4 * a.td && (a.ti - b.ti).abs() < 1e-4 * a.ti, "{a:?} {b:?}");
+    assert!(
+        (a.td - b.td).abs() < 1e-4 * a.td && (a.ti - b.ti).abs() < 1e-4 * a.ti,
+        "{a:?} {b:?}"
+    );
     let lp = IpdLoop::new(d, tz, b.ti, b.td);
-    assert!(lp.eq10(b.w_p).abs() <= 1e-10 && eq20_residual(d, tz, b.td, b.kc, 0.6, b.ti).abs() <= 1e-10);
+    assert!(
+        lp.eq10(b.w_p).abs() <= 1e-10 && eq20_residual(d, tz, b.td, b.kc, 0.6, b.ti).abs() <= 1e-10
+    );
     // ISENSDCO is infinite with an ideal derivative on this plant: a clear error
     let e = algorithm3(&p, 0.6, "isensdco", None).unwrap_err();
     assert_eq!(e.path, "params.criterion");
@@ -278,7 +325,9 @@ fn algorithm3_boiler_and_initial_pair() {
 fn random_plants_converge_or_fail_clearly() {
     let mut seed: u64 = 0x2012_a7a1;
     let mut rnd = || {
-        seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (seed >> 11) as f64 / (1u64 << 53) as f64
     };
     let mut ok = 0;
@@ -308,7 +357,13 @@ fn random_plants_converge_or_fail_clearly() {
     }
     assert!(ok >= 60, "only {ok} of 75 converged");
     // Algorithm III on one random plant
-    let p = Process::new(1.3, 2.0, 2.0 * (0.2 + 1.8 * rnd()), 2.0 * (0.1 + 1.9 * rnd())).unwrap();
+    let p = Process::new(
+        1.3,
+        2.0,
+        2.0 * (0.2 + 1.8 * rnd()),
+        2.0 * (0.1 + 1.9 * rnd()),
+    )
+    .unwrap();
     match algorithm3(&p, 0.707, "isenscod", None) {
         Ok((s, _)) => assert!(eq20_residual(p.d(), p.tz(), s.td, s.kc, 0.707, s.ti).abs() <= 1e-10),
         Err(e) => assert!(e.path.starts_with("params."), "{e}"),
@@ -322,19 +377,43 @@ fn errors_name_the_field() {
     assert_eq!(e.path, "params.zeta");
     let e = tune("arvanitis_alg1", Params::default().with("zeta", 9.0)).unwrap_err();
     assert_eq!(e.path, "params.zeta");
-    let e = tune("arvanitis_alg1", Params::default().with("td_source", "guess")).unwrap_err();
+    let e = tune(
+        "arvanitis_alg1",
+        Params::default().with("td_source", "guess"),
+    )
+    .unwrap_err();
     assert_eq!(e.path, "params.td_source");
     let other = Family::Piptd { k: 1.0, theta: 0.5 }.plant();
     let e = rules::tune("arvanitis_alg2", &other, &Params::default()).unwrap_err();
     assert_eq!(e.path, "plant.family");
-    let no_delay = Family::IpdtIr { k: 1.0, tau: 1.0, tau_z: 0.5, theta: 0.0 }.plant();
+    let no_delay = Family::IpdtIr {
+        k: 1.0,
+        tau: 1.0,
+        tau_z: 0.5,
+        theta: 0.0,
+    }
+    .plant();
     let e = rules::tune("arvanitis_alg1", &no_delay, &Params::default()).unwrap_err();
     assert_eq!(e.path, "plant.theta");
     // Table 3 outside its boxes warns (τ_Z < 0.5 < d is in neither box)
-    let far = Family::IpdtIr { k: 1.0, tau: 1.0, tau_z: 0.3, theta: 1.0 }.plant();
-    let t = rules::tune("arvanitis_alg1", &far, &Params::default().with("td_source", "table")).unwrap();
+    let far = Family::IpdtIr {
+        k: 1.0,
+        tau: 1.0,
+        tau_z: 0.3,
+        theta: 1.0,
+    }
+    .plant();
+    let t = rules::tune(
+        "arvanitis_alg1",
+        &far,
+        &Params::default().with("td_source", "table"),
+    )
+    .unwrap();
     let w = t.details["warnings"].as_array().unwrap();
-    assert!(w.iter().any(|x| x.as_str().unwrap().contains("Table 3")), "{w:?}");
+    assert!(
+        w.iter().any(|x| x.as_str().unwrap().contains("Table 3")),
+        "{w:?}"
+    );
 }
 
 /// Tables 2 and 3 against the exact limits on the 7 × 7 grid over their printed ranges: the
@@ -346,10 +425,20 @@ fn tables_2_3_against_exact() {
     for f in fits().into_iter().filter(|f| f.table == 2 || f.table == 3) {
         let (m, failed) = measured_mne(&f, 6);
         assert_eq!(failed, 0);
-        assert!((m - f.measured_mne).abs() <= 6e-5, "Table {} {:?}: {m} vs {}", f.table, f.range, f.measured_mne);
+        assert!(
+            (m - f.measured_mne).abs() <= 6e-5,
+            "Table {} {:?}: {m} vs {}",
+            f.table,
+            f.range,
+            f.measured_mne
+        );
         assert_eq!(f.offered, m <= f.printed_mne + 0.001);
     }
-    let offered: Vec<bool> = fits().iter().filter(|f| f.table <= 3).map(|f| f.offered).collect();
+    let offered: Vec<bool> = fits()
+        .iter()
+        .filter(|f| f.table <= 3)
+        .map(|f| f.offered)
+        .collect();
     assert_eq!(offered, [false, true, false, false]);
 }
 
@@ -360,10 +449,23 @@ fn methods_and_presets() {
     let ids: Vec<&str> = ms.iter().map(|m| m.id.as_str()).collect();
     assert_eq!(
         ids,
-        ["arvanitis_alg1", "arvanitis_alg2", "arvanitis_alg3", "arvanitis_m2_xi", "arvanitis_m2_theta", "arvanitis_m2_beta"]
+        [
+            "arvanitis_alg1",
+            "arvanitis_alg2",
+            "arvanitis_alg3",
+            "arvanitis_m2_xi",
+            "arvanitis_m2_theta",
+            "arvanitis_m2_beta"
+        ]
     );
     let names = |id: &str| -> Vec<String> {
-        ms.iter().find(|m| m.id == id).unwrap().params.iter().map(|p| p.name.clone()).collect()
+        ms.iter()
+            .find(|m| m.id == id)
+            .unwrap()
+            .params
+            .iter()
+            .map(|p| p.name.clone())
+            .collect()
     };
     assert_eq!(names("arvanitis_alg1"), ["zeta", "td_factor", "td_source"]);
     assert_eq!(names("arvanitis_alg3"), ["zeta", "criterion"]);
@@ -371,10 +473,24 @@ fn methods_and_presets() {
     assert_eq!(names("arvanitis_m2_theta"), ["theta_design"]);
     assert!(ms.iter().all(|m| m.families == ["ipdt_ir"]));
     let ps = presets();
-    for id in ["luyben2003", "shamsuzzoha_lee2006", "gu2006", "alg1", "m2_xi", "printed_alg2"] {
-        assert!(ps.iter().any(|p| p.id == format!("arvanitis2012/boiler/{id}")), "{id}");
+    for id in [
+        "luyben2003",
+        "shamsuzzoha_lee2006",
+        "gu2006",
+        "alg1",
+        "m2_xi",
+        "printed_alg2",
+    ] {
+        assert!(
+            ps.iter()
+                .any(|p| p.id == format!("arvanitis2012/boiler/{id}")),
+            "{id}"
+        );
     }
-    for p in ps.iter().filter(|p| p.tune != Value::Null && p.id != "arvanitis2012/boiler/alg3") {
+    for p in ps
+        .iter()
+        .filter(|p| p.tune != Value::Null && p.id != "arvanitis2012/boiler/alg3")
+    {
         let m = p.tune["method"].as_str().unwrap();
         let prm = Params::from_value(&p.tune["params"]).unwrap();
         assert!(tune(m, prm).is_ok(), "{}", p.id);

@@ -10,6 +10,15 @@ use pidlab::sim::{simulate, Scenario};
 use std::fmt::Write;
 use std::time::Instant;
 
+/// (setting, method id, params, printed (K̄_P, K̄_I, K̄_D), note)
+type Row = (
+    &'static str,
+    &'static str,
+    Params,
+    (f64, f64, f64),
+    &'static str,
+);
+
 fn pct(a: f64, b: f64) -> String {
     format!("{:+.2} %", 100.0 * (a - b) / b)
 }
@@ -35,7 +44,7 @@ pub fn report() -> String {
     // ---- Section 6 settings
     o.push_str("### Section 6 settings (K̄_P, K̄_I, K̄_D)\n\n");
     o.push_str("| setting | printed | ours, printed convention | difference | ours, consistent | notes |\n|---|---|---|---|---|---|\n");
-    let rows: Vec<(&str, &str, Params, (f64, f64, f64), &str)> = vec![
+    let rows: Vec<Row> = vec![
         ("Alg I, τ_D = min τ_D,maxGM,I-P (exact 1.1048), ζ = 0.6", "arvanitis_alg1", Params::default(), (2.104, 0.6391, 1.5876),
          "text says τ_D = 1.1535 (Table 3) but the gains come from the exact 1.1048"),
         ("Alg I, τ_D = 1.25 × Table 3 = 1.4419, ζ = 0.6", "arvanitis_alg1",
@@ -56,7 +65,11 @@ pub fn report() -> String {
         match rules::tune(id, &plant, &prm) {
             Ok(t) => {
                 let g = |n: &str| t.named[n].as_f64().unwrap_or(f64::NAN);
-                let pc = |n: &str| t.details["printed_convention"][n].as_f64().unwrap_or(f64::NAN);
+                let pc = |n: &str| {
+                    t.details["printed_convention"][n]
+                        .as_f64()
+                        .unwrap_or(f64::NAN)
+                };
                 let _ = writeln!(
                     o,
                     "| {what} | {}, {}, {} | {:.4}, {:.4}, {:.4} | {}, {}, {} | {:.4}, {:.4}, {:.4} | {note} |",
@@ -66,7 +79,11 @@ pub fn report() -> String {
                 );
             }
             Err(e) => {
-                let _ = writeln!(o, "| {what} | {}, {}, {} | error: {e} | | | |", pr.0, pr.1, pr.2);
+                let _ = writeln!(
+                    o,
+                    "| {what} | {}, {}, {} | error: {e} | | | |",
+                    pr.0, pr.1, pr.2
+                );
             }
         }
     }
@@ -74,14 +91,31 @@ pub fn report() -> String {
     // ---- Section 3 quantities
     o.push_str("\n### Section 3 quantities for the boiler (normalized)\n\n| quantity | exact | Table | printed in Section 6 |\n|---|---|---|---|\n");
     let inf = f64::INFINITY;
-    let _ = writeln!(o, "| min τ_D,maxGM,I-P | {:.4} | {:.4} (Table 3) | 1.1535 (text); gains from 1.1048 |",
-        tau_d_max_gm_ip(d, tz, inf).unwrap_or(f64::NAN), table3(tz, d).0);
-    let _ = writeln!(o, "| min τ_D,GMmax | {:.4} | {:.4} (Table 2) | τ_D,init = 0.3807 |",
-        tau_d_gm_max(d, tz, inf).unwrap_or(f64::NAN), table2(tz, d).0);
-    let _ = writeln!(o, "| w_u (Eq. 33) | {:.4} | {:.4} (Eq. 34) | - |", wu_exact(d, tz).unwrap_or(f64::NAN), wu_eq34(d, tz));
+    let _ = writeln!(
+        o,
+        "| min τ_D,maxGM,I-P | {:.4} | {:.4} (Table 3) | 1.1535 (text); gains from 1.1048 |",
+        tau_d_max_gm_ip(d, tz, inf).unwrap_or(f64::NAN),
+        table3(tz, d).0
+    );
+    let _ = writeln!(
+        o,
+        "| min τ_D,GMmax | {:.4} | {:.4} (Table 2) | τ_D,init = 0.3807 |",
+        tau_d_gm_max(d, tz, inf).unwrap_or(f64::NAN),
+        table2(tz, d).0
+    );
+    let _ = writeln!(
+        o,
+        "| w_u (Eq. 33) | {:.4} | {:.4} (Eq. 34) | - |",
+        wu_exact(d, tz).unwrap_or(f64::NAN),
+        wu_eq34(d, tz)
+    );
     for ti in [2.0, 5.0, 20.0] {
-        let _ = writeln!(o, "| τ_D,GMmax(τ_I = {ti}) / τ_D,maxGM,I-P(τ_I = {ti}) | {:.4} / {:.4} | - | - |",
-            tau_d_gm_max(d, tz, ti).unwrap_or(f64::NAN), tau_d_max_gm_ip(d, tz, ti).unwrap_or(f64::NAN));
+        let _ = writeln!(
+            o,
+            "| τ_D,GMmax(τ_I = {ti}) / τ_D,maxGM,I-P(τ_I = {ti}) | {:.4} / {:.4} | - | - |",
+            tau_d_gm_max(d, tz, ti).unwrap_or(f64::NAN),
+            tau_d_max_gm_ip(d, tz, ti).unwrap_or(f64::NAN)
+        );
     }
     if let Ok((s, _)) = algorithm1(d, tz, 0.6, 1.0, TdSource::Exact) {
         let lp = IpdLoop::new(d, tz, s.ti, s.td);
@@ -115,10 +149,20 @@ pub fn report() -> String {
             o,
             "| {} | {} | {:?} | {a}-{b}; {c}-{e} | {:.2} % | {} | {} |",
             f.table,
-            if f.zeta.is_nan() { "-".into() } else { format!("{}", f.zeta) },
+            if f.zeta.is_nan() {
+                "-".into()
+            } else {
+                format!("{}", f.zeta)
+            },
             f.quantity,
             100.0 * f.printed_mne,
-            if fail > 0 { format!("not computable ({fail} points): ISENSDCO infinite with an ideal derivative") } else { format!("{:.2} %", 100.0 * m) },
+            if fail > 0 {
+                format!(
+                    "not computable ({fail} points): ISENSDCO infinite with an ideal derivative"
+                )
+            } else {
+                format!("{:.2} %", 100.0 * m)
+            },
             if f.offered { "yes" } else { "no" }
         );
     }
@@ -126,19 +170,33 @@ pub fn report() -> String {
         Table 4's ζ = 0.6 τ_I goes negative inside its range (ERRATA), ζ = 1 K_C and several Table 6/7 rows are garbled.\n");
 
     // ---- Figs 8-12
-    o.push_str("\n### Figs. 8-12: set-point step at t = 0, load L = 1 at t = 30 (exact simulator)\n\n");
+    o.push_str(
+        "\n### Figs. 8-12: set-point step at t = 0, load L = 1 at t = 30 (exact simulator)\n\n",
+    );
     o.push_str("| controller | servo overshoot | initial jump | servo IAE | servo settling | load peak error | load IAE | load settling | Ms |\n|---|---|---|---|---|---|---|---|---|\n");
     let sc = Scenario::steps(60.0, 0.01, 0.0, 1.0, 30.0, 1.0);
     let mut ctrls: Vec<(String, Controller)> = vec![];
     for pr in presets() {
         let c = if pr.tune.is_null() {
             let g = |k: &str, q: &str| -> Vec<f64> {
-                pr.controller[k][q].as_array().map(|a| a.iter().filter_map(|x| x.as_f64()).collect()).unwrap_or_default()
+                pr.controller[k][q]
+                    .as_array()
+                    .map(|a| a.iter().filter_map(|x| x.as_f64()).collect())
+                    .unwrap_or_default()
             };
-            Controller::from_desc(&g("cr", "num"), &g("cr", "den"), &g("cy", "num"), &g("cy", "den")).ok()
+            Controller::from_desc(
+                &g("cr", "num"),
+                &g("cr", "den"),
+                &g("cy", "num"),
+                &g("cy", "den"),
+            )
+            .ok()
         } else {
             let m = pr.tune["method"].as_str().unwrap_or("");
-            Params::from_value(&pr.tune["params"]).ok().and_then(|prm| rules::tune(m, &plant, &prm).ok()).map(|t| t.controller)
+            Params::from_value(&pr.tune["params"])
+                .ok()
+                .and_then(|prm| rules::tune(m, &plant, &prm).ok())
+                .map(|t| t.controller)
         };
         if let Some(c) = c {
             ctrls.push((pr.title.clone(), c));
@@ -168,10 +226,15 @@ pub fn report() -> String {
             }
         }
     }
-    o.push_str("\nThe paper gives these responses as figures only (no tabulated metrics). Comparison controllers are mapped as \
+    o.push_str(
+        "\nThe paper shows these responses as figures only (no tabulated metrics). Comparison controllers are mapped as \
         documented in `comparison_controllers()`: Luyben (2003) series PID with derivative lag 0.1 τ_D, Shamsuzzoha & Lee (2006) \
-        b = 0.3 with derivative on the measurement, Gu et al. (2006) ideal PID with N = 10. Qualitatively as the text: \
-        the I-PD settings have no initial set-point jump beyond the inverse response and little overshoot; Luyben's setting is the slowest.\n");
+        b = 0.3 with derivative on the measurement, Gu et al. (2006) ideal PID with N = 10 (the paper states none of these \
+        filters). Against the text: Method I beats Luyben in overshoot, peak load error and settling, and has far less initial \
+        jump than all three PIDs; the 1.25 τ_D variant trades a smaller load peak error for a longer settling; Shamsuzzoha & Lee \
+        is better than Method I overall; Method II has no overshoot, the smallest load peak error and the shortest settling. \
+        The printed Method I gains (×1.06) give slightly faster, slightly less robust loops than the consistent ones (Ms column).\n",
+    );
 
     // ---- timing
     o.push_str("\n### Timings (this machine, release build)\n\n");

@@ -72,13 +72,22 @@ impl Process {
     /// Validated process. Errors name `plant.k`, `plant.tau`, `plant.tau_z`, `plant.theta`.
     pub fn new(k: f64, tau_p: f64, tau_z: f64, theta: f64) -> Result<Process> {
         if !k.is_finite() || k == 0.0 {
-            return Err(Error::new("plant.k", format!("must be finite and non-zero (got {k})")));
+            return Err(Error::new(
+                "plant.k",
+                format!("must be finite and non-zero (got {k})"),
+            ));
         }
         if !(tau_p.is_finite() && tau_p > 0.0) {
-            return Err(Error::new("plant.tau", format!("must be finite and > 0 (got {tau_p})")));
+            return Err(Error::new(
+                "plant.tau",
+                format!("must be finite and > 0 (got {tau_p})"),
+            ));
         }
         if !(tau_z.is_finite() && tau_z >= 0.0) {
-            return Err(Error::new("plant.tau_z", format!("must be finite and >= 0 (got {tau_z})")));
+            return Err(Error::new(
+                "plant.tau_z",
+                format!("must be finite and >= 0 (got {tau_z})"),
+            ));
         }
         if !(theta.is_finite() && theta > 0.0) {
             return Err(Error::new(
@@ -86,12 +95,19 @@ impl Process {
                 format!("must be finite and > 0 (got {theta}): the method needs a dead time, which makes the phase peak of Eq. (10) exist"),
             ));
         }
-        let p = Process { k, tau_p, tau_z, theta };
+        let p = Process {
+            k,
+            tau_p,
+            tau_z,
+            theta,
+        };
         let (d, tz) = (p.d(), p.tz());
         if d > 1e4 || tz > 1e4 {
             return Err(Error::new(
                 "plant.tau",
-                format!("normalized d = {d:.3e}, τ_Z = {tz:.3e} out of the computable range (≤ 1e4)"),
+                format!(
+                    "normalized d = {d:.3e}, τ_Z = {tz:.3e} out of the computable range (≤ 1e4)"
+                ),
             ));
         }
         Ok(p)
@@ -100,7 +116,12 @@ impl Process {
     /// From a plant given by family `ipdt_ir` (errors name `plant.family` otherwise).
     pub fn from_plant(plant: &Plant) -> Result<Process> {
         match plant.family {
-            Some(Family::IpdtIr { k, tau, tau_z, theta }) => Process::new(k, tau, tau_z, theta),
+            Some(Family::IpdtIr {
+                k,
+                tau,
+                tau_z,
+                theta,
+            }) => Process::new(k, tau, tau_z, theta),
             _ => Err(Error::new(
                 "plant.family",
                 "Arvanitis et al. 2012 needs the IPDT-IR family 'ipdt_ir' (k, tau, tau_z, theta)",
@@ -156,9 +177,9 @@ pub fn series_to_ipd(kc: f64, ti: f64, td: f64) -> (f64, f64, f64) {
 }
 
 /// Inverse of Eq. (4): `K_C² − K_P K_C + K_I K_D = 0`, so a series form exists when
-/// `K_P² ≥ 4 K_I K_D`. The quadratic's two roots swap the roles of τ_I and τ_D; this returns
-/// the one with the larger K_C (so `τ_D ≤ τ_I`... not necessarily — both are returned), as
-/// `[(K_C, τ_I, τ_D); 2]`, larger K_C first. Errors name `kp` when no real series form exists.
+/// `K_P² ≥ 4 K_I K_D`. The quadratic has two roots (two series settings with the same I-PD
+/// gains); both are returned as `[(K_C, τ_I, τ_D); 2]`, the larger |K_C| first. Errors name
+/// `kp` when no real series form exists and `ki` for non-finite gains or K_I = 0.
 pub fn ipd_to_series(kp: f64, ki: f64, kd: f64) -> Result<[(f64, f64, f64); 2]> {
     if !(kp.is_finite() && ki.is_finite() && kd.is_finite()) || ki == 0.0 {
         return Err(Error::new("ki", "gains must be finite with K_I ≠ 0"));
@@ -174,7 +195,11 @@ pub fn ipd_to_series(kp: f64, ki: f64, kd: f64) -> Result<[(f64, f64, f64); 2]> 
     let k1 = q;
     let k2 = if q != 0.0 { ki * kd / q } else { 0.0 };
     let make = |kc: f64| (kc, kc / ki, if kc != 0.0 { kd / kc } else { f64::NAN });
-    let (a, b) = if k1.abs() >= k2.abs() { (k1, k2) } else { (k2, k1) };
+    let (a, b) = if k1.abs() >= k2.abs() {
+        (k1, k2)
+    } else {
+        (k2, k1)
+    };
     Ok([make(a), make(b)])
 }
 
@@ -327,7 +352,10 @@ impl IpdLoop {
         } else {
             (1.0 + (self.ti * w).powi(2)).sqrt() / self.ti
         };
-        kc.abs() * ti_part * (1.0 + (self.td * w).powi(2)).sqrt() * (1.0 + (self.tz * w).powi(2)).sqrt()
+        kc.abs()
+            * ti_part
+            * (1.0 + (self.td * w).powi(2)).sqrt()
+            * (1.0 + (self.tz * w).powi(2)).sqrt()
             / (w * w * (1.0 + w * w).sqrt())
     }
 
@@ -339,7 +367,8 @@ impl IpdLoop {
         } else {
             self.ti * self.ti * w / (1.0 + (self.ti * w).powi(2))
         };
-        let dw = ti_w + self.td * self.td * w / (1.0 + (self.td * w).powi(2))
+        let dw = ti_w
+            + self.td * self.td * w / (1.0 + (self.td * w).powi(2))
             + self.tz * self.tz * w / (1.0 + (self.tz * w).powi(2))
             - 2.0 / w
             - w / (1.0 + w * w);
@@ -366,7 +395,11 @@ impl IpdLoop {
 
     fn eq10_dw(&self, w: f64) -> f64 {
         let t = |a: f64| -2.0 * a * a * a * w / (1.0 + (a * w).powi(2)).powi(2);
-        let ti_term = if self.ti.is_infinite() { 0.0 } else { t(self.ti) };
+        let ti_term = if self.ti.is_infinite() {
+            0.0
+        } else {
+            t(self.ti)
+        };
         -t(1.0) - t(self.tz) + ti_term + t(self.td)
     }
 
@@ -407,7 +440,7 @@ impl IpdLoop {
             n = n.add(&p);
         }
         let scale = n.max_abs();
-        if !(scale > 0.0) || !scale.is_finite() {
+        if !(scale.is_finite() && scale > 0.0) {
             return vec![];
         }
         let n = n.scale(1.0 / scale);
@@ -432,7 +465,7 @@ impl IpdLoop {
             }
             let step = f / df;
             let nw = w - step;
-            if !(nw > 0.0) || !nw.is_finite() {
+            if !(nw.is_finite() && nw > 0.0) {
                 break;
             }
             w = nw;
@@ -446,7 +479,7 @@ impl IpdLoop {
     /// w_P: the largest real root of Eq. (10), where φ_L has its (last) maximum.
     /// Errors (naming `tau_i`) when τ_I ≤ τ_I,min or the phase has no peak.
     pub fn w_p(&self) -> Result<f64> {
-        if !(self.ti > self.ti_min()) {
+        if self.ti.partial_cmp(&self.ti_min()) != Some(std::cmp::Ordering::Greater) {
             return Err(Error::new(
                 "tau_i",
                 format!(
@@ -483,7 +516,7 @@ impl IpdLoop {
     /// points of Eq. (10) split (0, ∞) into monotone pieces of φ_L, on which every crossing of
     /// −π(2k+1) is found by Brent's method; K_u is the smallest 1/A_L(w) among them.
     pub fn ultimate_gain(&self) -> (f64, Option<f64>) {
-        if !(self.ti > self.ti_min()) {
+        if self.ti.partial_cmp(&self.ti_min()) != Some(std::cmp::Ordering::Greater) {
             return (0.0, Some(0.0));
         }
         let cps = self.critical_points();
@@ -496,7 +529,11 @@ impl IpdLoop {
         };
         let mut lo = 0.0;
         // φ_L(0+): −π with integral action, −π/2 in the PD limit (τ_I = ∞)
-        let mut philo = if self.ti.is_infinite() { -0.5 * PI } else { -PI };
+        let mut philo = if self.ti.is_infinite() {
+            -0.5 * PI
+        } else {
+            -PI
+        };
         for &c in &cps {
             let phic = self.phase(c);
             let (pmin, pmax) = (philo.min(phic), philo.max(phic));
@@ -509,7 +546,11 @@ impl IpdLoop {
                     continue;
                 }
                 let g = |w: f64| self.phase(w) - level;
-                let a = if lo == 0.0 { 1e-300_f64.max(c * 1e-12) } else { lo };
+                let a = if lo == 0.0 {
+                    1e-300_f64.max(c * 1e-12)
+                } else {
+                    lo
+                };
                 if let Some((w, _)) = brent(g, a, c, g(a), g(c), 1e-15 * c, 200) {
                     consider(w);
                 }
@@ -563,10 +604,34 @@ impl IpdLoop {
 /// Solved exactly as the root of `d ln K_u/dτ_D = 0` (Brent). Returns 0 when K_u already
 /// decreases at τ_D = 0.
 pub fn tau_d_gm_max(d: f64, tz: f64, ti: f64) -> Result<f64> {
+    tau_d_gm_max_near(d, tz, ti, None)
+}
+
+/// [`tau_d_gm_max`] with a guess: when `hint` ± 20 % brackets the root, Brent starts there
+/// (Algorithm II's outer loop, where τ_I changes little between passes); otherwise the full
+/// search runs. Same result to the root tolerance.
+pub fn tau_d_gm_max_near(d: f64, tz: f64, ti: f64, hint: Option<f64>) -> Result<f64> {
     let g = |td: f64| IpdLoop::new(d, tz, ti, td).dln_ku_dtd().map(|x| x.0);
+    if let Some(h) = hint.filter(|h| h.is_finite() && *h > 0.0) {
+        let (a, b) = (h * 0.8, h * 1.2);
+        if a > (d + tz + 1.0 - ti).max(0.0) {
+            if let (Some(ga), Some(gb)) = (g(a), g(b)) {
+                if ga > 0.0 && gb < 0.0 {
+                    let f = |td: f64| g(td).unwrap_or(f64::NAN);
+                    if let Some((x, _)) = brent(f, a, b, ga, gb, 1e-14 * b, 200) {
+                        return Ok(x);
+                    }
+                }
+            }
+        }
+    }
     // K_u > 0 needs τ_I + τ_D > d + τ_Z + 1
     let lo_bound = (d + tz + 1.0 - ti).max(0.0);
-    let mut lo = if lo_bound > 0.0 { lo_bound * (1.0 + 1e-9) + 1e-12 } else { 0.0 };
+    let mut lo = if lo_bound > 0.0 {
+        lo_bound * (1.0 + 1e-9) + 1e-12
+    } else {
+        0.0
+    };
     let mut glo = g(lo);
     let mut n = 0;
     while glo.is_none() && n < 60 {
@@ -575,7 +640,10 @@ pub fn tau_d_gm_max(d: f64, tz: f64, ti: f64) -> Result<f64> {
         n += 1;
     }
     let glo = glo.ok_or_else(|| {
-        Error::new("tau_i", "ultimate gain undefined near the lower end of τ_D (τ_D,GMmax)")
+        Error::new(
+            "tau_i",
+            "ultimate gain undefined near the lower end of τ_D (τ_D,GMmax)",
+        )
     })?;
     if glo <= 0.0 {
         return Ok(lo);
@@ -634,7 +702,7 @@ pub fn tau_d_max_gm_ip(d: f64, tz: f64, ti: f64) -> Result<f64> {
     };
     let lo = tau_d_gm_max(d, tz, ti)?;
     let hlo = h(lo);
-    if !(hlo > 0.0) {
+    if hlo.is_nan() || hlo <= 0.0 {
         return Ok(lo);
     }
     let mut hi = (2.0 * lo).max(0.5);
@@ -649,7 +717,7 @@ pub fn tau_d_max_gm_ip(d: f64, tz: f64, ti: f64) -> Result<f64> {
         hhi = h(hi);
         n += 1;
     }
-    if !(hhi <= 0.0) {
+    if hhi.is_nan() || hhi > 0.0 {
         return Err(Error::new(
             "tau_i",
             "the I-PD ultimate gain stays above the I-P one for all τ_D: τ_D,maxGM,I-P undefined",
@@ -683,7 +751,7 @@ pub fn eq20_root(d: f64, tz: f64, td: f64, kc: f64, zeta: f64) -> Result<f64> {
     let b = 2.0 * a - z2 * (1.0 / kc + a);
     let c0 = a * a - z2 * c;
     let disc = b * b - 4.0 * c0;
-    if !(disc >= 0.0) {
+    if disc.is_nan() || disc < 0.0 {
         return Err(Error::new(
             "params.zeta",
             format!(
@@ -693,7 +761,11 @@ pub fn eq20_root(d: f64, tz: f64, td: f64, kc: f64, zeta: f64) -> Result<f64> {
     }
     let sq = disc.sqrt();
     // largest root, computed without cancellation
-    let r = if b <= 0.0 { 0.5 * (-b + sq) } else { 2.0 * c0 / (-b - sq) };
+    let r = if b <= 0.0 {
+        0.5 * (-b + sq)
+    } else {
+        2.0 * c0 / (-b - sq)
+    };
     Ok(r)
 }
 
@@ -723,7 +795,13 @@ pub struct MethodISolution {
 /// Steps 3-5 of Algorithm I (Steps 2-4 of II and III): at fixed τ_D, iterate
 /// K_C ← Eq. (11) at w_P of Eq. (10), τ_I ← largest root of Eq. (20), until τ_I settles.
 /// Returns (K_C, τ_I, w_P, PM_max, iterations).
-pub fn fixed_point(d: f64, tz: f64, td: f64, zeta: f64, ti_init: f64) -> Result<(f64, f64, f64, f64, usize)> {
+pub fn fixed_point(
+    d: f64,
+    tz: f64,
+    td: f64,
+    zeta: f64,
+    ti_init: f64,
+) -> Result<(f64, f64, f64, f64, usize)> {
     let ti_min = d + tz + 1.0 - td;
     let mut x = ti_init;
     if !(x > ti_min && x > 0.0) {
@@ -768,8 +846,16 @@ pub fn fixed_point(d: f64, tz: f64, td: f64, zeta: f64, ti_init: f64) -> Result<
                 Some(x2)
             } else {
                 let den = x2 - 2.0 * x1 + x;
-                let xa = if den != 0.0 { x - (x1 - x) * (x1 - x) / den } else { x2 };
-                if xa.is_finite() && xa > ti_min && xa > 0.0 && (xa - x2).abs() < 100.0 * (x2 - x1).abs() + 1e-12 {
+                let xa = if den != 0.0 {
+                    x - (x1 - x) * (x1 - x) / den
+                } else {
+                    x2
+                };
+                if xa.is_finite()
+                    && xa > ti_min
+                    && xa > 0.0
+                    && (xa - x2).abs() < 100.0 * (x2 - x1).abs() + 1e-12
+                {
                     fallback = Some(x2);
                     x = xa;
                 } else {
@@ -858,7 +944,7 @@ pub fn algorithm2(d: f64, tz: f64, zeta: f64, init: Option<(f64, f64)>) -> Resul
         let (_, ti, _, _, it) = fixed_point(d, tz, td, zeta, *ti_warm)?;
         *total += it;
         *ti_warm = ti;
-        Ok(2.0 * tau_d_gm_max(d, tz, ti)?) // Step 5
+        Ok(2.0 * tau_d_gm_max_near(d, tz, ti, Some(0.5 * td))?) // Step 5
     };
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(1.0);
     let mut x = td0;
@@ -871,7 +957,11 @@ pub fn algorithm2(d: f64, tz: f64, zeta: f64, init: Option<(f64, f64)>) -> Resul
                 done = Some(x2);
             } else {
                 let den = x2 - 2.0 * x1 + x;
-                let xa = if den != 0.0 { x - (x1 - x) * (x1 - x) / den } else { x2 };
+                let xa = if den != 0.0 {
+                    x - (x1 - x) * (x1 - x) / den
+                } else {
+                    x2
+                };
                 x = if xa.is_finite() && xa > 0.0 && (xa - x2).abs() < 100.0 * (x2 - x1).abs() {
                     xa
                 } else {
@@ -906,8 +996,21 @@ pub fn algorithm2(d: f64, tz: f64, zeta: f64, init: Option<(f64, f64)>) -> Resul
 /// consistent I-PD gains; K = K̄, τ_P = τ̄_P weight the control terms. `f64::INFINITY` when
 /// the loop diverges. ISENSDCO (14) is infinite whenever u jumps (an ideal derivative on a
 /// plant of relative degree one, i.e. τ̄_Z > 0): that is an error naming `params.criterion`.
-pub fn load_criterion(p: &Process, kp: f64, ki: f64, kd: f64, criterion: &str, t_end: f64) -> Result<f64> {
-    let plant = Family::IpdtIr { k: p.k, tau: p.tau_p, tau_z: p.tau_z, theta: p.theta }.plant();
+pub fn load_criterion(
+    p: &Process,
+    kp: f64,
+    ki: f64,
+    kd: f64,
+    criterion: &str,
+    t_end: f64,
+) -> Result<f64> {
+    let plant = Family::IpdtIr {
+        k: p.k,
+        tau: p.tau_p,
+        tau_z: p.tau_z,
+        theta: p.theta,
+    }
+    .plant();
     let c = Pid::ipd(kp, ki, kd).to_controller()?;
     let dt = (t_end / 1500.0).max(p.theta / 4.0).min(t_end / 200.0);
     let mut sc = Scenario::steps(t_end, dt, 0.0, 0.0, 0.0, 1.0);
@@ -921,7 +1024,11 @@ pub fn load_criterion(p: &Process, kp: f64, ki: f64, kd: f64, criterion: &str, t
         .metrics
         .regulatory
         .ok_or_else(|| Error::new("params.criterion", "no regulatory window in the simulation"))?;
-    let j = if criterion == "isensdco" { m.isensdco } else { m.isenscod };
+    let j = if criterion == "isensdco" {
+        m.isensdco
+    } else {
+        m.isenscod
+    };
     match j {
         Some(v) if v.is_finite() => Ok(v),
         Some(_) => Ok(f64::INFINITY),
@@ -934,7 +1041,13 @@ pub fn load_criterion(p: &Process, kp: f64, ki: f64, kd: f64, criterion: &str, t
 
 /// Golden-section minimization of `f` on `[a, b]` to a bracket of `tol`; returns
 /// (x, f(x), evaluations).
-fn golden_min(mut f: impl FnMut(f64) -> Result<f64>, mut a: f64, mut b: f64, tol: f64, maxit: usize) -> Result<(f64, f64, usize)> {
+fn golden_min(
+    mut f: impl FnMut(f64) -> Result<f64>,
+    mut a: f64,
+    mut b: f64,
+    tol: f64,
+    maxit: usize,
+) -> Result<(f64, f64, usize)> {
     let r = 0.5 * (5f64.sqrt() - 1.0);
     let mut c = b - r * (b - a);
     let mut d = a + r * (b - a);
@@ -974,7 +1087,12 @@ pub struct Alg3Info {
 /// or (14) of a unit load step (K_C following Eq. 11 for each trial τ_D), by golden-section
 /// search (a coarse scan brackets the minimum first); repeat until τ_D settles (relative
 /// 1e-5, at most 40 outer passes).
-pub fn algorithm3(p: &Process, zeta: f64, criterion: &str, init: Option<(f64, f64)>) -> Result<(MethodISolution, Alg3Info)> {
+pub fn algorithm3(
+    p: &Process,
+    zeta: f64,
+    criterion: &str,
+    init: Option<(f64, f64)>,
+) -> Result<(MethodISolution, Alg3Info)> {
     let (d, tz) = (p.d(), p.tz());
     let (td0, ti0) = match init {
         Some(x) => x,
@@ -1009,7 +1127,9 @@ pub fn algorithm3(p: &Process, zeta: f64, criterion: &str, init: Option<(f64, f6
             None => {
                 // coarse scan
                 let n = 12;
-                let xs: Vec<f64> = (0..=n).map(|i| lo + (hi - lo) * i as f64 / n as f64).collect();
+                let xs: Vec<f64> = (0..=n)
+                    .map(|i| lo + (hi - lo) * i as f64 / n as f64)
+                    .collect();
                 let mut js = vec![];
                 for &x in &xs {
                     js.push(j_of(x)?);
@@ -1026,7 +1146,11 @@ pub fn algorithm3(p: &Process, zeta: f64, criterion: &str, init: Option<(f64, f6
         let at_edge = (x - a).abs() < 1e-5 * (b - a) || (b - x).abs() < 1e-5 * (b - a);
         let step = x - td;
         td = x;
-        bracket = if at_edge { None } else { Some(((x - 0.15 * x.max(0.1)).max(lo), x + 0.15 * x.max(0.1))) };
+        bracket = if at_edge {
+            None
+        } else {
+            Some(((x - 0.15 * x.max(0.1)).max(lo), x + 0.15 * x.max(0.1)))
+        };
         if step.abs() <= 1e-5 * td.max(1.0) && !at_edge {
             let (kc, ti_f, w_p, pm_max, it) = fixed_point(d, tz, td, zeta, ti)?;
             total += it;
@@ -1045,7 +1169,10 @@ pub fn algorithm3(p: &Process, zeta: f64, criterion: &str, init: Option<(f64, f6
                     ti_init: ti0,
                     td_init: td0,
                 },
-                Alg3Info { j, simulations: sims },
+                Alg3Info {
+                    j,
+                    simulations: sims,
+                },
             ));
         }
     }
@@ -1069,7 +1196,7 @@ pub fn theta_min(d: f64, tz: f64) -> f64 {
 pub fn method2_gains(d: f64, tz: f64, theta: f64) -> Result<(f64, f64, f64)> {
     let (dmin, dmax) = (d.min(1.0), d.max(1.0));
     let tmin = theta_min(d, tz);
-    if !(theta > tmin) || !theta.is_finite() {
+    if !theta.is_finite() || tmin.is_nan() || theta <= tmin {
         return Err(Error::new(
             "params.theta_design",
             format!("θ = {theta:.6} must exceed θ_min = (d + τ_Z + d_max + 1)/2 = {tmin:.6} (Eq. 31, normalized)"),
@@ -1167,19 +1294,66 @@ pub struct Fit {
 
 /// Measured M.N.E. of every fit, in the order of [`fits`] (from `reproduce arvanitis2012`).
 const MEASURED_MNE: [f64; 60] = [
-    0.2509, 0.0245, // Table 2
-    0.0784, 0.7329, // Table 3
-    0.0384, 0.0384, 0.0405, 0.6792, 0.0290, // Table 4 K_C
-    1.8296, 0.0579, 0.0519, 0.0270, 0.0289, // Table 4 τ_I
-    0.8286, 0.0456, 0.0342, 0.0651, 0.0623, 0.0750, 0.0819, // Table 5 K_C
-    0.0573, 0.0753, 0.0550, 0.0504, 0.0511, // Table 5 τ_I
-    0.4111, 0.0403, 0.0464, 0.0229, 0.0683, // Table 6 K_C
-    0.0171, 0.0486, 0.0350, 0.0223, 0.0428, // Table 6 τ_I
-    0.1083, 0.4204, 0.0433, 0.0476, 0.0453, // Table 6 τ_D
-    0.0131, 0.0052, 0.0056, 0.0034, 0.0093, // Table 7 K_C
-    0.0291, 0.0314, 0.0120, 0.0111, 0.0251, // Table 7 τ_I
-    0.0172, 0.0107, 0.0083, 0.4130, 0.2027, // Table 7 τ_D
-    0.0434, 0.0551, f64::NAN, f64::NAN, // Table 8 (ISENSDCO: infinite with an ideal derivative)
+    0.2509,
+    0.0245, // Table 2
+    0.0784,
+    0.7329, // Table 3
+    0.0384,
+    0.0384,
+    0.0405,
+    0.6792,
+    0.0290, // Table 4 K_C
+    1.8296,
+    0.0579,
+    0.0519,
+    0.0270,
+    0.0289, // Table 4 τ_I
+    0.8286,
+    0.0456,
+    0.0342,
+    0.0651,
+    0.0623,
+    0.0750,
+    0.0819, // Table 5 K_C
+    0.0573,
+    0.0753,
+    0.0550,
+    0.0504,
+    0.0511, // Table 5 τ_I
+    0.4111,
+    0.0403,
+    0.0464,
+    0.0229,
+    0.0683, // Table 6 K_C
+    0.0171,
+    0.0486,
+    0.0350,
+    0.0223,
+    0.0428, // Table 6 τ_I
+    0.1083,
+    0.4204,
+    0.0433,
+    0.0476,
+    0.0453, // Table 6 τ_D
+    0.0131,
+    0.0052,
+    0.0056,
+    0.0034,
+    0.0093, // Table 7 K_C
+    0.0291,
+    0.0314,
+    0.0120,
+    0.0111,
+    0.0251, // Table 7 τ_I
+    0.0172,
+    0.0107,
+    0.0083,
+    0.4130,
+    0.2027, // Table 7 τ_D
+    0.0434,
+    0.0551,
+    f64::NAN,
+    f64::NAN, // Table 8 (ISENSDCO: infinite with an ideal derivative)
 ];
 
 impl Fit {
@@ -1211,22 +1385,37 @@ pub fn fits() -> Vec<Fit> {
     let mut v = vec![
         // Table 2: min τ_D,GMmax(d, τ_Z)
         f(2, nan, MinTdGmMax, (0.0, 0.5, 0.0, 0.5), 0.028, |tz, d| {
-            -0.0561 + 0.555 * d - 0.0629 * sq(tz) + 0.1308 * tz - 0.372 * sq(d)
+            -0.0561 + 0.555 * d - 0.0629 * sq(tz) + 0.1308 * tz
+                - 0.372 * sq(d)
                 - 0.1171 * (d + tz).powi(3)
                 + 0.5144 * (d + tz).sqrt()
         }),
         f(2, nan, MinTdGmMax, (0.5, 5.0, 0.5, 5.0), 0.025, |tz, d| {
-            0.4722 + 0.2213 * d - 0.0045 * sq(tz) + 0.0375 * tz + 0.0026 * sq(d)
+            0.4722 + 0.2213 * d - 0.0045 * sq(tz)
+                + 0.0375 * tz
+                + 0.0026 * sq(d)
                 + 0.00004093 * (d + tz).powi(3)
         }),
         // Table 3: min τ_D,maxGM,I-P(d, τ_Z)
-        f(3, nan, MinTdMaxGmIp, (0.0, 0.5, 0.0, 0.5), 0.028, |tz, d| {
-            1.3335 - 1.311 * d - 0.755 * sq(tz) + 1.7764 * tz + 0.634 * sq(d) + 1.484 * d.sqrt()
-                - 1.7531 * tz.sqrt()
-        }),
-        f(3, nan, MinTdMaxGmIp, (0.5, 5.0, 0.5, 5.0), 0.025, |tz, d| {
-            1.1393 + 0.4528 * d - 0.107 * tz + 0.0114 * sq(tz) + 0.0044 * sq(d)
-        }),
+        f(
+            3,
+            nan,
+            MinTdMaxGmIp,
+            (0.0, 0.5, 0.0, 0.5),
+            0.028,
+            |tz, d| {
+                1.3335 - 1.311 * d - 0.755 * sq(tz) + 1.7764 * tz + 0.634 * sq(d) + 1.484 * d.sqrt()
+                    - 1.7531 * tz.sqrt()
+            },
+        ),
+        f(
+            3,
+            nan,
+            MinTdMaxGmIp,
+            (0.5, 5.0, 0.5, 5.0),
+            0.025,
+            |tz, d| 1.1393 + 0.4528 * d - 0.107 * tz + 0.0114 * sq(tz) + 0.0044 * sq(d),
+        ),
         // Table 4: Algorithm I, τ_D = min τ_D,maxGM,I-P; K_C
         f(4, 0.6, Kc, (0.2, 2.0, 0.1, 2.0), 0.038, |tz, d| {
             0.1994 + 0.0832 * d - 0.0143 * tz - 0.0179 * sq(d) - 0.1038 * tz.sqrt()
@@ -1249,17 +1438,25 @@ pub fn fits() -> Vec<Fit> {
                 - 0.0509 * d / (d + tz)
         }),
         f(4, 1.2, Kc, (0.2, 2.0, 0.1, 2.0), 0.031, |tz, d| {
-            -0.0887 - 0.0339 * d + 0.0072 * tz + 0.0039 * sq(d) + 0.0282 * tz.sqrt()
+            -0.0887 - 0.0339 * d
+                + 0.0072 * tz
+                + 0.0039 * sq(d)
+                + 0.0282 * tz.sqrt()
                 + 0.256 / (d + tz + 0.1)
                 + 0.1593 * d / (d + tz)
         }),
         // Table 4: τ_I
         f(4, 0.6, Ti, (0.2, 2.0, 0.1, 2.0), 0.026, |tz, d| {
-            1.4954 + 3.1027 * d - 3.8488 * tz - 0.1729 * sq(d) - 0.5138 * tz.sqrt()
+            1.4954 + 3.1027 * d
+                - 3.8488 * tz
+                - 0.1729 * sq(d)
+                - 0.5138 * tz.sqrt()
                 - 1.4686 / (d + tz + 1.0)
         }),
         f(4, 0.707, Ti, (0.2, 2.0, 0.1, 2.0), 0.0286, |tz, d| {
-            2.5628 + 4.329 * d + 6.2521 * tz - 0.4398 * sq(d) - 2.5004 * tz.sqrt()
+            2.5628 + 4.329 * d + 6.2521 * tz
+                - 0.4398 * sq(d)
+                - 2.5004 * tz.sqrt()
                 - 1.585 / (d + tz + 1.0)
         }),
         f(4, 0.85, Ti, (0.2, 2.0, 0.1, 2.0), 0.0332, |tz, d| {
@@ -1316,12 +1513,18 @@ pub fn fits() -> Vec<Fit> {
         }),
         // Table 5: τ_I
         f(5, 0.6, Ti, (0.3, 2.0, 0.3, 2.0), 0.0113, |tz, d| {
-            -0.4713 + 1.8218 * d + 1.8329 * tz + 0.0067 * sq(d) + 1.4335 * tz.sqrt()
+            -0.4713
+                + 1.8218 * d
+                + 1.8329 * tz
+                + 0.0067 * sq(d)
+                + 1.4335 * tz.sqrt()
                 + 0.3006 * sq(tz)
                 + 1.5613 * d.sqrt()
         }),
         f(5, 0.707, Ti, (0.2, 2.0, 0.06, 2.0), 0.0417, |tz, d| {
-            0.2867 + 0.2494 * d - 3.2074 * tz + 0.4602 * sq(d) + 6.44 * tz.sqrt()
+            0.2867 + 0.2494 * d - 3.2074 * tz
+                + 0.4602 * sq(d)
+                + 6.44 * tz.sqrt()
                 + 1.5289 * sq(tz)
                 + 3.6189 * d.sqrt()
                 - 2.2731 / (d + tz + 1.0)
@@ -1333,7 +1536,11 @@ pub fn fits() -> Vec<Fit> {
                 + 0.8839 / (d + tz + 1.0)
         }),
         f(5, 1.0, Ti, (0.2, 2.0, 0.1, 2.0), 0.024, |tz, d| {
-            2.0741 + 3.515 * d + 3.3445 * tz + 0.3835 * sq(d) + 0.2227 * tz.sqrt()
+            2.0741
+                + 3.515 * d
+                + 3.3445 * tz
+                + 0.3835 * sq(d)
+                + 0.2227 * tz.sqrt()
                 + 3.2956 * sq(tz)
                 + 6.4788 * d.sqrt()
                 + 2.326 / (d + tz + 1.0)
@@ -1356,23 +1563,34 @@ pub fn fits() -> Vec<Fit> {
                 - 0.1212 * d / (d + tz)
         }),
         f(6, 0.85, Kc, (0.2, 2.0, 0.1, 2.0), 0.047, |tz, d| {
-            0.1454 - 0.0477 * d - 0.0313 * tz + 0.0082 * sq(d) + 0.0092 * tz.sqrt()
+            0.1454 - 0.0477 * d - 0.0313 * tz
+                + 0.0082 * sq(d)
+                + 0.0092 * tz.sqrt()
                 + 0.1569 / (d + tz - 0.15)
                 + 0.0439 * d / (d + tz)
         }),
         f(6, 1.0, Kc, (0.2, 2.0, 0.1, 2.0), 0.026, |tz, d| {
-            -0.1131 - 0.0476 * d - 0.0211 * tz + 0.0113 * sq(d) + 0.089 * tz.sqrt()
+            -0.1131 - 0.0476 * d - 0.0211 * tz
+                + 0.0113 * sq(d)
+                + 0.089 * tz.sqrt()
                 + 0.3852 / (d + tz + 0.3)
                 + 0.1452 * d / (d + tz)
         }),
         f(6, 1.2, Kc, (0.2, 2.0, 0.1, 2.0), 0.0465, |tz, d| {
-            -0.1858 - 0.0375 * d + 0.0029 * tz + 0.0091 * sq(d) + 0.0607 * tz.sqrt()
+            -0.1858 - 0.0375 * d
+                + 0.0029 * tz
+                + 0.0091 * sq(d)
+                + 0.0607 * tz.sqrt()
                 + 0.5999 / (d + tz + 1.0)
                 + 0.1459 * d / (d + tz)
         }),
         // Table 6: τ_I
         f(6, 0.6, Ti, (0.2, 2.0, 0.1, 2.0), 0.018, |tz, d| {
-            -0.5878 + 1.7259 * d + 1.5127 * tz + 0.0187 * sq(d) + 2.0613 * tz.sqrt()
+            -0.5878
+                + 1.7259 * d
+                + 1.5127 * tz
+                + 0.0187 * sq(d)
+                + 2.0613 * tz.sqrt()
                 + 0.11 * sq(tz)
                 + 1.6319 * d.sqrt()
                 + 0.0603 / (d + tz + 1.0)
@@ -1383,13 +1601,21 @@ pub fn fits() -> Vec<Fit> {
                 + 3.418 / (d + tz + 1.0).sqrt()
         }),
         f(6, 0.85, Ti, (0.2, 1.9, 0.14, 2.0), 0.036, |tz, d| {
-            -0.7157 + 1.6486 * d + 4.1163 * tz + 0.3192 * sq(d) + 0.8445 * tz.sqrt()
+            -0.7157
+                + 1.6486 * d
+                + 4.1163 * tz
+                + 0.3192 * sq(d)
+                + 0.8445 * tz.sqrt()
                 + 2.5935 * d.sqrt()
                 + 4.3918 * (d + tz).sqrt()
                 - 1.5426 / (d + tz + 1.0).sqrt()
         }),
         f(6, 1.0, Ti, (0.2, 1.9, 0.14, 2.0), 0.0238, |tz, d| {
-            -0.3735 + 5.9535 * d + 11.0894 * tz + 0.3347 * sq(d) + 0.9352 * tz.sqrt()
+            -0.3735
+                + 5.9535 * d
+                + 11.0894 * tz
+                + 0.3347 * sq(d)
+                + 0.9352 * tz.sqrt()
                 + 3.7375 * d.sqrt()
                 + 0.1432 * (d + tz).sqrt()
                 + 1.438 / (d + tz + 1.0).sqrt()
@@ -1401,13 +1627,15 @@ pub fn fits() -> Vec<Fit> {
         }),
         // Table 6: τ_D
         f(6, 0.6, Td, (0.2, 2.0, 0.1, 2.0), 0.029, |tz, d| {
-            1.664 - 0.1961 * d + 0.0583 * tz + 0.1392 * sq(d) + 0.0145 * tz.sqrt()
+            1.664 - 0.1961 * d
+                + 0.0583 * tz
+                + 0.1392 * sq(d)
+                + 0.0145 * tz.sqrt()
                 + 0.7743 * d.sqrt()
                 - 1.3746 / (d + tz + 1.0)
         }),
         f(6, 0.707, Td, (0.2, 2.0, 0.1, 2.0), 0.0437, |tz, d| {
-            1.9179 + 0.524 * d + 1.8374 * tz - 0.0061 * sq(d) - 0.2274 * sq(tz)
-                - 2.1731 * tz.sqrt()
+            1.9179 + 0.524 * d + 1.8374 * tz - 0.0061 * sq(d) - 0.2274 * sq(tz) - 2.1731 * tz.sqrt()
                 + 0.045 * d.sqrt()
                 - 0.178 / (d + tz + 1.0)
         }),
@@ -1423,7 +1651,8 @@ pub fn fits() -> Vec<Fit> {
                 - 2.1512 / (d + tz + 1.0)
         }),
         f(6, 1.2, Td, (0.2, 2.0, 0.1, 2.0), 0.048, |tz, d| {
-            1.8375 + 0.3488 * d + 0.2776 * tz + 0.022 * sq(d) - 0.5294 * tz.sqrt()
+            1.8375 + 0.3488 * d + 0.2776 * tz + 0.022 * sq(d)
+                - 0.5294 * tz.sqrt()
                 - 0.0578 * d.sqrt()
                 - 0.5849 / (d + tz).sqrt()
         }),
@@ -1476,13 +1705,17 @@ pub fn fits() -> Vec<Fit> {
                 + 4.998 * tz.sqrt()
         }),
         f(7, 1.2, Ti, (0.2, 2.0, 0.2, 2.0), 0.025, |tz, d| {
-            0.3879 + 14.3387 * d + 1.3617 * tz - 1.0061 * sq(d) + 0.9472 * sq(tz)
+            0.3879 + 14.3387 * d + 1.3617 * tz - 1.0061 * sq(d)
+                + 0.9472 * sq(tz)
                 + 1.9009 * d.sqrt()
                 + 16.4489 * tz.sqrt()
         }),
         // Table 7: τ_D
         f(7, 0.6, Td, (0.2, 1.7, 0.2, 2.0), 0.023, |tz, d| {
-            0.7388 + 1.1169 * d + 1.5105 * tz - 0.0632 * sq(d) - 0.3234 * sq(tz) - 0.4559 * tz.sqrt()
+            0.7388 + 1.1169 * d + 1.5105 * tz
+                - 0.0632 * sq(d)
+                - 0.3234 * sq(tz)
+                - 0.4559 * tz.sqrt()
         }),
         f(7, 0.707, Td, (0.3, 1.65, 0.3, 1.65), 0.0142, |tz, d| {
             0.3239 + 0.758 * d + 0.5251 * tz - 0.0065 * sq(d) - 0.0819 * sq(tz)
@@ -1495,44 +1728,78 @@ pub fn fits() -> Vec<Fit> {
                 + 0.7295 * tz.sqrt()
         }),
         f(7, 1.0, Td, (0.3, 1.69, 0.3, 1.69), 0.012, |tz, d| {
-            0.3745 + 0.7965 * d + 0.4051 * tz + 0.0164 * sq(d) + 0.0029 * sq(tz)
+            0.3745
+                + 0.7965 * d
+                + 0.4051 * tz
+                + 0.0164 * sq(d)
+                + 0.0029 * sq(tz)
                 + 0.4242 * d.sqrt()
                 + 0.0029 * tz.sqrt()
         }),
         f(7, 1.2, Td, (0.2, 2.0, 0.2, 2.0), 0.021, |tz, d| {
-            0.6193 + 0.9377 * d + 1.0697 * tz + 0.006 * sq(d) - 0.1332 * sq(tz)
-                + 0.4388 * d.sqrt()
+            0.6193 + 0.9377 * d + 1.0697 * tz + 0.006 * sq(d) - 0.1332 * sq(tz) + 0.4388 * d.sqrt()
                 - 0.1332 * tz.sqrt()
         }),
         // Table 8: β of Method II
-        f(8, nan, BetaIsenscod, (0.0, 2.0, 0.0, 1.0), 0.0426, |tz, d| {
-            -0.1131 - 1.4126 * d - 2.0935 * tz - 0.2022 * sq(d) + 0.0486 * tz.sqrt()
-                - 0.5246 * d.sqrt()
-                + 4.2676 * (d + tz).sqrt()
-                + 0.0233 * (d + tz).powi(3)
-        }),
-        f(8, nan, BetaIsenscod, (0.0, 2.0, 1.0, 2.0), 0.0496, |tz, d| {
-            2.1108 + 1.4284 * d + 0.5002 * tz - 0.6778 * sq(d) + 0.9347 * tz.sqrt()
-                + 1.5618 * d.sqrt()
-                - 2.651 * (d + tz).sqrt()
-                + 0.0209 * (d + tz).powi(3)
-                - 0.269 * sq(tz)
-        }),
-        f(8, nan, BetaIsensdco, (0.0, 2.0, 0.13, 1.0), 0.045, |tz, d| {
-            -0.0409 + 4.5635 * d + 4.1371 * tz - 0.4161 * sq(d) + 0.8091 * tz.sqrt()
-                + 2.8912 * d.sqrt()
-                - 3.8217 * (d + tz).sqrt()
-                - 1.5426 * sq(d + tz)
-                + 0.1682 * (d + tz).powi(3)
-                + 0.304 * sq(tz)
-        }),
-        f(8, nan, BetaIsensdco, (0.0, 2.0, 1.0, 2.0), 0.047, |tz, d| {
-            0.886 - 0.6479 * d - 1.0903 * tz - 0.5933 * sq(d) + 1.2604 * tz.sqrt()
-                + 2.6081 * d.sqrt()
-                - 0.759 * (d + tz).sqrt()
-                + 0.2357 * (d + tz).powi(3)
-                - 0.2545 * sq(tz)
-        }),
+        f(
+            8,
+            nan,
+            BetaIsenscod,
+            (0.0, 2.0, 0.0, 1.0),
+            0.0426,
+            |tz, d| {
+                -0.1131 - 1.4126 * d - 2.0935 * tz - 0.2022 * sq(d) + 0.0486 * tz.sqrt()
+                    - 0.5246 * d.sqrt()
+                    + 4.2676 * (d + tz).sqrt()
+                    + 0.0233 * (d + tz).powi(3)
+            },
+        ),
+        f(
+            8,
+            nan,
+            BetaIsenscod,
+            (0.0, 2.0, 1.0, 2.0),
+            0.0496,
+            |tz, d| {
+                2.1108 + 1.4284 * d + 0.5002 * tz - 0.6778 * sq(d)
+                    + 0.9347 * tz.sqrt()
+                    + 1.5618 * d.sqrt()
+                    - 2.651 * (d + tz).sqrt()
+                    + 0.0209 * (d + tz).powi(3)
+                    - 0.269 * sq(tz)
+            },
+        ),
+        f(
+            8,
+            nan,
+            BetaIsensdco,
+            (0.0, 2.0, 0.13, 1.0),
+            0.045,
+            |tz, d| {
+                -0.0409 + 4.5635 * d + 4.1371 * tz - 0.4161 * sq(d)
+                    + 0.8091 * tz.sqrt()
+                    + 2.8912 * d.sqrt()
+                    - 3.8217 * (d + tz).sqrt()
+                    - 1.5426 * sq(d + tz)
+                    + 0.1682 * (d + tz).powi(3)
+                    + 0.304 * sq(tz)
+            },
+        ),
+        f(
+            8,
+            nan,
+            BetaIsensdco,
+            (0.0, 2.0, 1.0, 2.0),
+            0.047,
+            |tz, d| {
+                0.886 - 0.6479 * d - 1.0903 * tz - 0.5933 * sq(d)
+                    + 1.2604 * tz.sqrt()
+                    + 2.6081 * d.sqrt()
+                    - 0.759 * (d + tz).sqrt()
+                    + 0.2357 * (d + tz).powi(3)
+                    - 0.2545 * sq(tz)
+            },
+        ),
     ];
     for (f, m) in v.iter_mut().zip(MEASURED_MNE) {
         f.measured_mne = m;
@@ -1565,7 +1832,11 @@ pub fn exact_for_fit(f: &Fit, tz: f64, d: f64) -> Result<f64> {
         _ => {
             let p = Process::new(1.0, 1.0, tz, d)?;
             let wu = wu_eq34(d, tz);
-            let crit = if f.quantity == FitQuantity::BetaIsensdco { "isensdco" } else { "isenscod" };
+            let crit = if f.quantity == FitQuantity::BetaIsensdco {
+                "isensdco"
+            } else {
+                "isenscod"
+            };
             let tmin = theta_min(d, tz);
             let j = |beta: f64| -> Result<f64> {
                 let th = 2.0 * PI / (wu * beta);
@@ -1582,7 +1853,12 @@ pub fn exact_for_fit(f: &Fit, tz: f64, d: f64) -> Result<f64> {
             for &x in &xs {
                 js.push(j(x)?);
             }
-            let ib = js.iter().enumerate().min_by(|x, y| x.1.total_cmp(y.1)).map(|x| x.0).unwrap_or(0);
+            let ib = js
+                .iter()
+                .enumerate()
+                .min_by(|x, y| x.1.total_cmp(y.1))
+                .map(|x| x.0)
+                .unwrap_or(0);
             let a = if ib == 0 { bmax * 0.01 } else { xs[ib - 1] };
             let b = xs[(ib + 1).min(n - 1)];
             golden_min(j, a, b, 1e-6, 100).map(|r| r.0)
@@ -1612,7 +1888,13 @@ pub fn measured_mne(f: &Fit, n: usize) -> (f64, usize) {
 
 /// Picks the fit of `table`/`quantity`/`zeta` whose box contains (τ_Z, d), else the one whose
 /// box is nearest, with a warning.
-fn pick_fit(table: u8, quantity: FitQuantity, zeta: Option<f64>, tz: f64, d: f64) -> Option<(Fit, Vec<String>)> {
+fn pick_fit(
+    table: u8,
+    quantity: FitQuantity,
+    zeta: Option<f64>,
+    tz: f64,
+    d: f64,
+) -> Option<(Fit, Vec<String>)> {
     let cands: Vec<Fit> = fits()
         .into_iter()
         .filter(|f| {
@@ -1640,7 +1922,9 @@ fn pick_fit(table: u8, quantity: FitQuantity, zeta: Option<f64>, tz: f64, d: f64
         let dy = (c - d).max(0.0).max(d - e);
         dx * dx + dy * dy
     };
-    let best = cands.into_iter().min_by(|x, y| dist(x).total_cmp(&dist(y)))?;
+    let best = cands
+        .into_iter()
+        .min_by(|x, y| dist(x).total_cmp(&dist(y)))?;
     let (a, b, c, e) = best.range;
     let w = format!(
         "Table {table} used outside its printed validity range ({a} < τ_Z < {b}, {c} < d < {e}) at τ_Z = {tz:.4}, d = {d:.4}: the fit is an extrapolation"
@@ -1767,7 +2051,10 @@ fn tuning_from_ipd(
 ) -> Result<Tuning> {
     for (n, v) in [("kp", kp), ("ki", ki), ("kd", kd)] {
         if !v.is_finite() {
-            return Err(Error::new("plant", format!("the rule produced a non-finite gain {n} = {v}")));
+            return Err(Error::new(
+                "plant",
+                format!("the rule produced a non-finite gain {n} = {v}"),
+            ));
         }
     }
     let controller = Pid::ipd(kp, ki, kd).to_controller()?;
@@ -1784,7 +2071,13 @@ fn tuning_from_ipd(
     })
 }
 
-fn method1_tuning(id: &str, p: &Process, s: &MethodISolution, mut warnings: Vec<String>, extra: Map<String, Value>) -> Result<Tuning> {
+fn method1_tuning(
+    id: &str,
+    p: &Process,
+    s: &MethodISolution,
+    mut warnings: Vec<String>,
+    extra: Map<String, Value>,
+) -> Result<Tuning> {
     let (kp, ki, kd) = p.ipd_from_series(s.kc, s.ti, s.td);
     let (nkp, nki, nkd) = series_to_ipd(s.kc, s.ti, s.td);
     let f = p.tau_p;
@@ -1829,7 +2122,13 @@ fn method1_tuning(id: &str, p: &Process, s: &MethodISolution, mut warnings: Vec<
     tuning_from_ipd(id, kp, ki, kd, det, warnings)
 }
 
-fn method2_tuning(id: &str, p: &Process, theta: f64, extra: Map<String, Value>, warnings: Vec<String>) -> Result<Tuning> {
+fn method2_tuning(
+    id: &str,
+    p: &Process,
+    theta: f64,
+    extra: Map<String, Value>,
+    warnings: Vec<String>,
+) -> Result<Tuning> {
     let (d, tz) = (p.d(), p.tz());
     let (nkp, nki, nkd) = method2_gains(d, tz, theta)?;
     let (kp, ki, kd) = p.ipd_from_normalized(nkp, nki, nkd);
@@ -1899,7 +2198,11 @@ fn tune_inner(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
             let zeta = params.f64_in("zeta", 0.6, 0.3, 2.0)?;
             let fac = params.f64_in("td_factor", 1.0, 0.5, 2.0)?;
             let src = params.choice("td_source", "exact", &["exact", "table"])?;
-            let source = if src == "table" { TdSource::Table } else { TdSource::Exact };
+            let source = if src == "table" {
+                TdSource::Table
+            } else {
+                TdSource::Exact
+            };
             let (s, w) = algorithm1(d, tz, zeta, fac, source)?;
             warnings.extend(w);
             let mut extra = Map::new();
@@ -1941,19 +2244,26 @@ fn tune_inner(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
             let wsrc = params.choice("wu", "eq34", &["eq34", "exact"])?;
             let (beta, w) = table8(&crit, tz, d);
             warnings.extend(w);
-            if !(beta > 0.0) {
+            if beta.is_nan() || beta <= 0.0 {
                 return Err(Error::new(
                     "plant",
                     format!("Table 8 gives β = {beta:.4} ≤ 0 at τ_Z = {tz:.4}, d = {d:.4}"),
                 ));
             }
-            let wu = if wsrc == "exact" { wu_exact(d, tz)? } else { wu_eq34(d, tz) };
+            let wu = if wsrc == "exact" {
+                wu_exact(d, tz)?
+            } else {
+                wu_eq34(d, tz)
+            };
             let theta = 2.0 * PI / (wu * beta);
             let mut extra = Map::new();
             extra.insert("beta".into(), num(beta));
             extra.insert("w_u".into(), num(wu / p.tau_p));
             extra.insert("w_u_normalized".into(), num(wu));
-            extra.insert("w_u_exact_normalized".into(), num(wu_exact(d, tz).unwrap_or(f64::NAN)));
+            extra.insert(
+                "w_u_exact_normalized".into(),
+                num(wu_exact(d, tz).unwrap_or(f64::NAN)),
+            );
             extra.insert("w_u_eq34_normalized".into(), num(wu_eq34(d, tz)));
             extra.insert("criterion".into(), json!(crit));
             method2_tuning(id, &p, theta, extra, warnings)
@@ -1967,7 +2277,12 @@ fn tune_inner(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
 // ---------------------------------------------------------------------------------------------
 
 /// The boiler steam drum of Section 6 (Luyben 2003): K̄ = 0.547, τ̄_P = 1.06, τ̄_Z = 0.418, d̄ = 0.1.
-pub const BOILER: Family = Family::IpdtIr { k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 };
+pub const BOILER: Family = Family::IpdtIr {
+    k: 0.547,
+    tau: 1.06,
+    tau_z: 0.418,
+    theta: 0.1,
+};
 
 /// The scenario of Figs. 8-12: unit set-point step at t = 0, load L = 1 at t = 30.
 pub fn boiler_scenario() -> Value {
@@ -1986,7 +2301,8 @@ fn boiler_plant_json() -> Value {
 ///   measurement (c = 0; the paper gives only b), no filter.
 /// - Gu et al. 2006: ideal IMC-PID on the error with a derivative filter N = 10 (the paper
 ///   gives no filter; a set-point step on an ideal derivative would be an impulse).
-pub fn comparison_controllers() -> Vec<(&'static str, &'static str, crate::controller::Controller)> {
+pub fn comparison_controllers() -> Vec<(&'static str, &'static str, crate::controller::Controller)>
+{
     let mut v = vec![];
     if let Ok(c) = Pid::parallel(1.61, 1.61 / 11.5, 0.0)
         .series_filter(lead_lag(1.15, 0.115))
@@ -1998,14 +2314,20 @@ pub fn comparison_controllers() -> Vec<(&'static str, &'static str, crate::contr
             c,
         ));
     }
-    if let Ok(c) = Pid::ideal(2.3892, 3.5778, 0.7249).weights(0.3, 0.0).to_controller() {
+    if let Ok(c) = Pid::ideal(2.3892, 3.5778, 0.7249)
+        .weights(0.3, 0.0)
+        .to_controller()
+    {
         v.push((
             "shamsuzzoha_lee2006",
             "Shamsuzzoha & Lee (2006): 2-DOF PID K_C = 2.3892, τ_I = 3.5778, τ_D = 0.7249, b = 0.3",
             c,
         ));
     }
-    if let Ok(c) = Pid::ideal(2.0883, 3.8664, 0.6879).filter_n(10.0).to_controller() {
+    if let Ok(c) = Pid::ideal(2.0883, 3.8664, 0.6879)
+        .filter_n(10.0)
+        .to_controller()
+    {
         v.push((
             "gu2006",
             "Gu et al. (2006): IMC-PID K_C = 2.0883, τ_I = 3.8664, τ_D = 0.6879 (derivative filter N = 10)",
@@ -2018,12 +2340,36 @@ pub fn comparison_controllers() -> Vec<(&'static str, &'static str, crate::contr
 /// The paper's printed I-PD settings of Section 6 (as printed; Method I ones are τ̄_P times
 /// the consistent gains): (id suffix, description, K̄_P, K̄_I, K̄_D).
 pub const PRINTED: [(&str, &str, f64, f64, f64); 6] = [
-    ("alg1", "Algorithm I, τ_D = min τ_D,maxGM,I-P, ζ = 0.6", 2.104, 0.6391, 1.5876),
-    ("alg1_125", "Algorithm I, τ_D = 1.25 min τ_D,maxGM,I-P, ζ = 0.6", 2.0026, 0.5695, 1.7289),
+    (
+        "alg1",
+        "Algorithm I, τ_D = min τ_D,maxGM,I-P, ζ = 0.6",
+        2.104,
+        0.6391,
+        1.5876,
+    ),
+    (
+        "alg1_125",
+        "Algorithm I, τ_D = 1.25 min τ_D,maxGM,I-P, ζ = 0.6",
+        2.0026,
+        0.5695,
+        1.7289,
+    ),
     ("alg2", "Algorithm II, ζ = 0.6", 2.1071, 0.6521, 1.504),
-    ("alg3", "Algorithm III, ISENSCOD (13), ζ = 0.6", 2.1069, 0.6426, 1.5732),
+    (
+        "alg3",
+        "Algorithm III, ISENSCOD (13), ζ = 0.6",
+        2.1069,
+        0.6426,
+        1.5732,
+    ),
     ("m2_xi", "Method II, ξ = 0.707", 3.5624, 1.363, 2.2447),
-    ("m2_beta", "Method II, ISENSCOD-L (Table 8)", 3.352, 1.2034, 2.2009),
+    (
+        "m2_beta",
+        "Method II, ISENSCOD-L (Table 8)",
+        3.352,
+        1.2034,
+        2.2009,
+    ),
 ];
 
 fn controller_json(c: &crate::controller::Controller) -> Value {
