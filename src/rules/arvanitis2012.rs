@@ -1830,40 +1830,47 @@ pub fn exact_for_fit(f: &Fit, tz: f64, d: f64) -> Result<f64> {
             algorithm3(&p, f.zeta, "isenscod", None).map(|r| pick(&r.0))
         }
         _ => {
-            let p = Process::new(1.0, 1.0, tz, d)?;
-            let wu = wu_eq34(d, tz);
             let crit = if f.quantity == FitQuantity::BetaIsensdco {
                 "isensdco"
             } else {
                 "isenscod"
             };
-            let tmin = theta_min(d, tz);
-            let j = |beta: f64| -> Result<f64> {
-                let th = 2.0 * PI / (wu * beta);
-                if th <= tmin {
-                    return Ok(f64::INFINITY);
-                }
-                let (kp, ki, kd) = method2_gains(d, tz, th)?;
-                load_criterion(&p, kp, ki, kd, crit, 60.0 + 20.0 * th)
-            };
-            let bmax = 2.0 * PI / (wu * tmin) * 0.999;
-            let n = 10;
-            let xs: Vec<f64> = (1..=n).map(|i| bmax * i as f64 / n as f64).collect();
-            let mut js = vec![];
-            for &x in &xs {
-                js.push(j(x)?);
-            }
-            let ib = js
-                .iter()
-                .enumerate()
-                .min_by(|x, y| x.1.total_cmp(y.1))
-                .map(|x| x.0)
-                .unwrap_or(0);
-            let a = if ib == 0 { bmax * 0.01 } else { xs[ib - 1] };
-            let b = xs[(ib + 1).min(n - 1)];
-            golden_min(j, a, b, 1e-6, 100).map(|r| r.0)
+            beta_optimal(d, tz, crit, wu_eq34(d, tz))
         }
     }
+}
+
+/// The β that Table 8 approximates: the one whose Method II setting (θ = 2π/(w_u β), Eq. 31)
+/// minimizes criterion (13) or (14) of a unit load step on the normalized process
+/// (K = τ_P = 1), simulated exactly; a 10-point scan over (0, β_max) (θ > θ_min) brackets the
+/// minimum, golden section refines it to 1e-6.
+pub fn beta_optimal(d: f64, tz: f64, criterion: &str, wu: f64) -> Result<f64> {
+    let p = Process::new(1.0, 1.0, tz, d)?;
+    let tmin = theta_min(d, tz);
+    let j = |beta: f64| -> Result<f64> {
+        let th = 2.0 * PI / (wu * beta);
+        if th <= tmin {
+            return Ok(f64::INFINITY);
+        }
+        let (kp, ki, kd) = method2_gains(d, tz, th)?;
+        load_criterion(&p, kp, ki, kd, criterion, 60.0 + 20.0 * th)
+    };
+    let bmax = 2.0 * PI / (wu * tmin) * 0.999;
+    let n = 10;
+    let xs: Vec<f64> = (1..=n).map(|i| bmax * i as f64 / n as f64).collect();
+    let mut js = vec![];
+    for &x in &xs {
+        js.push(j(x)?);
+    }
+    let ib = js
+        .iter()
+        .enumerate()
+        .min_by(|x, y| x.1.total_cmp(y.1))
+        .map(|x| x.0)
+        .unwrap_or(0);
+    let a = if ib == 0 { bmax * 0.01 } else { xs[ib - 1] };
+    let b = xs[(ib + 1).min(n - 1)];
+    golden_min(j, a, b, 1e-6, 100).map(|r| r.0)
 }
 
 /// The true maximum normalized error of a fit against [`exact_for_fit`] on an
@@ -2027,6 +2034,8 @@ pub fn methods() -> Vec<MethodInfo> {
                     .help("β of Table 8 minimizing ISENSCOD-L (13) or ISENSDCO-L (14)"),
                 ParamInfo::choice("wu", "w_u from", "eq34", &["eq34", "exact"])
                     .help("Eq. (34) approximation (as the paper) or the exact root of Eq. (33)"),
+                ParamInfo::choice("beta_source", "β from", "table", &["table", "optimize"])
+                    .help("Table 8's fit, or the β minimizing the criterion by simulation (what Table 8 approximates; ~0.1-0.5 s)"),
             ],
         ),
     ]
@@ -2242,22 +2251,30 @@ fn tune_inner(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
         "arvanitis_m2_beta" => {
             let crit = params.choice("criterion", "isenscod", &["isenscod", "isensdco"])?;
             let wsrc = params.choice("wu", "eq34", &["eq34", "exact"])?;
-            let (beta, w) = table8(&crit, tz, d);
-            warnings.extend(w);
+            let bsrc = params.choice("beta_source", "table", &["table", "optimize"])?;
+            let wu = if wsrc == "exact" {
+                wu_exact(d, tz)?
+            } else {
+                wu_eq34(d, tz)
+            };
+            let (table_beta, w) = table8(&crit, tz, d);
+            let beta = if bsrc == "optimize" {
+                beta_optimal(d, tz, &crit, wu)?
+            } else {
+                warnings.extend(w);
+                table_beta
+            };
             if beta.is_nan() || beta <= 0.0 {
                 return Err(Error::new(
                     "plant",
                     format!("Table 8 gives β = {beta:.4} ≤ 0 at τ_Z = {tz:.4}, d = {d:.4}"),
                 ));
             }
-            let wu = if wsrc == "exact" {
-                wu_exact(d, tz)?
-            } else {
-                wu_eq34(d, tz)
-            };
             let theta = 2.0 * PI / (wu * beta);
             let mut extra = Map::new();
             extra.insert("beta".into(), num(beta));
+            extra.insert("beta_source".into(), json!(bsrc));
+            extra.insert("beta_table8".into(), num(table_beta));
             extra.insert("w_u".into(), num(wu / p.tau_p));
             extra.insert("w_u_normalized".into(), num(wu));
             extra.insert(
