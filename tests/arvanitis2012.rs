@@ -271,6 +271,39 @@ fn section3_limits() {
     assert!((lp.magnitude(k, w) - 1.0).abs() < 1e-12);
 }
 
+/// The critical points of φ_L (roots of Eq. 10 by polynomial root isolation) agree with an
+/// independent dense scan of Eq. (10)'s sign changes.
+#[wasm_bindgen_test(unsupported = test)]
+fn eq10_roots_against_scan() {
+    let loops = [
+        IpdLoop::new(0.0943, 0.3943, 2.0, 1.1),
+        IpdLoop::new(0.5, 0.5, 2.5, 1.5),
+        IpdLoop::new(1.5, 1.5, 40.0, 0.2),
+        IpdLoop::new(0.1, 2.0, 8.0, 6.0),
+        IpdLoop::new(0.3, 0.0, f64::INFINITY, 0.8),
+    ];
+    for lp in loops {
+        let cps = lp.critical_points();
+        let n = 20000;
+        let ws: Vec<f64> = (0..=n)
+            .map(|i| 10f64.powf(-3.0 + 6.0 * i as f64 / n as f64))
+            .collect();
+        let mut brackets = vec![];
+        for w in ws.windows(2) {
+            if lp.eq10(w[0]).signum() != lp.eq10(w[1]).signum() {
+                brackets.push((w[0], w[1]));
+            }
+        }
+        assert_eq!(cps.len(), brackets.len(), "{lp:?}: {cps:?} vs {brackets:?}");
+        for (c, (a, b)) in cps.iter().zip(&brackets) {
+            assert!(
+                *c >= *a && *c <= *b && lp.eq10(*c).abs() <= 1e-12,
+                "{lp:?}: {c} not in [{a}, {b}]"
+            );
+        }
+    }
+}
+
 /// Eq. (4) and Table 1: the I-PD's feedback path equals the series PID, the pre-filtered
 /// set-point path equals K_I/s, and normalization round-trips.
 #[wasm_bindgen_test(unsupported = test)]
@@ -508,5 +541,55 @@ fn methods_and_presets() {
         let m = p.tune["method"].as_str().unwrap();
         let prm = Params::from_value(&p.tune["params"]).unwrap();
         assert!(tune(m, prm).is_ok(), "{}", p.id);
+    }
+}
+
+/// Extreme but valid plants never panic and never hang: every method returns Ok with finite
+/// gains or an error naming a field.
+#[wasm_bindgen_test(unsupported = test)]
+fn extreme_plants_never_panic() {
+    let plants = [
+        (1.0, 1.0, 0.0, 0.5),   // no inverse response
+        (-2.0, 1.0, 0.5, 0.5),  // negative gain
+        (1.0, 1.0, 0.5, 1e-6),  // tiny dead time
+        (1.0, 1.0, 1e-6, 50.0), // dead-time dominant
+        (1.0, 1e-3, 5.0, 0.01), // fast lag, slow zero
+        (1e6, 1e3, 1e3, 1e3),   // large scales
+    ];
+    let ids = [
+        "arvanitis_alg1",
+        "arvanitis_alg2",
+        "arvanitis_m2_xi",
+        "arvanitis_m2_beta",
+    ];
+    for (k, tau, tau_z, theta) in plants {
+        let pl = Family::IpdtIr {
+            k,
+            tau,
+            tau_z,
+            theta,
+        }
+        .plant();
+        for id in ids {
+            for prm in [
+                Params::default(),
+                Params::default()
+                    .with("zeta", 2.0)
+                    .with("xi", 3.0)
+                    .with("td_source", "table"),
+            ] {
+                match rules::tune(id, &pl, &prm) {
+                    Ok(t) => {
+                        let g = gains(&t);
+                        assert!(
+                            g.0.is_finite() && g.1.is_finite() && g.2.is_finite(),
+                            "{id} {k} {tau} {tau_z} {theta}"
+                        );
+                        assert_eq!(g.1.signum(), k.signum(), "{id}: K_I has the sign of K̄");
+                    }
+                    Err(e) => assert!(!e.path.is_empty() && !e.message.is_empty()),
+                }
+            }
+        }
     }
 }

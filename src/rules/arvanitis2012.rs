@@ -295,6 +295,71 @@ fn brent(
     Some((b, maxit))
 }
 
+fn horner(c: &[f64], x: f64) -> f64 {
+    c.iter().rev().fold(0.0, |acc, &a| acc * x + a)
+}
+
+/// Every real root in (lo, hi) of the polynomial with ascending coefficients `c`, by
+/// recursive isolation: the roots of p′ split (lo, hi) into monotone pieces of p, each holding
+/// at most one root, found by Brent's method (degree ≤ 1: closed form).
+fn real_roots_between(c: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+    let mut n = c.len();
+    while n > 0 && c[n - 1] == 0.0 {
+        n -= 1;
+    }
+    let c = &c[..n];
+    if n <= 1 {
+        return vec![];
+    }
+    if n == 2 {
+        let r = -c[0] / c[1];
+        return if r > lo && r < hi { vec![r] } else { vec![] };
+    }
+    let dc: Vec<f64> = c
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, a)| i as f64 * a)
+        .collect();
+    let mut pts = vec![lo];
+    pts.extend(real_roots_between(&dc, lo, hi));
+    pts.push(hi);
+    let mut out = vec![];
+    for w in pts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let (fa, fb) = (horner(c, a), horner(c, b));
+        if fb == 0.0 && b < hi {
+            out.push(b);
+        } else if fa * fb < 0.0 {
+            if let Some((x, _)) = brent(|x| horner(c, x), a, b, fa, fb, 1e-16 * b.abs(), 200) {
+                out.push(x);
+            }
+        }
+    }
+    out.dedup_by(|a, b| (*a - *b).abs() <= 1e-14 * b.abs());
+    out
+}
+
+/// Every positive real root of a polynomial (ascending coefficients), within the Cauchy bound.
+fn positive_real_roots(c: &[f64]) -> Vec<f64> {
+    let mut n = c.len();
+    while n > 0 && c[n - 1] == 0.0 {
+        n -= 1;
+    }
+    if n <= 1 {
+        return vec![];
+    }
+    let lead = c[n - 1];
+    let bound = 1.0
+        + c[..n - 1]
+            .iter()
+            .fold(0.0_f64, |m, a| m.max((a / lead).abs()));
+    if !bound.is_finite() {
+        return vec![];
+    }
+    real_roots_between(&c[..n], 0.0, bound * (1.0 + 1e-12))
+}
+
 // ---------------------------------------------------------------------------------------------
 // Section 3: frequency-domain analysis of the normalized loop, Eqs. (7)-(12)
 // ---------------------------------------------------------------------------------------------
@@ -444,11 +509,9 @@ impl IpdLoop {
             return vec![];
         }
         let n = n.scale(1.0 / scale);
-        let mut ws: Vec<f64> = n
-            .roots()
+        let mut ws: Vec<f64> = positive_real_roots(n.asc())
             .into_iter()
-            .filter(|z| z.re > 0.0 && z.im.abs() <= 1e-7 * (1.0 + z.re.abs()))
-            .map(|z| self.polish(z.re.sqrt()))
+            .map(|x| self.polish(x.sqrt()))
             .filter(|w| w.is_finite() && *w > 0.0)
             .collect();
         ws.sort_by(|a, b| a.total_cmp(b));
