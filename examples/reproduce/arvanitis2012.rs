@@ -182,7 +182,7 @@ pub fn report() -> String {
     );
     o.push_str("| controller | servo overshoot | initial jump | servo IAE | servo settling | load peak error | load IAE | load settling | Ms |\n|---|---|---|---|---|---|---|---|---|\n");
     let sc = Scenario::steps(60.0, 0.01, 0.0, 1.0, 30.0, 1.0);
-    let mut ctrls: Vec<(String, Controller)> = vec![];
+    let mut ctrls: Vec<(String, String, Controller)> = vec![];
     for pr in presets() {
         let c = if pr.tune.is_null() {
             let g = |k: &str, q: &str| -> Vec<f64> {
@@ -206,12 +206,18 @@ pub fn report() -> String {
                 .map(|t| t.controller)
         };
         if let Some(c) = c {
-            ctrls.push((pr.title.clone(), c));
+            ctrls.push((
+                pr.id.rsplit('/').next().unwrap_or("").to_string(),
+                pr.title.clone(),
+                c,
+            ));
         }
     }
-    for (name, c) in &ctrls {
+    let mut sims = std::collections::HashMap::new();
+    for (key, name, c) in &ctrls {
         match simulate(&plant, c, &sc) {
             Ok(r) => {
+                sims.insert(key.clone(), r.clone());
                 let s = r.metrics.servo.as_ref();
                 let l = r.metrics.regulatory.as_ref();
                 let ms = analyze(&plant, c).ok().and_then(|a| a.ms);
@@ -233,6 +239,67 @@ pub fn report() -> String {
             }
         }
     }
+    // figure data: t, r, then y and u of each curve of the figure, every 0.1 time unit
+    let figs: [(u32, &[&str]); 5] = [
+        (
+            8,
+            &[
+                "alg1",
+                "alg1_125",
+                "gu2006",
+                "luyben2003",
+                "shamsuzzoha_lee2006",
+            ],
+        ),
+        (9, &["alg2", "gu2006", "luyben2003", "shamsuzzoha_lee2006"]),
+        (10, &["alg3", "gu2006", "luyben2003", "shamsuzzoha_lee2006"]),
+        (
+            11,
+            &["m2_xi", "gu2006", "luyben2003", "shamsuzzoha_lee2006"],
+        ),
+        (
+            12,
+            &["m2_beta", "gu2006", "luyben2003", "shamsuzzoha_lee2006"],
+        ),
+    ];
+    let mut written = vec![];
+    if std::fs::create_dir_all("docs/figures").is_ok() {
+        for (n, keys) in figs {
+            let cols: Vec<(&str, &pidlab::sim::SimResult)> = keys
+                .iter()
+                .filter_map(|k| sims.get(*k).map(|r| (*k, r)))
+                .collect();
+            let Some((_, first)) = cols.first() else {
+                continue;
+            };
+            let mut csv = String::from("t,r");
+            for (k, _) in &cols {
+                let _ = write!(csv, ",y_{k},u_{k}");
+            }
+            csv.push('\n');
+            for i in (0..first.t.len()).step_by(10) {
+                let _ = write!(csv, "{:.2},{}", first.t[i], first.r[i]);
+                for (_, r) in &cols {
+                    let _ = write!(
+                        csv,
+                        ",{:.6},{:.6}",
+                        r.y.get(i).copied().unwrap_or(f64::NAN),
+                        r.u.get(i).copied().unwrap_or(f64::NAN)
+                    );
+                }
+                csv.push('\n');
+            }
+            let path = format!("docs/figures/arvanitis2012_fig{n}.csv");
+            if std::fs::write(&path, csv).is_ok() {
+                written.push(path);
+            }
+        }
+    }
+    let _ = writeln!(
+        o,
+        "\nFigure data (t, r, y and u of each curve of Figs. 8-12; consistent gains for the I-PD curves): {}.",
+        if written.is_empty() { "not written".to_string() } else { written.join(", ") }
+    );
     o.push_str(
         "\nThe paper shows these responses as figures only (no tabulated metrics). Comparison controllers are mapped as \
         documented in `comparison_controllers()`: Luyben (2003) series PID with derivative lag 0.1 τ_D, Shamsuzzoha & Lee (2006) \
