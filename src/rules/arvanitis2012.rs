@@ -26,8 +26,21 @@
 //! - **Eq. (32)**: the printed quadratic does not give the Method II example; from the
 //!   definitions of λ and ξ under Eq. (28) with Eq. (31),
 //!   `θ = 4ξ²(τ_Z + d_min) + d + τ_Z + 1` ([`theta_from_xi`]).
-//! - **Tables 4-8**: several fits are garbled; each is validated against the exact
-//!   computation on a grid and only those within their printed M.N.E. are offered.
+//! - **Tables 2-8**: several fits are garbled (Table 4's ζ = 0.6 τ_I goes negative inside its
+//!   range, Table 3's second box is 73 % off, …). Each fit is checked against the exact
+//!   computation on a grid over its printed box ([`measured_mne`]; the measured values are in
+//!   [`Fit::measured_mne`] and the reproduction report). The exact computations are the
+//!   primary implementation: no method uses a fit by default. The two places where the paper
+//!   itself uses a table (Table 3 in Algorithm I's `td_source: "table"`, Table 8 in
+//!   `arvanitis_m2_beta`) use it only when asked, and `details.warnings` says when the point is
+//!   outside the printed box or the box misses its printed M.N.E.
+//! - **Criterion (14), ISENSDCO**: with the ideal derivative of the I-PD and τ̄_Z > 0 the plant
+//!   has relative degree one, so u jumps after a load step and ∫u̇² is infinite; Algorithm III
+//!   and the β optimization report that as an error naming `params.criterion` (the paper's
+//!   simulation must have filtered the derivative; it does not say how).
+//! - **Algorithm III, criterion units**: criterion (13) is evaluated on the process in its own
+//!   units with K = K̄, τ_P = τ̄_P (the simulator's `isens_k`, `isens_tau`); Table 7's fits,
+//!   built on the normalized process, reproduce it within their printed errors.
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
 use crate::controller::{lead_lag, Pid};
@@ -2247,7 +2260,17 @@ pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> 
     if !ids.contains(&id) {
         return None;
     }
-    Some(tune_inner(id, plant, params))
+    // internal solver errors name the normalized τ_I; at the API they are about the plant
+    Some(tune_inner(id, plant, params).map_err(|e| {
+        if e.path == "tau_i" {
+            Error::new(
+                "plant",
+                format!("no admissible setting for this plant: {}", e.message),
+            )
+        } else {
+            e
+        }
+    }))
 }
 
 fn paper_range_warning(p: &Process) -> Vec<String> {
