@@ -593,3 +593,32 @@ fn extreme_plants_never_panic() {
         }
     }
 }
+
+/// Through the JSON API: a preset's rule call tunes, and its controller simulates its scenario.
+#[wasm_bindgen_test(unsupported = test)]
+fn json_api_round_trip() {
+    let ps = presets();
+    for id in ["alg2", "m2_xi", "gu2006"] {
+        let p = ps
+            .iter()
+            .find(|p| p.id == format!("arvanitis2012/boiler/{id}"))
+            .unwrap();
+        let controller = if p.tune.is_null() {
+            p.controller.clone()
+        } else {
+            let out = pidlab::api::tune(&serde_json::json!({
+                "method": p.tune["method"], "plant": p.plant, "params": p.tune["params"]
+            }))
+            .unwrap();
+            assert!(out["controller"]["kp"].as_f64().unwrap() > 0.0);
+            assert!(out["details"]["warnings"].is_array());
+            out["controller"].clone()
+        };
+        let sim = pidlab::api::simulate(&serde_json::json!({
+            "plant": p.plant, "controller": controller, "scenario": p.scenario
+        }))
+        .unwrap();
+        let reg = &sim["metrics"]["regulatory"];
+        assert!(reg["peak_error"].as_f64().unwrap() > 0.3, "{id}: {reg}");
+    }
+}
