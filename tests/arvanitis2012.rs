@@ -95,6 +95,20 @@ fn section6_printed_settings() {
         let g = gains(&t);
         assert!((g.0 * 1.06 - p.0).abs() < 1e-12 && (g.2 * 1.06 - p.2).abs() < 1e-12);
     }
+    // the 1.25 variant uses Table 3's first box, which misses its printed M.N.E.: warned
+    let t = tune(
+        "arvanitis_alg1",
+        Params::default()
+            .with("td_factor", 1.25)
+            .with("td_source", "table"),
+    )
+    .unwrap();
+    let w = t.details["warnings"].as_array().unwrap();
+    assert!(
+        w.iter()
+            .any(|x| x.as_str().unwrap().contains("misses its printed M.N.E.")),
+        "{w:?}"
+    );
     // Algorithm I consistent gains (1.9849, 0.6029, 1.4976): half a unit of the 4th decimal.
     let g = gains(&tune("arvanitis_alg1", Params::default()).unwrap());
     for (x, y) in [(g.0, 1.9849), (g.1, 0.6029), (g.2, 1.4976)] {

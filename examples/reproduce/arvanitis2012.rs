@@ -310,6 +310,46 @@ pub fn report() -> String {
         The printed Method I gains (×1.06) give slightly faster, slightly less robust loops than the consistent ones (Ms column).\n",
     );
 
+    // ---- robustness over the paper's range
+    o.push_str(
+        "\n### Convergence over the paper's range (10 × 10 grid, 0.2 < τ_Z < 2, 0.1 < d < 2)\n\n\
+         | algorithm | ζ | converged | errors | max fixed-point iterations | max outer passes | first error |\n|---|---|---|---|---|---|---|\n",
+    );
+    for zeta in [0.6, 0.707, 0.85, 1.0, 1.2] {
+        for (name, which) in [("Alg I", 0), ("Alg I, 1.25 τ_D", 1), ("Alg II", 2)] {
+            let (mut ok, mut bad, mut it, mut outer) = (0, 0, 0, 0);
+            let mut first = String::new();
+            for i in 0..10 {
+                for j in 0..10 {
+                    let tz = 0.2 + 1.8 * (i as f64 + 0.5) / 10.0;
+                    let dd = 0.1 + 1.9 * (j as f64 + 0.5) / 10.0;
+                    let r = match which {
+                        0 => algorithm1(dd, tz, zeta, 1.0, TdSource::Exact).map(|x| x.0),
+                        1 => algorithm1(dd, tz, zeta, 1.25, TdSource::Exact).map(|x| x.0),
+                        _ => algorithm2(dd, tz, zeta, None),
+                    };
+                    match r {
+                        Ok(s) => {
+                            ok += 1;
+                            it = it.max(s.iterations);
+                            outer = outer.max(s.outer_iterations);
+                        }
+                        Err(e) => {
+                            bad += 1;
+                            if first.is_empty() {
+                                first = format!("τ_Z = {tz:.2}, d = {dd:.2}: {e}");
+                            }
+                        }
+                    }
+                }
+            }
+            let _ = writeln!(
+                o,
+                "| {name} | {zeta} | {ok} | {bad} | {it} | {outer} | {first} |"
+            );
+        }
+    }
+
     // ---- timing
     o.push_str("\n### Timings (this machine, release build)\n\n");
     let time = |f: &dyn Fn()| {
