@@ -477,19 +477,23 @@ fn errors_name_the_field() {
     );
 }
 
-/// Tables 2 and 3 against the exact limits on the 7 × 7 grid over their printed ranges: the
+/// Tables 2-6 against the exact computation on the 7 × 7 grid over their printed ranges: the
 /// measured M.N.E. recorded in `fits()` (and printed by the reproduction report beside the
-/// printed one) is what the grid gives, and a fit is offered exactly when it meets its
-/// printed bound. Table 2's first box (25 % near d, τ_Z → 0) and both Table 3 boxes miss it.
+/// printed one) is what the grid gives, and a fit is offered exactly when it meets its printed
+/// bound (+0.1 point). Table 2's first box (25 % near d, τ_Z → 0) and both Table 3 boxes miss
+/// it; Tables 7-8 need a simulation-based optimization per point and are measured in the
+/// reproduction report only (3 × 3 grid).
 #[wasm_bindgen_test(unsupported = test)]
-fn tables_2_3_against_exact() {
-    for f in fits().into_iter().filter(|f| f.table == 2 || f.table == 3) {
+fn tables_2_to_6_against_exact() {
+    for f in fits().into_iter().filter(|f| f.table <= 6) {
         let (m, failed) = measured_mne(&f, 6);
         assert_eq!(failed, 0);
         assert!(
             (m - f.measured_mne).abs() <= 6e-5,
-            "Table {} {:?}: {m} vs {}",
+            "Table {} ζ {} {:?} {:?}: {m} vs {}",
             f.table,
+            f.zeta,
+            f.quantity,
             f.range,
             f.measured_mne
         );
@@ -501,6 +505,12 @@ fn tables_2_3_against_exact() {
         .map(|f| f.offered)
         .collect();
     assert_eq!(offered, [false, true, false, false]);
+    // Table 4's ζ = 0.6 τ_I goes negative inside its range (ERRATA)
+    let t4 = fits()
+        .into_iter()
+        .find(|f| f.table == 4 && f.zeta == 0.6 && f.quantity == FitQuantity::Ti)
+        .unwrap();
+    assert!((t4.f)(0.5, 0.2) < 0.0 && !t4.offered);
 }
 
 /// methods() and presets(): ids and params as API.md; every rule preset tunes.
