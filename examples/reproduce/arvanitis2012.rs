@@ -173,8 +173,10 @@ pub fn report() -> String {
             if f.offered { "yes" } else { "no" }
         );
     }
-    o.push_str("\nTable 5 misses every printed bound against 1.25 × the exact limit; the paper may have used 1.25 × Table 3 there. \
-        Table 4's ζ = 0.6 τ_I goes negative inside its range (ERRATA), ζ = 1 K_C and several Table 6/7 rows are garbled.\n");
+    o.push_str("\nTable 5 misses every printed bound against 1.25 × the exact limit; with 1.25 × Table 3 instead (what the text's boiler example used) it still misses all 13 bounds (measured during development), so that does not explain it. \
+        Far off (10-180 %, garbled coefficients or boxes): Table 2 first box, Table 3 second box, Table 4 ζ = 1 K_C and ζ = 0.6 τ_I \
+        (negative inside its range, ERRATA), Table 5 ζ = 0.6 first K_C row (its printed form is garbled), Table 6 ζ = 0.6 K_C and \
+        ζ = 0.6/0.707 τ_D, Table 7 ζ = 1/1.2 τ_D. The others miss by a few points at most.\n");
 
     // ---- Figs 8-12
     o.push_str(
