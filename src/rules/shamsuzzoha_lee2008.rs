@@ -188,7 +188,10 @@ fn group_poles(lags: &[f64]) -> Vec<(f64, usize)> {
 pub fn imc_pid(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
     match imc_pid_raw(model, lambda, zeta) {
         Err(e) if e.path == "params.lambda" && lambda.is_finite() && lambda > 0.0 => {
-            Err(Error::new(e.path.clone(), format!("{}{}", e.message, lambda_hint(model, lambda, zeta))))
+            Err(Error::new(
+                e.path.clone(),
+                format!("{}{}", e.message, lambda_hint(model, lambda, zeta)),
+            ))
         }
         r => r,
     }
@@ -225,30 +228,47 @@ fn lambda_hint(model: &ImcModel, lambda: f64, zeta: f64) -> String {
 
 fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
     if !(lambda.is_finite() && lambda > 0.0) {
-        return Err(Error::new("params.lambda", format!("must be finite and > 0 (got {lambda})")));
+        return Err(Error::new(
+            "params.lambda",
+            format!("must be finite and > 0 (got {lambda})"),
+        ));
     }
     if !(zeta.is_finite() && zeta > 0.0) {
-        return Err(Error::new("params.zeta", format!("must be finite and > 0 (got {zeta})")));
+        return Err(Error::new(
+            "params.zeta",
+            format!("must be finite and > 0 (got {zeta})"),
+        ));
     }
     if !(model.gain.is_finite() && model.gain != 0.0) {
-        return Err(Error::new("plant.k", "model gain must be finite and non-zero"));
+        return Err(Error::new(
+            "plant.k",
+            "model gain must be finite and non-zero",
+        ));
     }
     if !(model.theta.is_finite() && model.theta >= 0.0) {
-        return Err(Error::new("plant.theta", "design dead time must be finite and >= 0"));
+        return Err(Error::new(
+            "plant.theta",
+            "design dead time must be finite and >= 0",
+        ));
     }
     if model.lags.is_empty() {
-        return Err(Error::new("plant", "the design model needs at least one pole"));
+        return Err(Error::new(
+            "plant",
+            "the design model needs at least one pole",
+        ));
     }
     if model.lags.iter().any(|t| !(t.is_finite() && *t > 0.0)) {
-        return Err(Error::new("plant.tau", "model time constants must be finite and > 0"));
+        return Err(Error::new(
+            "plant.tau",
+            "model time constants must be finite and > 0",
+        ));
     }
     let m = model.lags.len();
     let theta = model.theta;
     // D(s) = Π(T_j s + 1): the invertible part P_M = K_m/D(s).
-    let d_poly = model
-        .lags
-        .iter()
-        .fold(Poly::constant(1.0), |acc, t| acc.mul(&Poly::linear(*t, 1.0)));
+    let d_poly = model.lags.iter().fold(Poly::constant(1.0), |acc, t| {
+        acc.mul(&Poly::linear(*t, 1.0))
+    });
     // r: Q = D(s)·N_f(s)/(K_m D_f(s)) proper ⇔ 2r ≥ deg D + m (Eq. 7, "r large enough").
     let r = (m + d_poly.degree()).div_ceil(2) as u32;
     let base = Poly::from_asc(&[1.0, 2.0 * lambda * zeta, lambda * lambda]);
@@ -263,7 +283,10 @@ fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
     // derivatives of D_f
     let mut dfd = vec![df.clone()];
     for _ in 1..m {
-        let next = dfd.last().map(|p| p.derivative()).unwrap_or_else(|| Poly::constant(0.0));
+        let next = dfd
+            .last()
+            .map(|p| p.derivative())
+            .unwrap_or_else(|| Poly::constant(0.0));
         dfd.push(next);
     }
     for (p, mult) in &poles {
@@ -290,7 +313,10 @@ fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
         }
     }
     let sol = a.lu().solve(&rhs).ok_or_else(|| {
-        Error::new("plant", "pole-cancellation conditions of Eq. (8) are singular")
+        Error::new(
+            "plant",
+            "pole-cancellation conditions of Eq. (8) are singular",
+        )
     })?;
     let beta: Vec<f64> = (0..m).map(|i| sol[i] / c.powi(i as i32 + 1)).collect();
     if beta.iter().any(|b| !b.is_finite()) {
@@ -304,7 +330,10 @@ fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
     let nf = Poly::from_asc(&nf_c);
 
     // Maclaurin reduction, Eqs. (14)-(17).
-    let den = series_sub(&series_of(&df), &series_mul(&series_delay(theta), &series_of(&nf)));
+    let den = series_sub(
+        &series_of(&df),
+        &series_mul(&series_delay(theta), &series_of(&nf)),
+    );
     // den(0) = 1 − 1 = 0 exactly: G_c has an integrator; E(s) = den(s)/s.
     let mut e = [0.0; NS];
     e[..NS - 1].copy_from_slice(&den[1..]);
@@ -325,14 +354,15 @@ fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
     let ti = f1 / f0;
     let td = f2 / f1;
     if ![kc, ti, td].iter().all(|x| x.is_finite()) {
-        return Err(Error::new("params.lambda", "the PID reduction gave non-finite settings"));
+        return Err(Error::new(
+            "params.lambda",
+            "the PID reduction gave non-finite settings",
+        ));
     }
     if ti <= 0.0 || kc * model.gain <= 0.0 {
         return Err(Error::new(
             "params.lambda",
-            format!(
-                "no valid PID: K_c = {kc:.4e}, τ_I = {ti:.4e} (need K_c·K > 0 and τ_I > 0)"
-            ),
+            format!("no valid PID: K_c = {kc:.4e}, τ_I = {ti:.4e} (need K_c·K > 0 and τ_I > 0)"),
         ));
     }
     Ok(ImcPid {
@@ -355,9 +385,14 @@ fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
 /// or the denominator is not stable (β of the wrong sign: λ out of range).
 pub fn setpoint_filter(gamma: f64, beta: &[f64]) -> Result<Tf> {
     if !(gamma.is_finite() && (0.0..=1.0).contains(&gamma)) {
-        return Err(Error::new("params.gamma", format!("must lie in [0, 1] (got {gamma})")));
+        return Err(Error::new(
+            "params.gamma",
+            format!("must lie in [0, 1] (got {gamma})"),
+        ));
     }
-    let b1 = *beta.first().ok_or_else(|| Error::new("beta", "needs at least β₁"))?;
+    let b1 = *beta
+        .first()
+        .ok_or_else(|| Error::new("beta", "needs at least β₁"))?;
     let mut den = vec![1.0];
     den.extend(beta.iter().copied());
     let den = Poly::from_asc(&den);
@@ -381,13 +416,22 @@ pub fn setpoint_filter(gamma: f64, beta: &[f64]) -> Result<Tf> {
 /// `f_R = (γτ_I s + 1)/(τ_I τ_D s² + τ_I s + 1)`.
 pub fn weighting_filter(gamma: f64, ti: f64, td: f64) -> Result<Tf> {
     if !(gamma.is_finite() && (0.0..=1.0).contains(&gamma)) {
-        return Err(Error::new("gamma", format!("must lie in [0, 1] (got {gamma})")));
+        return Err(Error::new(
+            "gamma",
+            format!("must lie in [0, 1] (got {gamma})"),
+        ));
     }
     if !(ti.is_finite() && ti > 0.0) {
-        return Err(Error::new("ti", format!("must be finite and > 0 (got {ti})")));
+        return Err(Error::new(
+            "ti",
+            format!("must be finite and > 0 (got {ti})"),
+        ));
     }
     if !(td.is_finite() && td >= 0.0) {
-        return Err(Error::new("td", format!("must be finite and >= 0 (got {td})")));
+        return Err(Error::new(
+            "td",
+            format!("must be finite and >= 0 (got {td})"),
+        ));
     }
     Ok(Tf {
         num: Poly::linear(gamma * ti, 1.0),
@@ -426,7 +470,10 @@ pub struct DesignModel {
 /// family the method does not cover and `params.phi` for a bad φ.
 pub fn design_model(family: &Family, phi: f64) -> Result<DesignModel> {
     if !(phi.is_finite() && phi > 0.0) {
-        return Err(Error::new("params.phi", format!("must be finite and > 0 (got {phi})")));
+        return Err(Error::new(
+            "params.phi",
+            format!("must be finite and > 0 (got {phi})"),
+        ));
     }
     let fodip = |k: f64, tau: f64, theta: f64, what: &str| DesignModel {
         model: ImcModel {
@@ -446,7 +493,12 @@ pub fn design_model(family: &Family, phi: f64) -> Result<DesignModel> {
     };
     Ok(match *family {
         Family::Ifoptd { k, tau, theta } => fodip(k, tau, theta, "FODIP"),
-        Family::IpdtIr { k, tau, tau_z, theta } => fodip(
+        Family::IpdtIr {
+            k,
+            tau,
+            tau_z,
+            theta,
+        } => fodip(
             k,
             tau,
             theta + tau_z,
@@ -633,8 +685,14 @@ pub fn methods() -> Vec<MethodInfo> {
             ),
             ParamInfo::number("gamma", "γ (set-point filter lead)", Some(0.3), 0.0, 1.0)
                 .help("f_R = (γβ₁s + 1)/(β₂s² + β₁s + 1), Eq. (26)"),
-            ParamInfo::number("phi", "φ (integrator approximation 1/s ≈ φ/(φs+1))", Some(100.0), 1.0, 1e6)
-                .help("Eqs. (19), (29): a sufficiently large constant"),
+            ParamInfo::number(
+                "phi",
+                "φ (integrator approximation 1/s ≈ φ/(φs+1))",
+                Some(100.0),
+                1.0,
+                1e6,
+            )
+            .help("Eqs. (19), (29): a sufficiently large constant"),
             ParamInfo::number("target_ms", "target Ms (solves λ)", None, 1.05, 5.0)
                 .help("when given, λ is solved so that the loop's Ms equals it (details.lambda)"),
         ],
@@ -653,7 +711,10 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
     let family = plant.family.ok_or_else(|| {
         Error::new(
             "plant.family",
-            format!("method '{ID}' needs a plant given by family ({})", FAMILIES.join(", ")),
+            format!(
+                "method '{ID}' needs a plant given by family ({})",
+                FAMILIES.join(", ")
+            ),
         )
     })?;
     let zeta = params.f64_in("zeta", 1.0, 0.01, 100.0)?;
@@ -760,8 +821,15 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
 pub fn lambda_for_ms(family: &Family, ms: f64, zeta: f64, gamma: f64, phi: f64) -> Result<f64> {
     let dm = design_model(family, phi)?;
     let th = dm.model.theta;
-    let base = if th > 0.0 { th } else { dm.plant_lag.max(phi * 1e-3) };
-    let (lo, hi) = (base * 1e-2, (base * 200.0).min(phi * 2.0).max(base * 1e-2 * 4.0));
+    let base = if th > 0.0 {
+        th
+    } else {
+        dm.plant_lag.max(phi * 1e-3)
+    };
+    let (lo, hi) = (
+        base * 1e-2,
+        (base * 200.0).min(phi * 2.0).max(base * 1e-2 * 4.0),
+    );
     let plant = family.plant();
     crate::freq::solve_for_ms(ms, lo, hi, |l| {
         let d = design(family, l, zeta, gamma, phi)?;
@@ -823,7 +891,8 @@ pub struct Study {
     pub rows: Vec<StudyRow>,
 }
 
-const C_WANG_CAI: &str = "Y. G. Wang and W. J. Cai, Ind. Eng. Chem. Res. 41, 2910 (2002), as quoted \
+const C_WANG_CAI: &str =
+    "Y. G. Wang and W. J. Cai, Ind. Eng. Chem. Res. 41, 2910 (2002), as quoted \
 in Shamsuzzoha & Lee 2008, Table 1";
 const C_ZHANG: &str = "W. Zhang, X. Xu and Y. Sun, Automatica 35, 719 (1999), as quoted in \
 Shamsuzzoha & Lee 2008, Table 1";
@@ -837,9 +906,11 @@ const C_LUYBEN03: &str = "W. L. Luyben, Ind. Eng. Chem. Res. 42, 3030 (2003), as
 Shamsuzzoha & Lee 2008, Table 3";
 const C_WC: &str = "L. Wang and W. R. Cluett, IEE Proc. Control Theory Appl. 144, 385 (1997), as \
 quoted in Shamsuzzoha & Lee 2008, Table 4";
-const C_RIVERA: &str = "D. E. Rivera, M. Morari and S. Skogestad, Ind. Eng. Chem. Process Des. Dev. \
+const C_RIVERA: &str =
+    "D. E. Rivera, M. Morari and S. Skogestad, Ind. Eng. Chem. Process Des. Dev. \
 25, 252 (1986) (settings from Wang & Cluett 1997), as quoted in Shamsuzzoha & Lee 2008, Table 4";
-const C_CS: &str = "M. Chidambaram and R. P. Sree, Comput. Chem. Eng. 27, 211 (2003), as quoted in \
+const C_CS: &str =
+    "M. Chidambaram and R. P. Sree, Comput. Chem. Eng. 27, 211 (2003), as quoted in \
 Shamsuzzoha & Lee 2008, Table 5";
 const C_LUYBEN96: &str = "W. L. Luyben, Ind. Eng. Chem. Res. 35, 3480 (1996), as quoted in \
 Shamsuzzoha & Lee 2008, Table 5";
@@ -900,7 +971,9 @@ fn proposed_row(
         printed_note,
         printed,
         controller: d.map(|d| d.controller),
-        tune: Some(json!({ "method": ID, "params": { "lambda": lambda, "zeta": zeta, "gamma": gamma, "phi": 100.0 } })),
+        tune: Some(
+            json!({ "method": ID, "params": { "lambda": lambda, "zeta": zeta, "gamma": gamma, "phi": 100.0 } }),
+        ),
         description: format!(
             "Proposed IMC-PID, λ = {lambda}, ζ = {zeta}, γ = {gamma}, φ = 100; u = Gc·(f_R r − y) \
              with ideal derivative"
@@ -916,11 +989,28 @@ pub fn studies() -> Vec<Study> {
         delay,
         family: None,
     };
-    let ex1 = Family::Ifoptd { k: 1.0, tau: 1.0, theta: 0.2 };
+    let ex1 = Family::Ifoptd {
+        k: 1.0,
+        tau: 1.0,
+        theta: 0.2,
+    };
     let ex2 = Family::Diptd { k: 1.0, theta: 0.8 };
-    let ex3 = Family::IpdtIr { k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 };
-    let ex4 = Family::IfoptdZero { k: 0.005, tau: 20.0, z: 300.0, theta: 5.0 };
-    let ex5 = Family::Piptd { k: 0.0506, theta: 6.0 };
+    let ex3 = Family::IpdtIr {
+        k: 0.547,
+        tau: 1.06,
+        tau_z: 0.418,
+        theta: 0.1,
+    };
+    let ex4 = Family::IfoptdZero {
+        k: 0.005,
+        tau: 20.0,
+        z: 300.0,
+        theta: 5.0,
+    };
+    let ex5 = Family::Piptd {
+        k: 0.0506,
+        theta: 6.0,
+    };
     vec![
         Study {
             id: "ex1",
@@ -1262,12 +1352,19 @@ pub fn presets() -> Vec<Preset> {
                 citation: r.citation.into(),
                 plant: family_json(&s.plant),
                 tune: r.tune.clone().unwrap_or(Value::Null),
-                controller: if r.tune.is_some() { Value::Null } else { controller_json(c) },
+                controller: if r.tune.is_some() {
+                    Value::Null
+                } else {
+                    controller_json(c)
+                },
                 scenario: scenario_json(&s.scenario),
             });
             out.push(Preset {
                 id: format!("{base}/mismatch"),
-                title: format!("{} — {}, {} (Table {})", s.title, r.label, s.mismatch_label, s.table),
+                title: format!(
+                    "{} — {}, {} (Table {})",
+                    s.title, r.label, s.mismatch_label, s.table
+                ),
                 description: format!(
                     "{}; controller designed for the nominal model, applied to the {}",
                     r.description, s.mismatch_label
