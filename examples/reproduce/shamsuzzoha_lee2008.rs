@@ -198,8 +198,8 @@ pub fn report() -> String {
             let Some(c) = &r.controller else {
                 let _ = writeln!(
                     o,
-                    "| {} | — | not simulated ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) |",
-                    r.label, "no (Cr, Cy) form, see below", pr[1], pr[2], pr[3], pr[4], pr[5], pr[6], pr[7], pr[8], pr[9]
+                    "| {} (not simulated: no (Cr, Cy) form, see below) | — | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) |",
+                    r.label, pr[0], pr[1], pr[2], pr[3], pr[4], pr[5], pr[6], pr[7], pr[8], pr[9]
                 );
                 continue;
             };

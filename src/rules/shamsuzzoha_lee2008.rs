@@ -301,8 +301,8 @@ fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
                 }
             }
             let mut v = 0.0;
-            for j in 0..=k {
-                v += binomial(k, j) * dfd[j].eval(*p) * theta.powi((k - j) as i32);
+            for (j, dj) in dfd.iter().take(k + 1).enumerate() {
+                v += binomial(k, j) * dj.eval(*p) * theta.powi((k - j) as i32);
             }
             v *= ep;
             if k == 0 {
@@ -953,6 +953,7 @@ fn lit_pid(
     p.to_controller().ok()
 }
 
+#[allow(clippy::too_many_arguments)]
 fn proposed_row(
     family: &Family,
     label: &'static str,
