@@ -12,19 +12,9 @@ use crate::tf::Tf;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Family {
     /// `k(1 − τ_z s)e^{−θs}/(s(τ s + 1))`: integrating, inverse response, dead time.
-    IpdtIr {
-        k: f64,
-        tau: f64,
-        tau_z: f64,
-        theta: f64,
-    },
+    IpdtIr { k: f64, tau: f64, tau_z: f64, theta: f64 },
     /// `k(1 − τ_z s)e^{−θs}/(τ s + 1)`: first order, inverse response, dead time.
-    FopdtIr {
-        k: f64,
-        tau: f64,
-        tau_z: f64,
-        theta: f64,
-    },
+    FopdtIr { k: f64, tau: f64, tau_z: f64, theta: f64 },
     /// `k e^{−θs}/s`: pure integrator with dead time.
     Piptd { k: f64, theta: f64 },
     /// `k e^{−θs}/s²`: double integrator with dead time.
@@ -32,19 +22,9 @@ pub enum Family {
     /// `k e^{−θs}/(s(τ s + 1))`: integrator plus first-order lag.
     Ifoptd { k: f64, tau: f64, theta: f64 },
     /// `k(1 + z s)e^{−θs}/(s(τ s + 1))` (z < 0: inverse response).
-    IfoptdZero {
-        k: f64,
-        tau: f64,
-        z: f64,
-        theta: f64,
-    },
+    IfoptdZero { k: f64, tau: f64, z: f64, theta: f64 },
     /// `k(1 + z s)e^{−θs}/(s(τ s − 1))`: integrator with an unstable pole.
-    IfoptdZeroUnstable {
-        k: f64,
-        tau: f64,
-        z: f64,
-        theta: f64,
-    },
+    IfoptdZeroUnstable { k: f64, tau: f64, z: f64, theta: f64 },
 }
 
 impl Family {
@@ -100,43 +80,13 @@ impl Family {
             }
         }
         let f = match id {
-            "ipdt_ir" => Family::IpdtIr {
-                k: v[0],
-                tau: v[1],
-                tau_z: v[2],
-                theta: v[3],
-            },
-            "fopdt_ir" => Family::FopdtIr {
-                k: v[0],
-                tau: v[1],
-                tau_z: v[2],
-                theta: v[3],
-            },
-            "piptd" => Family::Piptd {
-                k: v[0],
-                theta: v[1],
-            },
-            "diptd" => Family::Diptd {
-                k: v[0],
-                theta: v[1],
-            },
-            "ifoptd" => Family::Ifoptd {
-                k: v[0],
-                tau: v[1],
-                theta: v[2],
-            },
-            "ifoptd_zero" => Family::IfoptdZero {
-                k: v[0],
-                tau: v[1],
-                z: v[2],
-                theta: v[3],
-            },
-            _ => Family::IfoptdZeroUnstable {
-                k: v[0],
-                tau: v[1],
-                z: v[2],
-                theta: v[3],
-            },
+            "ipdt_ir" => Family::IpdtIr { k: v[0], tau: v[1], tau_z: v[2], theta: v[3] },
+            "fopdt_ir" => Family::FopdtIr { k: v[0], tau: v[1], tau_z: v[2], theta: v[3] },
+            "piptd" => Family::Piptd { k: v[0], theta: v[1] },
+            "diptd" => Family::Diptd { k: v[0], theta: v[1] },
+            "ifoptd" => Family::Ifoptd { k: v[0], tau: v[1], theta: v[2] },
+            "ifoptd_zero" => Family::IfoptdZero { k: v[0], tau: v[1], z: v[2], theta: v[3] },
+            _ => Family::IfoptdZeroUnstable { k: v[0], tau: v[1], z: v[2], theta: v[3] },
         };
         f.validate()?;
         Ok(f)
@@ -145,18 +95,7 @@ impl Family {
     /// Parameter values in the order of [`Family::param_names`].
     pub fn values(&self) -> Vec<f64> {
         match *self {
-            Family::IpdtIr {
-                k,
-                tau,
-                tau_z,
-                theta,
-            }
-            | Family::FopdtIr {
-                k,
-                tau,
-                tau_z,
-                theta,
-            } => {
+            Family::IpdtIr { k, tau, tau_z, theta } | Family::FopdtIr { k, tau, tau_z, theta } => {
                 vec![k, tau, tau_z, theta]
             }
             Family::Piptd { k, theta } | Family::Diptd { k, theta } => vec![k, theta],
@@ -199,9 +138,10 @@ impl Family {
     pub fn rational(&self) -> Tf {
         let s = Poly::s();
         let (num, den) = match *self {
-            Family::IpdtIr { k, tau, tau_z, .. } => {
-                (Poly::linear(-k * tau_z, k), s.mul(&Poly::linear(tau, 1.0)))
-            }
+            Family::IpdtIr { k, tau, tau_z, .. } => (
+                Poly::linear(-k * tau_z, k),
+                s.mul(&Poly::linear(tau, 1.0)),
+            ),
             Family::FopdtIr { k, tau, tau_z, .. } => {
                 (Poly::linear(-k * tau_z, k), Poly::linear(tau, 1.0))
             }

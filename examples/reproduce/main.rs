@@ -16,10 +16,7 @@ fn main() {
         ("arvanitis2012", arvanitis2012::report),
         ("shamsuzzoha_lee2008", shamsuzzoha_lee2008::report),
         ("kaya2020", kaya2020::report),
-        (
-            "medarametla_manimozhi2018",
-            medarametla_manimozhi2018::report,
-        ),
+        ("medarametla_manimozhi2018", medarametla_manimozhi2018::report),
         ("praveen_kumar_narayana", praveen_kumar_narayana::report),
     ];
     let mut doc = String::from(
