@@ -579,10 +579,10 @@ fn tables2to5_proposed_rows_simulated_iae() {
     }
 }
 
-/// Every preset is loadable: a family or rational plant and either a method call that tunes
-/// or a literal (Cr, Cy) that parses.
+/// Every preset loads and runs through the JSON API: a method call that tunes (or a literal
+/// (Cr, Cy)), then its scenario simulates without diverging.
 #[wasm_bindgen_test(unsupported = test)]
-fn presets_load() {
+fn presets_load_and_simulate() {
     let ps = pidlab::rules::shamsuzzoha_lee2008::presets();
     assert_eq!(
         ps.len(),
@@ -590,27 +590,19 @@ fn presets_load() {
         "14 mappable rows (all but Liu et al.), nominal and mismatch"
     );
     for p in ps {
-        if p.tune.is_null() {
-            let c = &p.controller;
-            let v = |x: &serde_json::Value| -> Vec<f64> {
-                x.as_array()
-                    .unwrap()
-                    .iter()
-                    .map(|a| a.as_f64().unwrap())
-                    .collect()
-            };
-            pidlab::controller::Controller::from_desc(
-                &v(&c["cr"]["num"]),
-                &v(&c["cr"]["den"]),
-                &v(&c["cy"]["num"]),
-                &v(&c["cy"]["den"]),
-            )
-            .unwrap();
+        let controller = if p.tune.is_null() {
+            p.controller.clone()
         } else {
-            let fam = p.plant["family"].as_str().unwrap();
-            let f = Family::from_params(fam, |n| p.plant[n].as_f64()).unwrap();
-            let params = Params::from_value(&p.tune["params"]).unwrap();
-            rules::tune(p.tune["method"].as_str().unwrap(), &f.plant(), &params).unwrap();
-        }
+            let mut q = p.tune.clone();
+            q["plant"] = p.plant.clone();
+            pidlab::api::tune(&q).unwrap_or_else(|e| panic!("{}: {e}", p.id))["controller"].clone()
+        };
+        let r = pidlab::api::simulate(&serde_json::json!({
+            "plant": p.plant, "controller": controller, "scenario": p.scenario
+        }))
+        .unwrap_or_else(|e| panic!("{}: {e}", p.id));
+        let iae = r["metrics"]["regulatory"]["iae"].as_f64();
+        assert_eq!(r["diverged"], serde_json::json!(false), "{}", p.id);
+        assert!(iae.is_some_and(|x| x.is_finite()), "{}: {r:?}", p.id);
     }
 }
