@@ -7,7 +7,7 @@ use pidlab::controller::Controller;
 use pidlab::freq::analyze;
 use pidlab::plant::{Family, Plant};
 use pidlab::rules::shamsuzzoha_lee2008::{
-    design, imc_pid, lambda_for_ms, studies, ImcModel, DIP_ALPHA,
+    design, imc_pid, lambda_for_ms, studies, weighting_filter, ImcModel, DIP_ALPHA,
 };
 use pidlab::sim::{simulate, Scenario};
 use std::fmt::Write;
@@ -237,7 +237,7 @@ pub fn report() -> String {
             }
             for (case, p) in [("nominal", &plant), ("mismatch", &st.mismatch)] {
                 if let Ok(res) = simulate(p, c, sc) {
-                    let step = (res.t.len() / 400).max(1);
+                    let step = (res.t.len() / 200).max(1);
                     for i in (0..res.t.len()).step_by(step) {
                         let _ = writeln!(
                             csv,
@@ -293,6 +293,75 @@ pub fn report() -> String {
          R(s) = 0.4s/(0.1s+1) and a disturbance estimator F₀ acting on y − G̃e^(-θs)u; the \
          set-point controller is not printed and the scheme contains the model's dead time, so \
          it has no rational (Cr, Cy) form and no preset.\n"
+    );
+
+    // ------------------------------------------------------------------ Eq. (27)
+    let _ = writeln!(
+        o,
+        "### The weighting-type set-point filter of Eq. (27) for the comparison rows\n\n\
+         f_R = (γτ_I s + 1)/(τ_I τ_D s² + τ_I s + 1) from the printed (rounded) τ_I, τ_D, beside \
+         the printed filter (the presets use the printed filter):\n\n\
+         | Row | γ | from Eq. (27) | printed |\n|---|---|---|---|"
+    );
+    for (label, g, ti, td, printed) in [
+        (
+            "Ex. 1 Wang & Cai",
+            0.0,
+            1.181,
+            0.863,
+            "1/(1.0199s² + 1.1819s + 1)",
+        ),
+        (
+            "Ex. 1 Zhang et al.",
+            0.3,
+            2.991,
+            0.665,
+            "(0.8973s + 1)/(1.9911s² + 2.991s + 1)",
+        ),
+        (
+            "Ex. 3 Gu et al.",
+            0.3,
+            3.866,
+            0.688,
+            "(1.1599s + 1)/(2.6597s² + 3.8664s + 1)",
+        ),
+        (
+            "Ex. 3 Luyben",
+            0.3,
+            5.75,
+            1.15,
+            "(1.7250s + 1)/(6.6125s² + 5.75s + 1)",
+        ),
+        (
+            "Ex. 5 Chidambaram & Sree",
+            0.5,
+            27.0,
+            2.70,
+            "(13.5s + 1)/(72.9s² + 27s + 1)",
+        ),
+        (
+            "Ex. 5 Luyben",
+            0.8,
+            56.32,
+            3.56,
+            "(45.056s + 1)/(200.555s² + 56.32s + 1)",
+        ),
+    ] {
+        if let Ok(f) = weighting_filter(g, ti, td) {
+            let _ = writeln!(
+                o,
+                "| {label} | {g} | ({:.4}s + 1)/({:.4}s² + {:.4}s + 1) | {printed} |",
+                f.num.coef(1),
+                f.den.coef(2),
+                f.den.coef(1)
+            );
+        }
+    }
+    let _ = writeln!(
+        o,
+        "\nThe printed filters were computed from unrounded settings (Wang & Cai τ_I = 1.1819; \
+         Zhang et al. τ_I τ_D = 1.9911 needs τ_D = 0.6657, printed 0.665; Luyben 1996 \
+         200.555 needs τ_D = 3.561, printed 3.56).\n"
     );
 
     // ------------------------------------------------------------------ λ guidelines
