@@ -717,9 +717,11 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
             ),
         )
     })?;
-    let zeta = params.f64_in("zeta", 1.0, 0.01, 100.0)?;
+    let zeta = params.f64_in("zeta", 1.0, 0.1, 10.0)?;
     let gamma = params.f64_in("gamma", 0.3, 0.0, 1.0)?;
-    let phi = params.f64_in("phi", 100.0, 1e-6, 1e12)?;
+    // φ above 1e6 would cost the reduction its accuracy: E(0) ~ 1/φ is a difference of O(1)
+    // terms, so about log10(φ) digits are lost.
+    let phi = params.f64_in("phi", 100.0, 1.0, 1e6)?;
     let target = params.opt_f64("target_ms")?;
     let (lambda, lambda_source) = match (params.opt_f64("lambda")?, target) {
         (_, Some(ms)) => {
