@@ -606,3 +606,32 @@ fn presets_load_and_simulate() {
         assert!(iae.is_some_and(|x| x.is_finite()), "{}: {r:?}", p.id);
     }
 }
+
+/// The DIP λ guideline under Fig. 9, λ = αθ (α = 2.245, 1.5757, 1.221 for Ms = 1.6, 1.8, 2.0),
+/// against the exact λ for the target Ms on Example 5's plant (θ = 6). The printed α are a
+/// straight-line fit read off a plot; the exact λ/θ differs from them by −4.3 %, −1.3 % and
+/// +0.8 % (reported in the reproduction section); asserted to ±0.5 % of those measured values.
+#[wasm_bindgen_test(unsupported = test)]
+fn dip_lambda_guideline() {
+    let f = Family::Piptd {
+        k: 0.0506,
+        theta: 6.0,
+    };
+    let measured = [-0.0431, -0.0130, 0.0083];
+    for ((ms, alpha), m) in pidlab::rules::shamsuzzoha_lee2008::DIP_ALPHA
+        .iter()
+        .zip(measured)
+    {
+        let l =
+            pidlab::rules::shamsuzzoha_lee2008::lambda_for_ms(&f, *ms, 1.0, 0.3, 100.0).unwrap();
+        let d = (l / 6.0 - alpha) / alpha;
+        assert!(
+            (d - m).abs() < 0.005,
+            "Ms {ms}: λ/θ = {} vs α = {alpha} ({d:+.4})",
+            l / 6.0
+        );
+        let des = design(&f, l, 1.0, 0.3, 100.0).unwrap();
+        let a = analyze(&f.plant(), &des.controller).unwrap();
+        assert!((a.ms.unwrap() - ms).abs() < 1e-4);
+    }
+}
