@@ -94,8 +94,8 @@ pub type FitTable = [[[f64; 5]; 3]; 3];
 /// Table I (0.1 ≤ θ/T ≤ 1.0), with the ISTE column corrected.
 ///
 /// ERRATA (ISTE column): the table prints a₂ = 0.34300 and d₃ = −0.14940; with them
-/// Example 1 gives T_i = 0.521 and T_d = 0.0287 (printed 0.587, 0.069) and Example 2 gives
-/// T_i = 2.32, T_d = 0.027 (printed 2.501, 0.296).
+/// Example 1 gives T_i = 0.530 and T_d = 0.042 (printed 0.587, 0.069) and Example 2 gives
+/// T_i = 2.319, T_d = 0.027 (printed 2.501, 0.296).
 /// - d₃ = −0.01494 (a dropped zero) reproduces both printed T_d (the window of d₃ giving
 ///   Example 2's T_d = 0.296 is [−0.01500, −0.01450)).
 /// - a₂: shared/ERRATA.md proposes 0.43300 (digits swapped). That reproduces Example 1
