@@ -809,13 +809,17 @@ pub struct Comparison {
     pub note: &'static str,
 }
 
+/// Derivative filter of the comparison PIDs (not stated by the paper; an ideal derivative on
+/// the error would make u impulsive at the set-point step).
+pub const COMPARISON_N: f64 = 10.0;
+
 const NOTE_PI: &str = "PI on the error, K_c(1 + 1/(T_i s)) (Cr = Cy)";
 const NOTE_PID: &str = "PID quoted as (K_c, T_i, T_d) without its structure; mapped as the \
-    ideal PID on the error K_c(1 + 1/(T_i s) + T_d s) with an ideal derivative (the process \
-    is strictly proper, so the loop is well-posed)";
+    ideal PID on the error K_c(1 + 1/(T_i s) + T_d s/(T_d s/10 + 1)) (derivative filter N = 10, \
+    not stated by the paper: an ideal derivative on the error makes u impulsive at a set-point step)";
 const NOTE_JL: &str = "PID quoted as (K_c, T_i, T_d, λ) without its structure; mapped as the \
-    ideal PID on the error K_c(1 + 1/(T_i s) + T_d s) with an ideal derivative; λ is Jeng & \
-    Lin's closed-loop design parameter and does not enter the controller as quoted";
+    ideal PID on the error K_c(1 + 1/(T_i s) + T_d s/(T_d s/10 + 1)) (derivative filter N = 10, \
+    not stated by the paper); λ is Jeng & Lin's closed-loop design parameter and does not enter the controller as quoted";
 
 /// The comparison settings of Tables III, VI (Example 2) and V (Example 3).
 pub fn comparisons() -> Vec<Comparison> {
@@ -936,7 +940,12 @@ pub fn comparisons() -> Vec<Comparison> {
 impl Comparison {
     /// The controller as (Cr, Cy).
     pub fn controller(&self) -> Result<crate::controller::Controller> {
-        Pid::ideal(self.kc, self.ti, self.td.unwrap_or(0.0)).to_controller()
+        match self.td {
+            Some(td) => Pid::ideal(self.kc, self.ti, td)
+                .filter_n(COMPARISON_N)
+                .to_controller(),
+            None => Pid::ideal(self.kc, self.ti, 0.0).to_controller(),
+        }
     }
 }
 
