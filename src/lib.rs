@@ -31,6 +31,7 @@
 
 pub mod controller;
 pub mod error;
+pub mod freq;
 pub mod metrics;
 pub mod plant;
 pub mod poly;
