@@ -12,6 +12,7 @@
 //! 25 + 6θ/T time constants.
 
 use pidlab::controller::{Controller, Pid};
+use pidlab::freq::analyze;
 use pidlab::plant::{Family, Plant};
 use pidlab::poly::Poly;
 use pidlab::rules::kaya2020::{
@@ -21,17 +22,13 @@ use pidlab::sim::{simulate, Scenario};
 use pidlab::tf::Tf;
 use std::fmt::Write;
 
-/// The servo criterion J_n of Eq. (1) for I-PD settings (KK_c, T_i/T, T_d/T) on
-/// (−y s + 1)e^{−x s}/(s + 1); `f64::INFINITY` for an unstable or ill-posed loop.
-fn cost(x: f64, y: f64, crit: Criterion, p: [f64; 3]) -> f64 {
+/// The rule's I-PD as shipped (derivative filter N from `default_n`) on the normalized plant.
+fn loop_of(x: f64, y: f64, p: [f64; 3]) -> Option<(Plant, Controller)> {
     let [kkc, ti, td] = p;
     if !(kkc > 0.0 && ti > 0.0 && td >= 0.0 && kkc < 50.0 && ti < 50.0 && td < 20.0) {
-        return f64::INFINITY;
+        return None;
     }
-    let n = match default_n(kkc, y) {
-        Some((n, _)) => n,
-        None => return f64::INFINITY,
-    };
+    let (n, _) = default_n(kkc, y)?;
     let plant = Family::FopdtIr {
         k: 1.0,
         tau: 1.0,
@@ -39,12 +36,36 @@ fn cost(x: f64, y: f64, crit: Criterion, p: [f64; 3]) -> f64 {
         theta: x,
     }
     .plant();
-    let c = match Pid::ipd(kkc, kkc / ti, kkc * td)
+    let c = Pid::ipd(kkc, kkc / ti, kkc * td)
         .filter_n(n)
         .to_controller()
-    {
-        Ok(c) => c,
-        Err(_) => return f64::INFINITY,
+        .ok()?;
+    Some((plant, c))
+}
+
+/// Ms of the exact loop (`INFINITY` when unstable).
+fn ms_of(x: f64, y: f64, p: [f64; 3]) -> f64 {
+    match loop_of(x, y, p).and_then(|(pl, c)| analyze(&pl, &c).ok()) {
+        Some(a) if a.stable => a.ms.unwrap_or(f64::INFINITY),
+        _ => f64::INFINITY,
+    }
+}
+
+/// `cost` subject to Ms ≤ `ms_max` (`INFINITY` outside).
+fn cost_ms(x: f64, y: f64, crit: Criterion, p: [f64; 3], ms_max: f64) -> f64 {
+    let j = cost(x, y, crit, p);
+    if j.is_finite() && ms_of(x, y, p) <= ms_max {
+        j
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// The servo criterion J_n of Eq. (1) for I-PD settings (KK_c, T_i/T, T_d/T) on
+/// (−y s + 1)e^{−x s}/(s + 1); `f64::INFINITY` for an unstable or ill-posed loop.
+fn cost(x: f64, y: f64, crit: Criterion, p: [f64; 3]) -> f64 {
+    let Some((plant, c)) = loop_of(x, y, p) else {
+        return f64::INFINITY;
     };
     let t_end = 25.0 + 6.0 * x;
     let sc = Scenario::steps(t_end, 0.05, 0.0, 1.0, t_end, 0.0);
@@ -234,7 +255,10 @@ fn cost_pow(x: f64, y: f64, pw: i32, p: [f64; 3]) -> f64 {
     }
 }
 
-fn probe() {
+fn probe() -> String {
+    let mut o = String::from(
+        "| θ/T | T₀/T | J | fit | J(fit) | optimum | J* |\n|---|---|---|---|---|---|---|\n",
+    );
     for (x, y) in [(0.5, 1.0), (0.5, 0.7), (1.5, 1.0)] {
         let tab = if table_for(x) == 1 {
             &TABLE_I
@@ -249,7 +273,8 @@ fn probe() {
             let (a, b, c) = normalized_settings(tab, crit, x, y);
             let mut f = |q: [f64; 3]| cost_pow(x, y, pw, q);
             let (p, j, _) = nelder_mead(&mut f, [a, b, c], 250);
-            println!(
+            let _ = writeln!(
+                o,
                 "| {x} | {y} | ∫t^{pw}e² | {a:.3}, {b:.3}, {c:.3} | {:.4} | {:.3}, {:.3}, {:.3} | {j:.4} |",
                 cost_pow(x, y, pw, [a, b, c]),
                 p[0],
@@ -258,19 +283,19 @@ fn probe() {
             );
         }
     }
+    o
 }
 
 fn main() {
     if std::env::args().any(|a| a == "--probe") {
-        println!("| θ/T | T₀/T | J | fit | J(fit) | optimum | J* |\n|---|---|---|---|---|---|---|");
-        probe();
+        print!("{}", probe());
         return;
     }
     let quick = std::env::args().any(|a| a == "--quick");
     let xs: &[f64] = if quick {
         &[0.5]
     } else {
-        &[0.1, 0.3, 0.5, 0.75, 1.0, 1.25, 1.5, 2.0]
+        &[0.1, 0.3, 0.5, 1.0, 1.5, 2.0]
     };
     let ys: &[f64] = if quick { &[1.0] } else { &[0.7, 1.0] };
     let crits = [Criterion::Iste, Criterion::Ist2e, Criterion::Ist3e];
@@ -290,15 +315,36 @@ fn main() {
          - **Paper's design loop**: 3/3 Padé delay and the ideal derivative of Eq. (4) (a rational loop, \
            simulated as its closed-loop transfer function), i.e. what the paper's PSO (33 particles × 300 \
            iterations, T₀/T = 0.7 and 1.0 only) minimized.\n\n\
-         Horizon 25 + 6θ/T. `excess` = J(fit)/J* − 1, the criterion the fit gives away.\n",
+         Horizon 25 + 6θ/T. `excess` = J(fit)/J* − 1, the criterion the fit gives away. Ms is the \
+         exact-delay maximum sensitivity (pidlab::freq, including the high-frequency limit \
+         1/(1 − |L(j∞)|)); the constrained optimum minimizes J among settings at least as robust as \
+         the fit.\n",
         if quick { "quick run: one grid point" } else { "full grid" }
     );
-    let _ = writeln!(
-        o,
-        "| θ/T | T₀/T | J | fit KK_c, T_i/T, T_d/T | exact: J(fit) | exact optimum | J* | excess | Padé: J(fit) | Padé optimum | J*ₚ | excess |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|"
+    let mut ta = String::from(
+        "### Exact loop (the rule as shipped)\n\n\
+         | θ/T | T₀/T | J | fit KK_c, T_i/T, T_d/T | J(fit) | Ms(fit) | optimum | J* | Ms* | excess | optimum with Ms ≤ Ms(fit) | J*_Ms | excess |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
-    let mut stats = [(0.0f64, 0.0f64, 0usize); 2];
+    let mut tb = String::from(
+        "### The paper's design loop (3/3 Padé, ideal derivative)\n\n\
+         | θ/T | T₀/T | J | J(fit) | optimum | J* | excess |\n|---|---|---|---|---|---|---|\n",
+    );
+    // (sum, worst, count) of the excess: exact, exact at equal Ms, Padé
+    // (θ/T, excess exact, excess exact at equal Ms, excess Padé) per case
+    let mut cases: Vec<(f64, [f64; 3])> = Vec::new();
+    let best_of = |f: &dyn Fn([f64; 3]) -> f64, starts: &[[f64; 3]]| {
+        let mut best = (starts[0], f64::INFINITY);
+        for (i, st) in starts.iter().enumerate() {
+            let mut g = |p: [f64; 3]| f(p);
+            let (p, j, _) = nelder_mead(&mut g, *st, if i == 0 { 220 } else { 120 });
+            if j < best.1 {
+                best = (p, j);
+            }
+        }
+        best
+    };
+    let fmt3 = |p: [f64; 3]| format!("{:.3}, {:.3}, {:.3}", p[0], p[1], p[2]);
     for &y in ys {
         for &x in xs {
             let tab = if table_for(x) == 1 {
@@ -309,40 +355,34 @@ fn main() {
             for crit in crits {
                 let (a, b, c) = normalized_settings(tab, crit, x, y);
                 let fit = [a, b, c];
-                let alt = [a * 0.8, b * 1.3, (c * 0.6).max(0.02)];
-                let mut cells = Vec::new();
-                for (k, f) in [
-                    &(|p: [f64; 3]| cost(x, y, crit, p)) as &dyn Fn([f64; 3]) -> f64,
-                    &(|p: [f64; 3]| cost_pade(x, y, crit, p)),
-                ]
-                .into_iter()
-                .enumerate()
-                {
-                    let j_fit = f(fit);
-                    let mut g = |p: [f64; 3]| f(p);
-                    let (p1, j1, _) = nelder_mead(&mut g, fit, 220);
-                    let (p2, j2, _) = nelder_mead(&mut g, alt, 160);
-                    let (p, j) = if j2 < j1 { (p2, j2) } else { (p1, j1) };
-                    let excess = j_fit / j - 1.0;
-                    if excess.is_finite() {
-                        stats[k].0 += excess;
-                        stats[k].1 = stats[k].1.max(excess);
-                        stats[k].2 += 1;
-                    }
-                    cells.push(format!(
-                        "{j_fit:.4} | {:.3}, {:.3}, {:.3} | {j:.4} | {:.1} %",
-                        p[0],
-                        p[1],
-                        p[2],
-                        100.0 * excess
-                    ));
-                }
+                let starts = [fit, [a * 0.8, b * 1.3, (c * 0.6).max(0.02)]];
+                let label = format!("| {x:.2} | {y:.1} | {} |", crit.id().to_uppercase());
+                // exact loop
+                let j_fit = cost(x, y, crit, fit);
+                let ms_fit = ms_of(x, y, fit);
+                let (p, j) = best_of(&|q| cost(x, y, crit, q), &starts);
+                let (pc, jc) = best_of(&|q| cost_ms(x, y, crit, q, ms_fit), &starts[..1]);
+                let (e, ec) = (j_fit / j - 1.0, j_fit / jc - 1.0);
                 let _ = writeln!(
-                    o,
-                    "| {x:.2} | {y:.1} | {} | {a:.3}, {b:.3}, {c:.3} | {} | {} |",
-                    crit.id().to_uppercase(),
-                    cells[0],
-                    cells[1]
+                    ta,
+                    "{label} {} | {j_fit:.4} | {ms_fit:.2} | {} | {j:.4} | {:.2} | {:.1} % | {} | {jc:.4} | {:.1} % |",
+                    fmt3(fit),
+                    fmt3(p),
+                    ms_of(x, y, p),
+                    100.0 * e,
+                    fmt3(pc),
+                    100.0 * ec
+                );
+                // Padé design loop
+                let jp_fit = cost_pade(x, y, crit, fit);
+                let (pp, jp) = best_of(&|q| cost_pade(x, y, crit, q), &starts);
+                let ep = jp_fit / jp - 1.0;
+                cases.push((x, [e, ec, ep]));
+                let _ = writeln!(
+                    tb,
+                    "{label} {jp_fit:.4} | {} | {jp:.4} | {:.1} % |",
+                    fmt3(pp),
+                    100.0 * ep
                 );
                 eprintln!(
                     "θ/T {x} T₀/T {y} {} done ({:.0} s)",
@@ -352,19 +392,63 @@ fn main() {
             }
         }
     }
-    for (k, name) in ["exact loop", "paper's design loop (Padé, ideal derivative)"]
-        .iter()
-        .enumerate()
-    {
-        let (sum, worst, n) = stats[k];
+    let _ = writeln!(o, "{ta}\n{tb}");
+    let median = |mut v: Vec<f64>| {
+        v.retain(|e| e.is_finite());
+        v.sort_by(|a, b| a.total_cmp(b));
+        match v.len() {
+            0 => f64::NAN,
+            n if n % 2 == 1 => v[n / 2],
+            n => 0.5 * (v[n / 2 - 1] + v[n / 2]),
+        }
+    };
+    let _ = writeln!(
+        o,
+        "### Summary: median excess J(fit)/J* − 1 over T₀/T and the three criteria\n\n\
+         | θ/T | exact loop | exact loop, Ms ≤ Ms(fit) | Padé design loop |\n|---|---|---|---|"
+    );
+    for &x in xs {
+        let col = |k: usize| median(cases.iter().filter(|c| c.0 == x).map(|c| c.1[k]).collect());
         let _ = writeln!(
             o,
-            "\n{name}: over {n} cases the fits' criterion exceeds the optimum by {:.1} % on average, \
-             {:.1} % at worst.",
-            100.0 * sum / n.max(1) as f64,
-            100.0 * worst
+            "| {x:.2} | {:.1} % | {:.1} % | {:.1} % |",
+            100.0 * col(0),
+            100.0 * col(1),
+            100.0 * col(2)
         );
     }
+    let all = |k: usize| median(cases.iter().map(|c| c.1[k]).collect());
+    let _ = writeln!(
+        o,
+        "| all | {:.1} % | {:.1} % | {:.1} % |\n",
+        100.0 * all(0),
+        100.0 * all(1),
+        100.0 * all(2)
+    );
+    if !quick {
+        let _ = writeln!(
+            o,
+            "### The other reading of Eq. (1)\n\nJ = ∫tⁿe²dt instead of ∫(tⁿe)²dt (exact loop, sample sum \
+             at dt = 0.005; `--probe`): the fits are not its optima either.\n\n{}",
+            probe()
+        );
+    }
+    let _ = writeln!(
+        o,
+        "### Reading\n\n\
+         - The printed fits are not the minima of their criteria, with the exact delay or with the paper's \
+           own 3/3-Padé design loop (the two agree closely, so the Padé is not the cause). The gap is \
+           largest at small θ/T, where the true optima use 1.5-3 times the fitted K·K_c (θ/T ≤ 0.5), and shrinks \
+           towards θ/T = 2, where the ISTE fit is within a few per cent. The fitted settings are \
+           systematically more conservative (lower K·K_c, shorter T_i at small θ/T).\n\
+         - The unconstrained optima pay for it in robustness: their Ms (exact delay, with the shipped \
+           derivative filter) is 2.4-6.6 for θ/T ≤ 0.5, against 2.0 for the fits. At equal robustness \
+           (Ms ≤ Ms(fit)) the remaining gap is smaller but still large below θ/T ≈ 1.\n\
+         - For IST²E and IST³E, whose weights t⁴ and t⁶ punish any slow tail, the gap is largest: the \
+           fits' responses creep to the set-point where the optima settle.\n\
+         - So the tables are usable, conservative settings whose label (\"optimal ISTE / IST²E / IST³E\") \
+           holds only near θ/T = 2; `kaya_optimize` gives the true optima where they matter.\n"
+    );
     let _ = writeln!(o, "\nRun time {:.0} s.", t0.elapsed().as_secs_f64());
     print!("{o}");
     if !quick {
