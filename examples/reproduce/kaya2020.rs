@@ -12,6 +12,11 @@ use pidlab::sim::{simulate, Scenario, SimResult};
 use pidlab::tf::Tf;
 use std::fmt::Write;
 
+/// A simulation and its Ms cell, or the error.
+type Run = Result<(SimResult, String), String>;
+/// A labelled table row.
+type Row = (String, Run);
+
 const CRITS: [Criterion; 3] = [Criterion::Iste, Criterion::Ist2e, Criterion::Ist3e];
 
 fn f3(x: f64) -> String {
@@ -64,7 +69,7 @@ fn pade_loop(fam: &Family, c: &Controller, ex: usize) -> (SimResult, SimResult) 
 
 /// Simulation in the paper's scenario of example `ex`, and the exact-delay Ms (or why the
 /// loop has none).
-fn run(plant: &Plant, c: &Controller, ex: usize) -> Result<(SimResult, String), String> {
+fn run(plant: &Plant, c: &Controller, ex: usize) -> Run {
     let (t_end, sp, d_time, d_size) = scenario_of(ex);
     let dt = if ex == 1 { 0.005 } else { 0.02 };
     let r = simulate(
@@ -87,7 +92,7 @@ fn umax(r: &SimResult) -> f64 {
 
 /// One row of a response table: servo IAE, ISTE, overshoot, initial inverse response,
 /// settling time; load IAE, peak error; TV and max |u| over the run.
-fn row(name: &str, r: &Result<(SimResult, String), String>) -> String {
+fn row(name: &str, r: &Run) -> String {
     match r {
         Err(e) => format!("| {name} | error: {e} ||||||||||\n"),
         Ok((r, ms)) if r.diverged => {
@@ -118,7 +123,7 @@ fn row(name: &str, r: &Result<(SimResult, String), String>) -> String {
 /// Checks the paper's qualitative claims on a set of rows (the first is the proposed I-PD):
 /// which controller has the least overshoot, the smallest initial inverse response, the
 /// smallest and the largest max |u|, the smallest servo and load IAE.
-fn claims(rows: &[(String, Result<(SimResult, String), String>)]) -> String {
+fn claims(rows: &[Row]) -> String {
     let ok: Vec<(&str, &SimResult)> = rows
         .iter()
         .filter_map(|(n, r)| match r {
@@ -373,7 +378,7 @@ pub fn report() -> String {
             if fig == 5 { "; with +20 % the I-PD has less overshoot and a slightly shorter settling time" } else { "" }
         );
         let _ = write!(w, "{HEAD}");
-        let mut rows: Vec<(String, Result<(SimResult, String), String>)> = Vec::new();
+        let mut rows: Vec<Row> = Vec::new();
         for crit in CRITS {
             let t = example_ipd(1, crit, None).unwrap();
             let label = format!(
@@ -413,7 +418,7 @@ pub fn report() -> String {
             if ex == 3 { "; Irshad & Ali oscillatory" } else { "" }
         );
         let _ = write!(w, "{HEAD}");
-        let mut rows: Vec<(String, Result<(SimResult, String), String>)> = Vec::new();
+        let mut rows: Vec<Row> = Vec::new();
         for (label, n) in [
             ("I-PD ISTE, ideal derivative (n = 0)", Some(0.0)),
             ("I-PD ISTE, default N", None),
