@@ -455,3 +455,37 @@ fn examples_2_3_least_overshoot() {
         }
     }
 }
+
+/// Every preset goes through the JSON API as the page uses it: `tune` with the preset's plant
+/// (or, for Examples 2-3, the design model in `tune.plant`) and `simulate` of the resulting or
+/// literal controller on the preset's plant and scenario, without divergence.
+#[wasm_bindgen_test(unsupported = test)]
+fn presets_through_the_json_api() {
+    use serde_json::json;
+    for p in kaya2020::presets() {
+        let controller = if p.tune.is_object() {
+            let design_plant = p.tune.get("plant").cloned().unwrap_or(p.plant.clone());
+            let out = pidlab::api::tune(&json!({
+                "method": p.tune["method"],
+                "plant": design_plant,
+                "params": p.tune["params"],
+            }))
+            .unwrap_or_else(|e| panic!("{}: {e}", p.id));
+            out["controller"].clone()
+        } else {
+            p.controller.clone()
+        };
+        let sim = pidlab::api::simulate(&json!({
+            "plant": p.plant,
+            "controller": controller,
+            "scenario": p.scenario,
+        }))
+        .unwrap_or_else(|e| panic!("{}: {e}", p.id));
+        assert_eq!(sim["diverged"], json!(false), "{}", p.id);
+        assert!(
+            sim["metrics"]["servo"]["iae"].as_f64().unwrap() > 0.0,
+            "{}",
+            p.id
+        );
+    }
+}
