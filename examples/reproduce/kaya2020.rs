@@ -93,8 +93,9 @@ fn umax(r: &SimResult) -> f64 {
 /// One row of a response table: servo IAE, ISTE, overshoot, initial inverse response,
 /// settling time; load IAE, peak error; TV and max |u| over the run.
 fn row(name: &str, r: &Run) -> String {
+    let esc = |s: &str| s.replace('|', "\\|");
     match r {
-        Err(e) => format!("| {name} | error: {e} ||||||||||\n"),
+        Err(e) => format!("| {name} | error: {} ||||||||||\n", esc(e)),
         Ok((r, ms)) if r.diverged => {
             format!(
                 "| {name} | diverged at t = {:?} (Ms: {ms}) ||||||||||\n",
@@ -105,7 +106,7 @@ fn row(name: &str, r: &Run) -> String {
             let s = r.metrics.servo.as_ref();
             let l = r.metrics.regulatory.as_ref();
             format!(
-                "| {name} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {ms} |\n",
+                "| {name} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
                 opt(s.map(|m| m.iae), 3),
                 opt(s.map(|m| m.iste), 3),
                 opt(s.and_then(|m| m.overshoot), 3),
@@ -115,8 +116,40 @@ fn row(name: &str, r: &Run) -> String {
                 opt(l.map(|m| m.peak_error), 3),
                 f3(s.map_or(0.0, |m| m.tv) + l.map_or(0.0, |m| m.tv)),
                 f3(umax(r)),
+                esc(ms),
             )
         }
+    }
+}
+
+/// Writes a figure's curves (y, or u when `u`) to `docs/figures/<name>` as CSV (t, then one
+/// column per controller; at most ~1000 rows) and returns the line that names it.
+fn figure_csv(name: &str, rows: &[Row], u: bool) -> String {
+    let ok: Vec<(&str, &SimResult)> = rows
+        .iter()
+        .filter_map(|(n, r)| r.as_ref().ok().map(|(r, _)| (n.as_str(), r)))
+        .collect();
+    let Some((_, first)) = ok.first() else {
+        return String::new();
+    };
+    let stride = first.t.len().div_ceil(1000).max(1);
+    let mut csv = String::from("t");
+    for (n, _) in &ok {
+        let _ = write!(csv, ",\"{}\"", n.replace('"', "'"));
+    }
+    csv.push('\n');
+    for k in (0..first.t.len()).step_by(stride) {
+        let _ = write!(csv, "{}", first.t[k]);
+        for (_, r) in &ok {
+            let v = if u { r.u.get(k) } else { r.y.get(k) };
+            let _ = write!(csv, ",{}", v.map_or(String::new(), |x| format!("{x:.6}")));
+        }
+        csv.push('\n');
+    }
+    let path = format!("docs/figures/{name}");
+    match std::fs::create_dir_all("docs/figures").and_then(|_| std::fs::write(&path, csv)) {
+        Ok(()) => format!("Curves ({}): `{path}`.\n", if u { "u" } else { "y" }),
+        Err(e) => format!("(could not write {path}: {e})\n"),
     }
 }
 
@@ -399,6 +432,11 @@ pub fn report() -> String {
             let _ = write!(w, "{}", row(label, r));
         }
         let _ = writeln!(w, "\n{}", claims(&rows));
+        let _ = writeln!(
+            w,
+            "{}",
+            figure_csv(&format!("kaya2020_fig{fig}.csv"), &rows, false)
+        );
     }
 
     // ---------------------------------------------------------------- Examples 2, 3
@@ -445,6 +483,13 @@ pub fn report() -> String {
             let _ = write!(w, "{}", row(label, r));
         }
         let _ = writeln!(w, "\n{}", claims(&rows[1..]));
+        for (fig, u) in [(2 * ex + 2, false), (2 * ex + 3, true)] {
+            let _ = writeln!(
+                w,
+                "{}",
+                figure_csv(&format!("kaya2020_fig{fig}.csv"), &rows, u)
+            );
+        }
     }
     let _ = writeln!(
         w,
