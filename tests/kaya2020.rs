@@ -489,3 +489,59 @@ fn presets_through_the_json_api() {
         );
     }
 }
+
+/// The reduction on random plants: factored ones K(−T₀s+1)e^{−θ₀s}/∏(τᵢs+1) keep their gain
+/// and zero, and (Taylor: every lag is either lumped into T or moved to θ) T + θ = θ₀ + Στᵢ,
+/// with T ≥ T₀ unless every lag is lumped; arbitrary coefficient arrays give a model or an
+/// error naming the plant field, never a panic.
+#[wasm_bindgen_test(unsupported = test)]
+fn reduction_random_plants() {
+    use pidlab::poly::Poly;
+    let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
+    let mut rnd = move || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..200 {
+        let n = 1 + (rnd() * 5.0) as usize;
+        let taus: Vec<f64> = (0..n).map(|_| 10f64.powf(rnd() * 3.0 - 1.5)).collect();
+        let (k, t0, th0) = (rnd() * 4.0 - 2.0 + 1e-3, rnd() * 3.0, rnd() * 2.0);
+        let den = taus
+            .iter()
+            .fold(Poly::constant(1.0), |d, &t| d.mul(&Poly::linear(t, 1.0)));
+        let num = Poly::linear(-k * t0, k);
+        let p = Plant::new(pidlab::tf::Tf { num, den }, th0).unwrap();
+        let (fam, d) = reduce_to_fopdt_ir(&p).unwrap_or_else(|e| panic!("{taus:?}: {e}"));
+        let v = fam.values();
+        let sum: f64 = taus.iter().sum();
+        let tol = 1e-6 * (1.0 + sum);
+        assert!(
+            (v[0] - k).abs() < 1e-9 * (1.0 + k.abs()),
+            "K {} vs {k}",
+            v[0]
+        );
+        assert!((v[2] - t0).abs() < 1e-9 * (1.0 + t0), "T₀ {} vs {t0}", v[2]);
+        // Σ−1/pᵢ from companion eigenvalues (cluster means preserve the sum): rounding level
+        assert!(
+            (v[1] + v[3] - th0 - sum).abs() < 1e-8 * (1.0 + sum),
+            "{taus:?}: {v:?}"
+        );
+        let all_lumped = d["moved_to_delay"].as_array().unwrap().is_empty();
+        assert!(all_lumped || v[1] >= t0 - tol, "{taus:?}, T₀ {t0}: {v:?}");
+    }
+    for _ in 0..300 {
+        let nd = 1 + (rnd() * 6.0) as usize;
+        let nn = (rnd() * (nd as f64 + 1.0)) as usize;
+        let den: Vec<f64> = (0..=nd).map(|_| rnd() * 4.0 - 1.0).collect();
+        let num: Vec<f64> = (0..=nn).map(|_| rnd() * 4.0 - 2.0).collect();
+        let Ok(p) = Plant::from_desc(&num, &den, rnd()) else {
+            continue;
+        };
+        match reduce_to_fopdt_ir(&p) {
+            Ok((fam, _)) => assert!(fam.validate().is_ok()),
+            Err(e) => assert!(e.path.starts_with("plant") && !e.message.is_empty(), "{e}"),
+        }
+    }
+}

@@ -364,8 +364,9 @@ pub fn reduce_to_fopdt_ir(plant: &Plant) -> Result<(Family, Map<String, Value>)>
 }
 
 /// Time constants `τᵢ = −1/pᵢ` of the poles of `den`, descending. Multiple roots, which the
-/// companion-matrix eigenvalues return as a small cluster (spread ~ ε^{1/m}), are replaced
-/// by the cluster mean (exact to rounding). Errors name `plant.den`.
+/// companion-matrix eigenvalues return as a small cluster of complex values (spread
+/// ~ ε^{1/m}), are replaced by the cluster mean (exact to rounding); distinct real roots are
+/// kept. Errors name `plant.den`.
 fn lag_time_constants(den: &crate::poly::Poly) -> Result<Vec<f64>> {
     let mut roots: Vec<C64> = den.roots();
     if roots.is_empty() {
@@ -412,8 +413,27 @@ fn lag_time_constants(den: &crate::poly::Poly) -> Result<Vec<f64>> {
                 ),
             ));
         }
-        for _ in i..j {
-            out.push(-1.0 / mean.re);
+        // Real, distinct roots are kept as they are; a cluster with complex members (or a
+        // spread at rounding level) is a split multiple root and is replaced by its mean.
+        let scale = mean.norm().max(1e-300);
+        let all_real = roots[i..j].iter().all(|r| r.im.abs() <= 1e-9 * scale);
+        let spread = roots[i..j]
+            .iter()
+            .fold(0.0f64, |m, r| m.max((r - mean).norm()))
+            / scale;
+        let distinct = all_real && spread > 1e-6;
+        for r in &roots[i..j] {
+            let re = if distinct { r.re } else { mean.re };
+            if re >= 0.0 {
+                return Err(Error::new(
+                    "plant.den",
+                    format!(
+                        "pole at s = {re:.4}: the rule is for open-loop stable processes (all \
+                         poles in the left half-plane, none at the origin)"
+                    ),
+                ));
+            }
+            out.push(-1.0 / re);
         }
         i = j;
     }
