@@ -545,3 +545,12 @@ fn reduction_random_plants() {
         }
     }
 }
+
+/// Extreme but valid numbers: a subnormal gain overflows K_c and is refused naming plant.k.
+#[wasm_bindgen_test(unsupported = test)]
+fn overflowing_settings_are_refused() {
+    let e = tune(&fopdt_ir(1e-310, 1.0, 0.8, 0.5), Params::default()).unwrap_err();
+    assert_eq!(e.path, "plant.k", "{e}");
+    let t = tune(&fopdt_ir(1e-6, 1e6, 0.8e6, 0.5e6), Params::default()).unwrap();
+    assert!((named(&t, "kc") * 1e-6 - t.details["kkc"].as_f64().unwrap()).abs() < 1e-12);
+}

@@ -286,10 +286,17 @@ pub fn settings(
             ),
         ));
     }
+    let (kc, ti, td) = (kkc / k, ti_t * tau, td_t * tau);
+    if !(kc.is_finite() && ti.is_finite() && td.is_finite()) {
+        return Err(Error::new(
+            "plant.k",
+            format!("K = {k:e}, T = {tau:e}: the settings overflow (K_c = {kc:e})"),
+        ));
+    }
     Ok(Settings {
-        kc: kkc / k,
-        ti: ti_t * tau,
-        td: td_t * tau,
+        kc,
+        ti,
+        td,
         theta_over_t: x,
         t0_over_t: y,
         kkc,
@@ -694,7 +701,7 @@ pub fn tune_plant(plant: &Plant, params: &Params) -> Result<Tuning> {
                 "N = {n}: high-frequency loop gain |L(j∞)| = {l:.3} ≥ 1 on the biproper plant: \
                  the loop with the exact dead time is unstable (choose a smaller N)"
             ));
-        } else if l >= 0.8 {
+        } else if (0.8..1.0).contains(&l) {
             warnings.push(format!(
                 "N = {n}: high-frequency loop gain |L(j∞)| = {l:.3} gives Ms ≥ {:.1}",
                 1.0 / (1.0 - l)
