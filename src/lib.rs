@@ -30,6 +30,7 @@
 //! - Metric definitions: see [`metrics`].
 
 pub mod controller;
+pub mod cstr;
 pub mod error;
 pub mod plant;
 pub mod poly;
