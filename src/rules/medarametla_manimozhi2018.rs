@@ -306,13 +306,36 @@ fn columns(family: &Family, tgt: &Poly) -> (Poly, [Poly; 5]) {
     (sd, [c_kp, c_ki, c_kd, c_b1, c_b2])
 }
 
-/// Solves a square system with nalgebra's LU; `None` when singular or not finite.
+/// Solves a square system with nalgebra's LU after row and column equilibration (the
+/// coefficients span many decades for plants such as the CSTR); `None` when singular or not
+/// finite.
 fn lin_solve(m: DMatrix<f64>, rhs: DVector<f64>) -> Option<DVector<f64>> {
     let scale = m.amax();
-    if !(scale.is_finite() && scale > 0.0) {
+    if !(scale.is_finite() && scale > 0.0) || m.nrows() != m.ncols() {
         return None;
     }
-    let x = m.lu().solve(&rhs)?;
+    let n = m.nrows();
+    let mut m = m;
+    let mut rhs = rhs;
+    for i in 0..n {
+        let r = m.row(i).amax();
+        if r > 0.0 {
+            m.row_mut(i).scale_mut(1.0 / r);
+            rhs[i] /= r;
+        }
+    }
+    let mut cs = vec![1.0; n];
+    for (j, c) in cs.iter_mut().enumerate() {
+        let a = m.column(j).amax();
+        if a > 0.0 {
+            *c = 1.0 / a;
+            m.column_mut(j).scale_mut(*c);
+        }
+    }
+    let mut x = m.lu().solve(&rhs)?;
+    for (j, c) in cs.iter().enumerate() {
+        x[j] *= c;
+    }
     x.iter().all(|v| v.is_finite()).then_some(x)
 }
 
