@@ -32,9 +32,12 @@
 pub mod controller;
 pub mod cstr;
 pub mod error;
+pub mod metrics;
 pub mod plant;
 pub mod poly;
 pub mod rules;
+pub mod sim;
+pub mod ss;
 pub mod tf;
 
 pub use error::{Error, Result};
