@@ -491,3 +491,94 @@ fn cstr_closed_loop_servo_and_regulatory() {
         "cr.num"
     );
 }
+
+// ---------------------------------------------------------------------------------------
+// Servo response with the set-point filter (CLARIFICATIONS.md)
+// ---------------------------------------------------------------------------------------
+
+/// Independent reference: unit-step response of a proper rational `g` at `times`, by
+/// classical RK4 (step `h`) on its controllable canonical realization.
+fn step_response_rk4(g: &pidlab::tf::Tf, times: &[f64], h: f64) -> Vec<f64> {
+    let (q, r) = g.split_improper();
+    let d0 = q.coef(0);
+    let n = g.den.degree();
+    let lead = g.den.leading();
+    let a: Vec<f64> = (0..n).map(|i| g.den.coef(i) / lead).collect();
+    let c: Vec<f64> = (0..n).map(|i| r.num.coef(i) / lead).collect();
+    let f = |x: &[f64]| -> Vec<f64> {
+        let mut dx = vec![0.0; n];
+        for i in 0..n - 1 {
+            dx[i] = x[i + 1];
+        }
+        dx[n - 1] = 1.0 - (0..n).map(|i| a[i] * x[i]).sum::<f64>();
+        dx
+    };
+    let mut x = vec![0.0; n];
+    let mut t = 0.0;
+    let mut out = Vec::new();
+    for &tt in times {
+        while t < tt - 1e-12 {
+            let hh = h.min(tt - t);
+            let k1 = f(&x);
+            let x2: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * hh * k1[i]).collect();
+            let k2 = f(&x2);
+            let x3: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * hh * k2[i]).collect();
+            let k3 = f(&x3);
+            let x4: Vec<f64> = (0..n).map(|i| x[i] + hh * k3[i]).collect();
+            let k4 = f(&x4);
+            for i in 0..n {
+                x[i] += hh / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+            }
+            t += hh;
+        }
+        out.push(d0 + (0..n).map(|i| c[i] * x[i]).sum::<f64>());
+    }
+    out
+}
+
+/// (a) With the dead time replaced in the plant by the design's own Laguerre shift (a
+/// rational plant, no delay), the simulated servo response of every example equals the step
+/// response of `(1 − θs/4)²/((1 + θs/4)²(ps + 1)²)`. Tolerance 1e-6 of the step: the
+/// simulator's own verified accuracy (tests/engine_sim.rs) and the reference's RK4 at
+/// h = 10⁻³·θ (error ≪ 10⁻⁹).
+#[wasm_bindgen_test(unsupported = test)]
+fn servo_response_on_the_laguerre_model_is_exact() {
+    for e in mm::examples() {
+        let d = mm::design(&e.family, e.lambda).unwrap();
+        let c = d.controller(e.p).unwrap();
+        let th = e.family.theta();
+        let pl = e.family.rational().mul(&mm::laguerre2(th));
+        let plant = pidlab::plant::Plant::new(pl, 0.0).unwrap();
+        let t_end = 6.0 * (th + 2.0 * e.p);
+        let dt = t_end / 300.0;
+        let sc = pidlab::sim::Scenario::steps(t_end, dt, 0.0, 1.0, 0.0, 0.0);
+        let res = pidlab::sim::simulate(&plant, &c, &sc).unwrap();
+        assert!(!res.diverged, "{}", e.id);
+        let want = step_response_rk4(&d.laguerre_servo(e.p), &res.t, 1e-3 * th);
+        let err = res.y.iter().zip(&want).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        assert!(err <= 1e-6, "{}: max |y − y_design| = {err:e}", e.id);
+    }
+}
+
+/// (b) With the exact dead time the closed loop is no longer the designed one; the servo
+/// response departs from `e^{−θs}/(ps+1)²` by a small amount. CLARIFICATIONS.md quotes about
+/// 0.5 % of the step for a double integrator with θ = 0.7, λ = 2.2, p = 1; we assert it lies
+/// between 0.2 % and 1 % (the reproduction report prints every example's value).
+#[wasm_bindgen_test(unsupported = test)]
+fn servo_response_with_the_exact_delay_is_close() {
+    let f = Family::Diptd { k: 1.0, theta: 0.7 };
+    let d = mm::design(&f, 2.2).unwrap();
+    let c = d.controller(1.0).unwrap();
+    let sc = pidlab::sim::Scenario::steps(30.0, 0.01, 0.0, 1.0, 0.0, 0.0);
+    let res = pidlab::sim::simulate(&f.plant(), &c, &sc).unwrap();
+    let dev = res
+        .t
+        .iter()
+        .zip(&res.y)
+        .map(|(t, y)| {
+            let s = (t - 0.7).max(0.0);
+            (y - (1.0 - (1.0 + s) * (-s).exp())).abs()
+        })
+        .fold(0.0, f64::max);
+    assert!(dev > 0.002 && dev < 0.01, "max deviation {dev}");
+}
