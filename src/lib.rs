@@ -32,6 +32,7 @@
 pub mod controller;
 pub mod cstr;
 pub mod error;
+pub mod freq;
 pub mod metrics;
 pub mod plant;
 pub mod poly;
