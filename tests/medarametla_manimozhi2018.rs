@@ -538,14 +538,15 @@ fn step_response_rk4(g: &pidlab::tf::Tf, times: &[f64], h: f64) -> Vec<f64> {
 
 /// (a) With the dead time replaced in the plant by the design's own Laguerre shift (a
 /// rational plant, no delay), the simulated servo response of every example equals the step
-/// response of `(1 − θs/4)²/((1 + θs/4)²(ps + 1)²)`. Tolerance 1e-6 of the step: the
+/// response of `(1 − θs/4)²/((1 + θs/4)²(ps + 1)²)` (and of `…/(ps + 1)³` with the cubic
+/// set-point filter the paper simulated for Examples 2, 3 and 5). Tolerance 1e-6 of the step: the
 /// simulator's own verified accuracy (tests/engine_sim.rs) and the reference's RK4 at
 /// h = 10⁻³·θ (error ≪ 10⁻⁹).
 #[wasm_bindgen_test(unsupported = test)]
 fn servo_response_on_the_laguerre_model_is_exact() {
-    for e in mm::examples() {
+    for (e, n) in mm::examples().into_iter().flat_map(|e| [(e, 2), (e, 3)]) {
         let d = mm::design(&e.family, e.lambda).unwrap();
-        let c = d.controller(e.p).unwrap();
+        let c = d.controller_order(e.p, n).unwrap();
         let th = e.family.theta();
         let pl = e.family.rational().mul(&mm::laguerre2(th));
         let plant = pidlab::plant::Plant::new(pl, 0.0).unwrap();
@@ -554,9 +555,18 @@ fn servo_response_on_the_laguerre_model_is_exact() {
         let sc = pidlab::sim::Scenario::steps(t_end, dt, 0.0, 1.0, 0.0, 0.0);
         let res = pidlab::sim::simulate(&plant, &c, &sc).unwrap();
         assert!(!res.diverged, "{}", e.id);
-        let want = step_response_rk4(&d.laguerre_servo(e.p), &res.t, 1e-3 * th);
-        let err = res.y.iter().zip(&want).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
-        assert!(err <= 1e-6, "{}: max |y − y_design| = {err:e}", e.id);
+        let want = step_response_rk4(&d.laguerre_servo_order(e.p, n), &res.t, 1e-3 * th);
+        let err = res
+            .y
+            .iter()
+            .zip(&want)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            err <= 1e-6,
+            "{} (ps+1)^{n}: max |y − y_design| = {err:e}",
+            e.id
+        );
     }
 }
 
@@ -581,4 +591,110 @@ fn servo_response_with_the_exact_delay_is_close() {
         })
         .fold(0.0, f64::max);
     assert!(dev > 0.002 && dev < 0.01, "max deviation {dev}");
+}
+
+// ---------------------------------------------------------------------------------------
+// Tables 4-5 (the paper's own rows) and Ms
+// ---------------------------------------------------------------------------------------
+
+/// Tables 4 and 5, proposed rows: servo IAE, regulatory IAE, regulatory peak ("OS").
+/// (example, perturbed, servo IAE, regulatory IAE, regulatory OS) as printed.
+const TABLE45: [(&str, bool, f64, f64, f64); 10] = [
+    ("ex1", false, 11.6, 5.47, 0.303),
+    ("ex2", false, 6.1, 37.53, 4.077),
+    ("ex3", false, 4.00, 0.87, 0.124),
+    ("ex4", false, 2.602, 14.00, 4.47),
+    ("ex5", false, 4.419, 6.444, 0.967),
+    ("ex1", true, 12.94, 5.468, 0.401),
+    ("ex2", true, 6.180, 37.64, 4.27),
+    ("ex3", true, 4.005, 0.871, 0.142),
+    ("ex4", true, 2.828, 19.32, 5.91),
+    ("ex5", true, 4.494, 6.447, 1.211),
+];
+
+/// The proposed rows of Tables 4-5 within 2 % (the bound CLARIFICATIONS.md sets for a
+/// paper's own simulated rows), with the paper's simulation settings: exact delay, unit steps,
+/// Example 5's controller on the process of Eq. (49), the cubic set-point filter and p = 1
+/// for Example 5 (see `mm::Example`), +20 % gain and delay for Table 5.
+#[wasm_bindgen_test(unsupported = test)]
+fn tables_4_5_proposed_rows_within_two_percent() {
+    use pidlab::sim::{simulate, Scenario};
+    for (id, perturbed, s_iae, r_iae, r_os) in TABLE45 {
+        let e = example(id);
+        let c = mm::design(&e.family, e.lambda)
+            .unwrap()
+            .controller_order(e.p, e.p_order)
+            .unwrap();
+        let mut plant = if id == "ex5" {
+            mm::example5_process()
+        } else {
+            e.family.plant()
+        };
+        if perturbed {
+            plant = plant.with_gain_delay(1.2, 1.2);
+        }
+        let sc = Scenario::steps(2.0 * e.d_time, 0.1, 0.0, 1.0, e.d_time, 1.0);
+        let r = simulate(&plant, &c, &sc).unwrap();
+        let (s, g) = (r.metrics.servo.unwrap(), r.metrics.regulatory.unwrap());
+        for (what, ours, printed) in [
+            ("servo IAE", s.iae, s_iae),
+            ("reg. IAE", g.iae, r_iae),
+            ("reg. OS", g.peak_error, r_os),
+        ] {
+            assert!(
+                (ours - printed).abs() <= 0.02 * printed,
+                "{id} perturbed={perturbed} {what}: ours {ours}, printed {printed}"
+            );
+        }
+    }
+}
+
+/// Ms of the examples (exact delay, true supremum including ω → ∞) and λ for a target Ms.
+/// The paper's Ms values are approximate: Example 1's supremum is the high-frequency limit
+/// 1/(1 − |L(j∞)|) = 2.042 (a finite-frequency search finds 2); Example 5's 2.81 is the Ms of
+/// its controller on the process of Eq. (49) (2.851), not on the model (1.774).
+#[wasm_bindgen_test(unsupported = test)]
+fn ms_of_the_examples_and_lambda_for_target_ms() {
+    // (example, our Ms to 3 decimals, measured here; printed Ms)
+    for (id, ours, printed) in [
+        ("ex1", 2.042, 2.0),
+        ("ex2", 2.008, 2.0),
+        ("ex3", 1.998, 2.0),
+        ("ex6", 3.573, 3.52),
+    ] {
+        let d = mm::design(&example(id).family, example(id).lambda).unwrap();
+        let ms = mm::true_ms(&d).unwrap().unwrap();
+        assert!((ms - ours).abs() < 5e-4, "{id}: Ms {ms}");
+        assert!(
+            (ms - printed).abs() <= 0.03 * printed,
+            "{id}: Ms {ms}, printed {printed}"
+        );
+    }
+    let e = example("ex5");
+    let c = mm::design(&e.family, e.lambda)
+        .unwrap()
+        .pid()
+        .to_controller()
+        .unwrap();
+    let ms49 = pidlab::freq::analyze(&mm::example5_process(), &c)
+        .unwrap()
+        .ms
+        .unwrap();
+    assert!((ms49 - 2.81).abs() < 0.05, "{ms49}");
+    // λ for Ms = 2 on the DIPTD of Example 2: the solve lands on Ms = 2
+    let f = example("ex2").family;
+    let l = mm::lambda_for_ms(&f, 2.0).unwrap();
+    let ms = mm::true_ms(&mm::design(&f, l).unwrap()).unwrap().unwrap();
+    assert!((ms - 2.0).abs() < 1e-6, "λ {l}, Ms {ms}");
+    assert!((l - 2.4776).abs() < 0.05, "{l}");
+    // through tune(): target_ms
+    let t = rules::tune(
+        mm::ID,
+        &f.plant(),
+        &Params::default().with("target_ms", 2.0),
+    )
+    .unwrap();
+    assert_eq!(t.details["lambda_source"], "target_ms");
+    assert!((t.details["ms"].as_f64().unwrap() - 2.0).abs() < 1e-6);
+    assert!((t.named["lambda"].as_f64().unwrap() - l).abs() < 1e-9);
 }

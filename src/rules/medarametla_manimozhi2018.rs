@@ -160,11 +160,19 @@ impl Design {
         Poly::from_asc(&[1.0, self.kp / self.ki, self.kd / self.ki])
     }
 
-    /// The set-point filter with parameter `p`: Eq. (35) for PIPTD, Eq. (37) for DIPTD and
-    /// IFOPTD, Eq. (38) for IFOPTD with a zero (and its z ≤ 0 extension, see the module doc).
+    /// The set-point filter with parameter `p` as printed: Eq. (35) for PIPTD, Eq. (37) for
+    /// DIPTD and IFOPTD, Eq. (38) for IFOPTD with a zero (and its z ≤ 0 extension, see the
+    /// module doc); the `F₂ = 1/(ps+1)²` section of Eq. (34).
     pub fn setpoint_filter(&self, p: f64) -> Tf {
+        self.setpoint_filter_order(p, 2)
+    }
+
+    /// The set-point filter with `F₂ = 1/(ps+1)ⁿ`. The printed Eqs. (34)-(38) have n = 2; the
+    /// simulated servo rows of Tables 4-5 for Examples 2, 3 and 5 (the Eq. 37 families) are
+    /// reproduced only with n = 3 (module doc).
+    pub fn setpoint_filter_order(&self, p: f64, n: u32) -> Tf {
         let lam = Poly::linear(self.lambda, 1.0);
-        let pp = Poly::linear(p, 1.0).pow(2);
+        let pp = Poly::linear(p, 1.0).pow(n);
         let (num, den) = match self.target_kind {
             // Eq. (35): (λs+1)² / ((k_d/k_i s² + k_p/k_i s + 1)(ps+1)²)
             TargetKind::Eq13 => (lam.pow(2), self.pid_zeros().mul(&pp)),
@@ -195,14 +203,25 @@ impl Design {
 
     /// The controller of Fig. 1: `Cy = G_c`, `Cr = F·G_c`.
     pub fn controller(&self, p: f64) -> Result<Controller> {
+        self.controller_order(p, 2)
+    }
+
+    /// The controller with `F₂ = 1/(ps+1)ⁿ` in the set-point filter (n = 2 or 3).
+    pub fn controller_order(&self, p: f64, n: u32) -> Result<Controller> {
         if !(p.is_finite() && p > 0.0) {
             return Err(Error::new(
                 "params.p",
                 format!("must be finite and > 0 (got {p})"),
             ));
         }
+        if !(2..=3).contains(&n) {
+            return Err(Error::new(
+                "params.p_order",
+                format!("must be 2 or 3 (got {n})"),
+            ));
+        }
         self.pid()
-            .setpoint_filter(self.setpoint_filter(p))
+            .setpoint_filter(self.setpoint_filter_order(p, n))
             .to_controller()
     }
 
@@ -221,9 +240,14 @@ impl Design {
     /// The design-model servo response `y/r` with the Laguerre shift in place of the delay:
     /// `(1−θs/4)²/((1+θs/4)²(ps+1)²)` (times `(1+zs)` for the z < 0 target, Eq. 31).
     pub fn laguerre_servo(&self, p: f64) -> Tf {
+        self.laguerre_servo_order(p, 2)
+    }
+
+    /// The design-model servo response with `F₂ = 1/(ps+1)ⁿ`.
+    pub fn laguerre_servo_order(&self, p: f64, n: u32) -> Tf {
         let mut t = laguerre2(self.family.theta()).mul(&Tf {
             num: Poly::constant(1.0),
-            den: Poly::linear(p, 1.0).pow(2),
+            den: Poly::linear(p, 1.0).pow(n),
         });
         if self.target_kind == TargetKind::Eq31 {
             if let Family::IfoptdZero { z, .. } = self.family {
@@ -652,6 +676,9 @@ pub fn methods() -> Vec<MethodInfo> {
                 .help("required unless target_ms or fit_ms is given"),
             ParamInfo::number("p", "p (set-point filter time constant)", None, 0.01, 100.0)
                 .help("default θ; the paper tunes p between 0.5θ and 3θ"),
+            ParamInfo::number("p_order", "n in F₂ = 1/(ps+1)ⁿ", Some(2.0), 2.0, 3.0).help(
+                "2 as printed (Eqs. 34-38); 3 reproduces the paper's simulated Examples 2, 3, 5",
+            ),
             ParamInfo::number("target_ms", "target Ms (λ solved exactly)", None, 1.05, 10.0)
                 .help("λ is solved so that the true Ms (exact delay) equals this value"),
             ParamInfo::number("fit_ms", "Ms for the Table 1 fit", None, 1.05, 10.0)
@@ -660,7 +687,7 @@ pub fn methods() -> Vec<MethodInfo> {
     }]
 }
 
-fn named_and_details(d: &Design, p: f64) -> (Map<String, Value>, Map<String, Value>) {
+fn named_and_details(d: &Design, p: f64, order: u32) -> (Map<String, Value>, Map<String, Value>) {
     let mut named = Map::new();
     named.insert("kp".into(), json!(d.kp));
     named.insert("ki".into(), json!(d.ki));
@@ -685,7 +712,8 @@ fn named_and_details(d: &Design, p: f64) -> (Map<String, Value>, Map<String, Val
             "(a1 s + 1)^2 / (b2 s^2 + b1 s + 1) (Eq. 5a)"
         }),
     );
-    let sp = d.setpoint_filter(p);
+    let sp = d.setpoint_filter_order(p, order);
+    det.insert("p_order".into(), json!(order));
     det.insert(
         "setpoint_filter".into(),
         json!({"num": sp.num.to_desc(), "den": sp.den.to_desc()}),
@@ -721,7 +749,7 @@ pub fn tune_family(family: &Family, params: &Params) -> Result<Tuning> {
     }
     let lambda = if let Some(ms) = target_ms {
         source = "target_ms";
-        lambda_for_ms(family, ms, p)?
+        lambda_for_ms(family, ms)?
     } else if let Some(l) = given {
         if fit.is_some() {
             warnings.push("both lambda and fit_ms given: lambda used".into());
@@ -736,9 +764,19 @@ pub fn tune_family(family: &Family, params: &Params) -> Result<Tuning> {
             "is required (or give target_ms or fit_ms)",
         ));
     };
+    let order = match params.opt_f64("p_order")? {
+        None => 2,
+        Some(x) if x == 2.0 || x == 3.0 => x as u32,
+        Some(x) => {
+            return Err(Error::new(
+                "params.p_order",
+                format!("must be 2 or 3 (got {x})"),
+            ))
+        }
+    };
     let d = design(family, lambda)?;
-    let controller = d.controller(p)?;
-    let (named, mut details) = named_and_details(&d, p);
+    let controller = d.controller_order(p, order)?;
+    let (named, mut details) = named_and_details(&d, p, order);
     details.insert("lambda_source".into(), json!(source));
     if let Some(l) = fit_lambda {
         details.insert("lambda_fit".into(), json!(l));
@@ -781,17 +819,42 @@ pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> 
     })
 }
 
-/// λ such that the true Ms (exact delay, controller with set-point filter `p`, which does not
-/// enter Ms) equals `ms`.
-pub fn lambda_for_ms(family: &Family, ms: f64, p: f64) -> Result<f64> {
-    let _ = (family, ms, p);
-    Err(Error::new(
-        "params.target_ms",
-        "needs the frequency engine (pending)",
-    ))
+/// λ such that the true Ms (exact delay; the set-point filter does not enter Ms) equals
+/// `ms`, by [`crate::freq::solve_for_ms`] over λ ∈ [0.02θ, 100θ] (the smallest such λ:
+/// Ms falls as λ grows from the smallest admissible λ). Errors name `params.target_ms`.
+pub fn lambda_for_ms(family: &Family, ms: f64) -> Result<f64> {
+    check_family(family)?;
+    let th = family.theta();
+    let plant = family.plant();
+    crate::freq::solve_for_ms(ms, 0.02 * th, 100.0 * th, |l| {
+        let d = design(family, l)?;
+        Ok((plant.clone(), d.pid().to_controller()?))
+    })
 }
 
-fn add_analysis(_plant: &Plant, _c: &Controller, _details: &mut Map<String, Value>) {}
+/// The true Ms (exact delay) of a design, `None` when the loop is unstable.
+pub fn true_ms(d: &Design) -> Result<Option<f64>> {
+    let c = d.pid().to_controller()?;
+    let a = crate::freq::analyze(&d.family.plant(), &c)?;
+    Ok(if a.stable { a.ms } else { None })
+}
+
+fn add_analysis(plant: &Plant, c: &Controller, details: &mut Map<String, Value>) {
+    match crate::freq::analyze(plant, c) {
+        Ok(a) => {
+            details.insert("stable".into(), json!(a.stable));
+            details.insert("verdict".into(), json!(a.verdict));
+            details.insert("ms".into(), json!(a.ms));
+            details.insert("w_ms".into(), json!(a.w_ms));
+            details.insert("gm".into(), json!(a.gm));
+            details.insert("pm".into(), json!(a.pm));
+            details.insert("delay_margin".into(), json!(a.delay_margin));
+        }
+        Err(e) => {
+            details.insert("analysis_error".into(), json!(e.to_string()));
+        }
+    }
+}
 
 // ---------------------------------------------------------------------------------------
 // Presets: Examples 1-6 and the comparison settings of Table 2
@@ -809,8 +872,13 @@ pub struct Example {
     pub family: Family,
     /// λ of the paper.
     pub lambda: f64,
-    /// p of the paper.
+    /// p used in the paper's simulation (Example 5: 1.0, the text says 0.9; see `p_text`).
     pub p: f64,
+    /// p as stated in the text.
+    pub p_text: f64,
+    /// n of `F₂ = 1/(ps+1)ⁿ` in the paper's simulation: 2 as printed for Eqs. (35), (38);
+    /// 3 for the Eq. (37) examples (2, 3, 5), the only value that reproduces Tables 4-5.
+    pub p_order: u32,
     /// Ms the paper states for its λ.
     pub ms_printed: f64,
     /// Scenario end time.
@@ -835,6 +903,8 @@ pub fn examples() -> Vec<Example> {
             },
             lambda: 6.71,
             p: 3.3,
+            p_text: 3.3,
+            p_order: 2,
             ms_printed: 2.0,
             t_end: 200.0,
             d_time: 100.0,
@@ -847,6 +917,8 @@ pub fn examples() -> Vec<Example> {
             family: Family::Diptd { k: 1.0, theta: 1.0 },
             lambda: 2.4776,
             p: 1.7,
+            p_text: 1.7,
+            p_order: 3,
             ms_printed: 2.0,
             t_end: 100.0,
             d_time: 50.0,
@@ -863,6 +935,8 @@ pub fn examples() -> Vec<Example> {
             },
             lambda: 1.8857,
             p: 1.0,
+            p_text: 1.0,
+            p_order: 3,
             ms_printed: 2.0,
             t_end: 60.0,
             d_time: 30.0,
@@ -880,6 +954,8 @@ pub fn examples() -> Vec<Example> {
             },
             lambda: 1.07,
             p: 0.8,
+            p_text: 0.8,
+            p_order: 2,
             ms_printed: 2.35,
             t_end: 50.0,
             d_time: 25.0,
@@ -896,7 +972,9 @@ pub fn examples() -> Vec<Example> {
                 theta: 1.2799,
             },
             lambda: 1.895,
-            p: 0.9,
+            p: 1.0,
+            p_text: 0.9,
+            p_order: 3,
             ms_printed: 2.81,
             t_end: 80.0,
             d_time: 40.0,
@@ -914,6 +992,8 @@ pub fn examples() -> Vec<Example> {
             },
             lambda: 1.0925,
             p: 1.0,
+            p_text: 1.0,
+            p_order: 2,
             ms_printed: 3.52,
             t_end: 100.0,
             d_time: 50.0,
@@ -1055,35 +1135,56 @@ fn scenario_json(e: &Example) -> Value {
 pub fn presets() -> Vec<Preset> {
     let mut v = Vec::new();
     for e in examples() {
+        let order_note = if e.p_order == 3 {
+            " The set-point filter uses 1/(ps+1)³ (p_order = 3): the printed Eq. (37) has (ps+1)², but only the \
+             cube reproduces the paper's simulated servo rows (Tables 4-5)."
+        } else {
+            ""
+        };
+        let p_note = if e.p != e.p_text {
+            format!(
+                " The text says p = {}; the simulated Tables 4-5 rows are reproduced with p = {}.",
+                e.p_text, e.p
+            )
+        } else {
+            String::new()
+        };
         v.push(Preset {
             id: format!("medarametla2018/{}/proposed", e.id),
             title: format!("{} — proposed (λ = {}, p = {})", e.title, e.lambda, e.p),
             description: format!(
                 "Medarametla & Manimozhi design with λ = {} (Ms {} in the paper) and set-point filter p = {}; \
-                 unit set-point step at 0 and input load step at {} as in the paper's simulation{}.",
+                 unit set-point step at 0 and input load step at {} as in the paper's simulation{}.{}{}",
                 e.lambda,
                 e.ms_printed,
                 e.p,
                 e.d_time,
                 if e.id == "ex6" {
                     " (linearized CSTR, Eq. 53: 2 K set-point step, jacket-temperature drop 317.4 → 310 K; the nonlinear runs are in the reproduction report)"
+                } else if e.id == "ex5" {
+                    " on the reduced model of Eq. (50) (the next preset applies it to the process of Eq. 49)"
                 } else {
                     ""
-                }
+                },
+                order_note,
+                p_note
             ),
             citation: CITATION.into(),
             plant: family_json(&e.family),
-            tune: json!({"method": ID, "params": {"lambda": e.lambda, "p": e.p}}),
+            tune: json!({"method": ID, "params": {"lambda": e.lambda, "p": e.p, "p_order": e.p_order}}),
             controller: Value::Null,
             scenario: scenario_json(&e),
         });
         if e.id == "ex5" {
-            if let Ok(c) = design(&e.family, e.lambda).and_then(|d| d.controller(e.p)) {
+            if let Ok(c) =
+                design(&e.family, e.lambda).and_then(|d| d.controller_order(e.p, e.p_order))
+            {
                 v.push(Preset {
                     id: "medarametla2018/ex5/proposed-on-eq49".into(),
                     title: "Example 5: the proposed design (on the reduced model Eq. 50) controlling the process of Eq. (49)".into(),
-                    description: "Controller designed on 0.5183e^{-1.2799s}/(s(1.1609s+1)) with λ = 1.895, p = 0.9, applied to \
-                                  0.5(1−0.5s)e^{−0.7s}/(s(0.4s+1)(0.1s+1)(0.5s+1)) as in Fig. 11."
+                    description: "Controller designed on 0.5183e^{-1.2799s}/(s(1.1609s+1)) with λ = 1.895, p = 1 and 1/(ps+1)³ \
+                                  (what reproduces Tables 4-5; the text says p = 0.9), applied to \
+                                  0.5(1−0.5s)e^{−0.7s}/(s(0.4s+1)(0.1s+1)(0.5s+1)) as in Figs. 11-12."
                         .into(),
                     citation: CITATION.into(),
                     plant: plant_json(&example5_process()),
@@ -1099,6 +1200,11 @@ pub fn presets() -> Vec<Preset> {
             continue;
         };
         let Ok(ctrl) = c.controller() else { continue };
+        let improper = ctrl.cr.relative_degree() < 0;
+        let mut scenario = scenario_json(&e);
+        if improper {
+            scenario["setpoint"]["size"] = json!(0.0);
+        }
         let plant = if e.id == "ex5" {
             plant_json(&example5_process())
         } else {
@@ -1110,8 +1216,10 @@ pub fn presets() -> Vec<Preset> {
             description: format!(
                 "Anil & Padma Sree (ISA Trans. 57, 2015) as quoted in Table 2: k_p = {}, k_i = {}, k_d = {}, PID filter {:?}/{:?} \
                  (Ms {} printed). Mapped as a one-degree-of-freedom PID × filter on the error: the set-point treatment \
-                 of the original is not given in this paper, so only the regulatory response is comparable with Tables 4-5.",
-                c.kp, c.ki, c.kd, c.filter.0, c.filter.1, c.ms_printed
+                 of the original is not given in this paper, so only the regulatory response is comparable with Tables 4-5.{}",
+                c.kp, c.ki, c.kd, c.filter.0, c.filter.1, c.ms_printed,
+                if improper { " With this filter the derivative on the error is ideal, so a set-point step would be an impulse: \
+                              the scenario has the load step only." } else { "" }
             ),
             citation: "C. Anil, R. Padma Sree, Tuning of PID controllers for integrating systems using direct synthesis method, \
                        ISA Transactions 57 (2015) 211-219; settings as quoted in Medarametla & Manimozhi 2018, Table 2"
@@ -1119,7 +1227,7 @@ pub fn presets() -> Vec<Preset> {
             plant,
             tune: Value::Null,
             controller: controller_json(&ctrl),
-            scenario: scenario_json(&e),
+            scenario,
         });
     }
     v
