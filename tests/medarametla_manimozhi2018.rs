@@ -507,9 +507,7 @@ fn step_response_rk4(g: &pidlab::tf::Tf, times: &[f64], h: f64) -> Vec<f64> {
     let c: Vec<f64> = (0..n).map(|i| r.num.coef(i) / lead).collect();
     let f = |x: &[f64]| -> Vec<f64> {
         let mut dx = vec![0.0; n];
-        for i in 0..n - 1 {
-            dx[i] = x[i + 1];
-        }
+        dx[..n - 1].copy_from_slice(&x[1..]);
         dx[n - 1] = 1.0 - (0..n).map(|i| a[i] * x[i]).sum::<f64>();
         dx
     };

@@ -34,14 +34,29 @@
 //! (a degenerate solution: k_p = 0, b₁ = −θ/4) and the design, Eq. (14).
 //!
 //! # Deviations and choices (documented here and in the reproduction report)
-//! - Table 3, jacketed CSTR: k_d prints 160,460; the solve gives 1,604,559 (ERRATA.md; a
-//!   dropped digit). Every other Table 3 entry reproduces to its printed digits.
+//! - Table 3, jacketed CSTR: k_d prints 160,460; the solve gives 1,604,557.8 (the exact
+//!   rational solution; ERRATA.md quotes 1,604,559): a dropped digit. Every other Table 3
+//!   entry reproduces to its printed digits.
 //! - Eq. (38) is printed for z > 0 (target (λs+1)⁴(1+zs)). For z ≤ 0 the paper gives the
 //!   target (λs+1)⁵ (Eq. 31, z < 0) but no filter; we use the same construction (F cancels
-//!   the designed closed-loop poles and the PID zeros): `F = (λs+1)⁵/((k_d/k_i s² + k_p/k_i s
-//!   + 1)(a₁s+1)²(ps+1)²)`, so that the design-model servo response is
-//!   `(1+zs)(1−θs/4)²/((1+θs/4)²(ps+1)²)` (the right-half-plane zero cannot be cancelled).
-//!   For z = 0 the target of Eq. (29) degenerates to (λs+1)⁴ and b₂ = 0 (first-order filter).
+//!   the designed closed-loop poles and the PID zeros),
+//!   `F = (λs+1)⁵/((k_d/k_i·s² + k_p/k_i·s + 1)(a₁s+1)²(ps+1)²)`, so that the design-model
+//!   servo response is `(1+zs)(1−θs/4)²/((1+θs/4)²(ps+1)²)` (the right-half-plane zero
+//!   cannot be cancelled). For z = 0 the target of Eq. (29) degenerates to (λs+1)⁴ and
+//!   b₂ = 0 (first-order filter).
+//! - **The set-point filter the paper simulated.** Eqs. (34)-(38) print `F₂ = 1/(ps+1)²`
+//!   (servo `e^{−θs}/(ps+1)²`, Eq. 36). Examples 1 and 4 (Eqs. 35, 38) reproduce Tables 4-5
+//!   with it, but the Eq. (37) examples (2, 3, 5) reproduce only with `1/(ps+1)³`: with the
+//!   square the servo IAE is θ + 2p (Ex. 2: 4.40, Ex. 3: 3.00), the printed 6.1 and 4.00 are
+//!   θ + 3p, and TV and t_s match only with the cube too. The parameter `p_order` (2 by
+//!   default, as printed; 3 reproduces the simulations) selects it; the presets of Examples
+//!   2, 3, 5 use 3. Example 5 was simulated with p = 1 (the text says 0.9): only p = 1 gives
+//!   its printed servo rows (4.419, 2.21, 0.01; perturbed 4.494, 3.968, 0.039).
+//! - **Ms as printed is approximate.** Example 1's true Ms is the high-frequency limit
+//!   1/(1 − |L(j∞)|) = 2.042 (the controller is improper by one on a relative-degree-one
+//!   plant); Example 4's λ = 1.07 gives Ms 2.12, not 2.35; Example 5's "Ms 2.81 at
+//!   λ = 1.895" is the Ms of that controller on the process of Eq. (49) (2.851), not on the
+//!   model of Eq. (50) it was designed for (1.774).
 //! - Table 1's first row is labelled DIPTD in the extraction; it is the PIPTD fit
 //!   (it gives λ = 6.71 for Example 1, θ = 5, Ms = 2, as the text says). The IFOPTD-with-zero
 //!   fit is truncated after "7.817"; the missing factor is Ms⁴ (it then gives λ = 1.076 for
