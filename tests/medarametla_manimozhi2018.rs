@@ -696,3 +696,69 @@ fn ms_of_the_examples_and_lambda_for_target_ms() {
     assert!((t.details["ms"].as_f64().unwrap() - 2.0).abs() < 1e-6);
     assert!((t.named["lambda"].as_f64().unwrap() - l).abs() < 1e-9);
 }
+
+/// Every preset loads: method presets tune from their plant object, literal controllers parse,
+/// and the suggested scenario simulates without error or divergence.
+#[wasm_bindgen_test(unsupported = test)]
+fn presets_load_and_simulate() {
+    use pidlab::controller::Controller;
+    use pidlab::plant::Plant;
+    use pidlab::sim::{simulate, Scenario};
+    let presets = mm::presets();
+    assert_eq!(
+        presets.len(),
+        13,
+        "6 examples, Ex. 5 on Eq. (49), 6 Anil & Padma Sree settings"
+    );
+    for p in presets {
+        let plant = if let Some(fam) = p.plant["family"].as_str() {
+            Family::from_params(fam, |n| p.plant[n].as_f64())
+                .unwrap()
+                .plant()
+        } else {
+            let v = |k: &str| -> Vec<f64> {
+                p.plant[k]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.as_f64().unwrap())
+                    .collect()
+            };
+            Plant::from_desc(&v("num"), &v("den"), p.plant["delay"].as_f64().unwrap()).unwrap()
+        };
+        let c = if p.tune.is_null() {
+            let v = |a: &str, b: &str| -> Vec<f64> {
+                p.controller[a][b]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.as_f64().unwrap())
+                    .collect()
+            };
+            Controller::from_desc(
+                &v("cr", "num"),
+                &v("cr", "den"),
+                &v("cy", "num"),
+                &v("cy", "den"),
+            )
+            .unwrap()
+        } else {
+            let params = Params::from_value(&p.tune["params"]).unwrap();
+            rules::tune(p.tune["method"].as_str().unwrap(), &plant, &params)
+                .unwrap()
+                .controller
+        };
+        let sc = &p.scenario;
+        let g = |a: &str, b: &str| sc[a][b].as_f64().unwrap();
+        let scen = Scenario::steps(
+            sc["t_end"].as_f64().unwrap(),
+            sc["dt"].as_f64().unwrap(),
+            g("setpoint", "time"),
+            g("setpoint", "size"),
+            g("disturbance", "time"),
+            g("disturbance", "size"),
+        );
+        let r = simulate(&plant, &c, &scen).unwrap_or_else(|e| panic!("{}: {e}", p.id));
+        assert!(!r.diverged, "{}", p.id);
+    }
+}

@@ -750,10 +750,7 @@ fn ms_section() -> String {
         .map(|i| 0.2 * (50.0f64).powf(i as f64 / 80.0))
         .collect();
     for (ci, (_, f)) in curves.iter().enumerate() {
-        for &l in &lams {
-            let ms = mm::design(f, l)
-                .ok()
-                .and_then(|d| mm::true_ms(&d).ok().flatten());
+        for (&l, ms) in lams.iter().zip(mm::ms_curve(f, &lams)) {
             rows.push(vec![ci as f64, l, ms.unwrap_or(f64::NAN)]);
         }
     }

@@ -854,6 +854,19 @@ pub fn true_ms(d: &Design) -> Result<Option<f64>> {
     Ok(if a.stable { a.ms } else { None })
 }
 
+/// Fig. 2: the true Ms (exact delay) against λ for a family; `None` where the design is
+/// invalid (e.g. b₁ < 0) or the loop unstable.
+pub fn ms_curve(family: &Family, lambdas: &[f64]) -> Vec<Option<f64>> {
+    lambdas
+        .iter()
+        .map(|&l| {
+            design(family, l)
+                .ok()
+                .and_then(|d| true_ms(&d).ok().flatten())
+        })
+        .collect()
+}
+
 fn add_analysis(plant: &Plant, c: &Controller, details: &mut Map<String, Value>) {
     match crate::freq::analyze(plant, c) {
         Ok(a) => {
