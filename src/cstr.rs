@@ -375,10 +375,10 @@ pub fn simulate(
         ));
     }
     let steps = (sc.t_end / sc.dt).round();
-    if steps > 5e6 {
+    if steps > 1e6 {
         return Err(Error::new(
             "scenario.dt",
-            "too many steps (t_end/dt > 5·10⁶)",
+            "too many steps (t_end/dt > 10⁶)",
         ));
     }
     for (name, t) in [("sp_time", sc.sp_time), ("d_time", sc.d_time)] {
