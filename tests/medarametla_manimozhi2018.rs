@@ -762,3 +762,32 @@ fn presets_load_and_simulate() {
         assert!(!r.diverged, "{}", p.id);
     }
 }
+
+/// Through the JSON API (what the page calls): plant by family, named parameters beside
+/// (Cr, Cy), errors naming the field.
+#[wasm_bindgen_test(unsupported = test)]
+fn json_api_tune() {
+    use serde_json::json;
+    let out = pidlab::api::tune(&json!({
+        "method": "medarametla",
+        "plant": {"family": "ifoptd_zero_unstable", "k": 6.83e-4, "tau": 1112.099, "z": 766.0752, "theta": 1.0},
+        "params": {"lambda": 1.0925, "p": 1.0}
+    }))
+    .unwrap();
+    // API.md: the named parameters sit in `controller` beside cr and cy
+    let kd = out["controller"]["kd"].as_f64().unwrap();
+    assert!((kd - 1_604_557.8).abs() < 1.0, "{kd}");
+    assert!((out["controller"]["b2"].as_f64().unwrap() - 65.52).abs() < 0.005);
+    assert!(out["controller"]["cr"]["num"].is_array());
+    assert!(out["details"]["ms"].as_f64().unwrap() > 3.5);
+    let e = pidlab::api::tune(&json!({
+        "method": "medarametla",
+        "plant": {"family": "diptd", "k": 1.0, "theta": 1.0},
+        "params": {"lambda": 0.3}
+    }))
+    .unwrap_err();
+    assert!(
+        e.to_string().starts_with("params.lambda: λ too small"),
+        "{e}"
+    );
+}
