@@ -791,3 +791,62 @@ fn json_api_tune() {
         "{e}"
     );
 }
+
+/// The nonlinear RK4 simulation against the exact-delay linear simulator: for a small
+/// set-point step (0.01 K) the reactor behaves as its linearization, so the measured
+/// temperature of `cstr::simulate` equals the engine's response of the linearized plant
+/// `T/T_j` (exact second-order, 1 s delay) up to the nonlinearity, O(step²).
+#[wasm_bindgen_test(unsupported = test)]
+fn cstr_small_step_matches_the_linearization() {
+    use pidlab::plant::Plant;
+    use pidlab::sim::{simulate, Scenario};
+    let p = CstrParams::paper();
+    let op = p.steady_state_at(344.0);
+    let lin = p.linearize(op.ca, op.t);
+    let e = example("ex6");
+    let c = mm::design(&e.family, e.lambda)
+        .unwrap()
+        .controller(e.p)
+        .unwrap();
+    let step = 0.01;
+    let sc = CstrScenario {
+        t_end: 30.0,
+        dt: 0.01,
+        delay: 1.0,
+        sp_time: 0.0,
+        sp_size: step,
+        d_time: 0.0,
+        d_size: 0.0,
+    };
+    let nl = cstr::simulate(&p, &op, &c, &sc).unwrap();
+    let plant = Plant::new(lin.tf.clone(), 1.0).unwrap();
+    let lr = simulate(
+        &plant,
+        &c,
+        &Scenario::steps(30.0, 0.01, 0.0, step, 0.0, 0.0),
+    )
+    .unwrap();
+    assert_eq!(nl.t.len(), lr.t.len());
+    let err =
+        nl.y.iter()
+            .zip(&lr.y)
+            .map(|(a, b)| ((a - op.t) - b).abs())
+            .fold(0.0, f64::max);
+    // measured: 5.3e-9 K for the 0.01 K step (relative 5e-7: the nonlinearity), and 2.4e-5 K
+    // of jacket temperature against a 9 K peak; asserted at about four times those
+    assert!(
+        err < 2e-6 * step && err > 0.0,
+        "max |y_nl − y_lin| = {err:e}"
+    );
+    let err_u = nl
+        .tj_cmd
+        .iter()
+        .zip(&lr.u)
+        .map(|(a, b)| ((a - op.tj) - b).abs())
+        .fold(0.0, f64::max);
+    let u_peak = lr.u.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    assert!(
+        err_u < 1e-5 * u_peak,
+        "max |u_nl − u_lin| = {err_u:e} (peak {u_peak})"
+    );
+}
