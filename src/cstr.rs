@@ -8,12 +8,15 @@
 //! the operating point `C_A = 3.734`, `T = 344 K`, `T_j = 317.4 K` is not a steady state
 //! (dT/dt = +0.043 K/s) and the linearization is `0.00118(s + 0.0013)/((s − 0.00455)(s + 0.0005))`,
 //! nothing like Eq. (53). With **`C_p = 3.5 kJ/(kg K)`** the point is a steady state
-//! (dT/dt = 1.4·10⁻⁵ K/s, i.e. T_j = 317.37 K rounds to the printed 317.4) and the
-//! linearization is `4.706·10⁻⁴(s + 1/766.04)/((s + 1/2217.7)(s − 1/1112.09))`; replacing the
+//! to the printed digits (at the printed values dT/dt = 1.4·10⁻⁵ K/s; the exact steady state
+//! at T = 344 K has C_A = 3.7344 and T_j = 317.36 K) and the linearization there is
+//! `4.706·10⁻⁴(s + 1/766.04)/((s + 1/2217.7)(s − 1/1112.09))`; replacing the
 //! slow stable pole `(2217.7 s + 1)` by `2217.7 s` (an integrator, as the paper's model
 //! family does) gives `6.832·10⁻⁴(766.04 s + 1)/(s(1112.09 s − 1))`, i.e. Eq. (53)
-//! (printed 6.83·10⁻⁴, 766.0752, 1112.099). [`CstrParams::paper`] therefore uses
-//! `C_p = 3.5`; [`CstrParams::table6_as_printed`] keeps the printed value for comparison.
+//! (printed 6.83·10⁻⁴, 766.0752, 1112.099; the last digits of z and τ differ by 5·10⁻⁵ and
+//! 7·10⁻⁶ relative). [`CstrParams::paper`] therefore uses `C_p = 3.5`;
+//! [`CstrParams::table6_as_printed`] keeps the printed value for comparison. Simulations
+//! start from the exact steady state [`CstrParams::steady_state_at`]`(344.0)`.
 //!
 //! # Simulation
 //! [`simulate`] integrates the reactor and the controller states together with a fixed-step
@@ -376,10 +379,7 @@ pub fn simulate(
     }
     let steps = (sc.t_end / sc.dt).round();
     if steps > 1e6 {
-        return Err(Error::new(
-            "scenario.dt",
-            "too many steps (t_end/dt > 10⁶)",
-        ));
+        return Err(Error::new("scenario.dt", "too many steps (t_end/dt > 10⁶)"));
     }
     for (name, t) in [("sp_time", sc.sp_time), ("d_time", sc.d_time)] {
         let k = (t / sc.dt).round();
