@@ -729,6 +729,35 @@ fn ms_section() -> String {
          process of Eq. (49), not on the model of Eq. (50) it was designed for.\n"
     );
 
+    let _ = writeln!(
+        o,
+        "Ms of the Anil & Padma Sree settings of Table 2 (their PID × filter as Cy):\n"
+    );
+    let _ = writeln!(o, "| Example | Ms ours | at ω | Ms printed |");
+    let _ = writeln!(o, "|---|---|---|---|");
+    for c in mm::comparisons() {
+        let Some(e) = mm::examples().into_iter().find(|e| e.id == c.example) else {
+            continue;
+        };
+        let plant = process(&e);
+        let cell = c
+            .controller()
+            .and_then(|ctrl| pidlab::freq::analyze(&plant, &ctrl))
+            .map(|a| {
+                (
+                    a.ms.map_or(format!("— ({})", a.verdict), |m| format!("{m:.4}")),
+                    a.w_ms.map_or("∞".into(), |w| format!("{w:.4}")),
+                )
+            })
+            .unwrap_or_else(|er| (er.to_string(), String::new()));
+        let _ = writeln!(
+            o,
+            "| {} | {} | {} | {} |",
+            e.id, cell.0, cell.1, c.ms_printed
+        );
+    }
+    let _ = writeln!(o);
+
     // Fig. 2 curves
     let mut curves: Vec<(String, Family)> = vec![
         ("PIPTD".into(), Family::Piptd { k: 1.0, theta: 1.0 }),
