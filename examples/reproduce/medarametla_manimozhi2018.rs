@@ -756,7 +756,12 @@ fn ms_section() -> String {
             e.id, cell.0, cell.1, c.ms_printed
         );
     }
-    let _ = writeln!(o);
+    let _ = writeln!(
+        o,
+        "\nFor Examples 4–6 these reproduce the printed Ms (2.35, 2.81, 3.52) to the printed digits, which \
+         confirms the PID × filter mapping of Table 2 and shows that the Ms the paper quotes for its own \
+         designs there (\"for fair comparison\") are the comparison method's values.\n"
+    );
 
     // Fig. 2 curves
     let mut curves: Vec<(String, Family)> = vec![
