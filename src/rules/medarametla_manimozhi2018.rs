@@ -56,7 +56,9 @@
 //!   1/(1 − |L(j∞)|) = 2.042 (the controller is improper by one on a relative-degree-one
 //!   plant); Example 4's λ = 1.07 gives Ms 2.12, not 2.35; Example 5's "Ms 2.81 at
 //!   λ = 1.895" is the Ms of that controller on the process of Eq. (49) (2.851), not on the
-//!   model of Eq. (50) it was designed for (1.774).
+//!   model of Eq. (50) it was designed for (1.774). The Ms of Examples 4-6 (2.35, 2.81,
+//!   3.52) are those of the Anil & Padma Sree settings of Table 2, which our mapping of
+//!   them reproduces to the printed digits (2.3500, 2.8128, 3.5209).
 //! - Table 1's first row is labelled DIPTD in the extraction; it is the PIPTD fit
 //!   (it gives λ = 6.71 for Example 1, θ = 5, Ms = 2, as the text says). The IFOPTD-with-zero
 //!   fit is truncated after "7.817"; the missing factor is Ms⁴ (it then gives λ = 1.076 for
