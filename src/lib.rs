@@ -31,6 +31,7 @@
 
 pub mod api;
 pub mod controller;
+pub mod cstr;
 pub mod error;
 pub mod freq;
 pub mod metrics;
