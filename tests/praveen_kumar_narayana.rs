@@ -197,8 +197,8 @@ fn random_plants_give_a_stable_filter_or_a_named_error() {
         }
     }
     // The sample must exercise all three outcomes (else the test proves little).
-    assert!(
     eprintln!("random plants: ok {ok}, λ too small {small}, λ too large {large}, no λ {none}");
+    assert!(
         ok > 20 && small > 20 && large > 20 && none < 100,
         "ok {ok}, small {small}, large {large}, none {none}"
     );
