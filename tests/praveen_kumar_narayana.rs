@@ -142,8 +142,8 @@ fn random_plants_give_a_stable_filter_or_a_named_error() {
     let (mut ok, mut small, mut large, mut none) = (0, 0, 0, 0);
     for _ in 0..300 {
         let sign = if rng.next() < 0.2 { -1.0 } else { 1.0 };
-        eprintln!("random plants: ok {ok}, λ too small {small}, λ too large {large}, no λ {none}");
         let p = IpdtIr {
+            k: sign * rng.log_uniform(0.05, 20.0),
             tau: rng.log_uniform(0.05, 20.0),
             z: if rng.next() < 0.1 {
                 0.0
