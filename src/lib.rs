@@ -31,9 +31,13 @@
 
 pub mod controller;
 pub mod error;
+pub mod freq;
+pub mod metrics;
 pub mod plant;
 pub mod poly;
 pub mod rules;
+pub mod sim;
+pub mod ss;
 pub mod tf;
 
 pub use error::{Error, Result};
