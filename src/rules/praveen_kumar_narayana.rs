@@ -602,39 +602,141 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
     })
 }
 
-/// Frequency analysis of the exact-delay loop (placeholder until the core's freq module lands).
+/// Frequency analysis of the exact-delay loop ([`crate::freq::analyze`]): Ms (the true
+/// supremum, including the high-frequency limit of the neutral loop), its frequency, |L(j∞)|,
+/// GM, PM, delay margin and Nyquist stability.
 fn add_frequency_details(
-    _plant: &Plant,
-    _c: &Controller,
-    _details: &mut Map<String, Value>,
-    _warnings: &mut Vec<String>,
+    plant: &Plant,
+    c: &Controller,
+    details: &mut Map<String, Value>,
+    warnings: &mut Vec<String>,
 ) {
+    match crate::freq::analyze(plant, c) {
+        Ok(a) => {
+            details.insert("stable".into(), json!(a.stable));
+            details.insert("verdict".into(), json!(a.verdict));
+            details.insert("ms".into(), json!(a.ms));
+            details.insert("w_ms".into(), json!(a.w_ms));
+            details.insert("ms_at_infinity".into(), json!(a.ms_at_infinity));
+            details.insert("l_inf_analysis".into(), json!(a.l_inf));
+            details.insert("gm".into(), json!(a.gm));
+            details.insert("pm".into(), json!(a.pm));
+            details.insert("w_gc".into(), json!(a.w_gc));
+            details.insert("delay_margin".into(), json!(a.delay_margin));
+            if !a.stable {
+                warnings.push(format!(
+                    "the loop with the exact dead time is not stable ({}): the Padé design of \
+                     Eq. (9) does not carry over at this λ",
+                    a.verdict
+                ));
+            }
+            if let Some(ms) = a.ms {
+                if ms > 2.0 {
+                    let at = match a.w_ms {
+                        Some(w) => format!("at ω = {w:.4}"),
+                        None => "as ω → ∞".into(),
+                    };
+                    warnings.push(format!(
+                        "Ms = {ms:.3} {at} (|L(j∞)| = {:.3}): far above the usual 1.4-2 range",
+                        a.l_inf
+                    ));
+                }
+            }
+        }
+        Err(e) => warnings.push(format!("frequency analysis failed: {e}")),
+    }
 }
 
+/// λ for a target Ms of the exact-delay loop. Ms(λ) is large at both ends of the admissible
+/// interval (the gains blow up as b → 0 at λ_b; |L(j∞)| → 1 at λ_max), so the minimum of Ms is
+/// located first (golden-section search on log λ) and λ is solved on the branch above it, the
+/// fast-response branch the paper's Fig. 2 reads (Ms increases with λ, "higher values assure
+/// faster responses with degraded robust performance").
 fn lambda_for_ms(
-    _p: &IpdtIr,
-    _ms: f64,
-    _epsilon: f64,
-    _deriv: Derivative,
-    _details: &mut Map<String, Value>,
+    p: &IpdtIr,
+    ms: f64,
+    epsilon: f64,
+    deriv: Derivative,
+    details: &mut Map<String, Value>,
 ) -> Result<f64> {
-    Err(Error::new("params.target_ms", "not available yet"))
+    let neutral = deriv == Derivative::Measurement;
+    let (lo, hi) = lambda_range(p, neutral)?;
+    let hi = hi.unwrap_or(lo * 1e4);
+    let plant = p.plant();
+    let loop_of = |l: f64| -> Result<(Plant, Controller)> {
+        let d = design(p, l)?;
+        Ok((plant.clone(), controller(&d, epsilon, deriv)?))
+    };
+    let ms_of = |l: f64| -> f64 {
+        loop_of(l)
+            .ok()
+            .and_then(|(pl, c)| crate::freq::analyze(&pl, &c).ok())
+            .and_then(|a| if a.stable { a.ms } else { None })
+            .unwrap_or(f64::INFINITY)
+    };
+    // Golden-section search for the minimum of Ms on log λ (inner 99.99 % of the interval).
+    let (mut a, mut b) = ((lo * 1.0001).ln(), (hi * 0.9999).ln());
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let mut x1 = b - g * (b - a);
+    let mut x2 = a + g * (b - a);
+    let (mut f1, mut f2) = (ms_of(x1.exp()), ms_of(x2.exp()));
+    for _ in 0..40 {
+        if f1 <= f2 {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = b - g * (b - a);
+            f1 = ms_of(x1.exp());
+        } else {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = a + g * (b - a);
+            f2 = ms_of(x2.exp());
+        }
+    }
+    let l_min = (0.5 * (a + b)).exp();
+    let ms_min = ms_of(l_min);
+    details.insert("ms_min".into(), json!(ms_min));
+    details.insert("lambda_ms_min".into(), json!(l_min));
+    if !(ms > ms_min) {
+        return Err(Error::new(
+            "params.target_ms",
+            format!(
+                "Ms = {ms} is below the smallest Ms this design reaches on this plant \
+                 ({ms_min:.4} at λ = {l_min:.4})"
+            ),
+        ));
+    }
+    let l = crate::freq::solve_for_ms(ms, l_min, hi * 0.9999, loop_of)?;
+    details.insert("target_ms".into(), json!(ms));
+    Ok(l)
 }
 
-/// Example 1 (Eq. 20): the boiler steam drum.
+/// Example 1 (Eq. 20): the boiler steam drum `0.547(1 − 0.418s)e^{−0.1s}/(s(1.06s + 1))`.
 pub const EX1: IpdtIr = IpdtIr {
     k: 0.547,
     tau: 1.06,
     z: 0.418,
     theta: 0.1,
 };
-/// Example 2, the reduced model of Eq. (22) (as printed) used for the design.
+/// Example 2, the reduced model of Eq. (22) as printed: `0.5183(1 − 0.4699s)e^{−0.81s}/(s(1.1609s + 1))`.
+///
+/// The paper does not say how it was obtained from Eq. (21). It is not a low-frequency match
+/// (velocity gain 0.5183 against the process's 0.5), nor an ultimate-point match (see the
+/// reproduction report), nor a least-squares fit of the step or frequency response (such fits
+/// give roughly `0.50(1 − 0.46s)e^{−1.08s}/(s(0.66s + 1))`). We take it as printed: the design
+/// (Table 1) and the printed Ms = 3.9051 are computed on it, and reproduce exactly.
 pub const EX2_REDUCED: IpdtIr = IpdtIr {
     k: 0.5183,
     tau: 1.1609,
     z: 0.4699,
     theta: 0.81,
 };
+/// λ of the paper's designs (Example 1, Example 2).
+pub const LAMBDA_PAPER: [f64; 2] = [1.9, 0.8];
+/// Pai et al. 2010 settings quoted in Table 1 as `(K_c, τ_I, τ_D)`: Example 1, Example 2.
+pub const PAI2010: [(f64, f64, f64); 2] = [(4.066, 2.683, 0.650), (1.267, 5.782, 1.12)];
 
 /// Example 2's process, Eq. (21): `0.5(1 − 0.5s)e^{−0.7s}/(s(0.4s + 1)(0.1s + 1)(0.5s + 1))`.
 pub fn ex2_process() -> Plant {
@@ -652,7 +754,193 @@ pub fn ex2_process() -> Plant {
     }
 }
 
-/// Presets of this paper.
+/// Pai et al. 2010's PID as we map it: the series (interacting) PID with a derivative filter
+/// `K_c(1 + 1/(τ_I s))(1 + τ_D s/(0.1τ_D s + 1))`, one degree of freedom (ε = 1, as the paper
+/// uses for it). The paper does not state Pai's structure; among the forms we simulated this
+/// one reproduces the printed regulatory rows of Example 1 (IAE 0.1696 vs 0.1683, ISE 0.006122
+/// vs 0.006101, M_p 0.0731 vs 0.0730, t_s 14.87 vs 14.85); the servo rows are not reproduced
+/// (see the reproduction report).
+pub fn pai2010_controller(kc: f64, ti: f64, td: f64) -> Result<Controller> {
+    Pid::parallel(kc, kc / ti, 0.0)
+        .series_filter(lead_lag(1.1 * td, 0.1 * td))
+        .to_controller()
+}
+
+const PAI_STRUCTURE: &str = "Comparison setting of Table 1 as series PID K_c(1 + 1/(τ_I s))(1 + τ_D s/(0.1τ_D s + 1)) \
+on the error (ε = 1); the structure is our reconstruction (it reproduces the printed regulatory rows)";
+
+fn controller_value(c: &Controller) -> Value {
+    let (rn, rd) = c.cr.to_desc();
+    let (yn, yd) = c.cy.to_desc();
+    json!({ "cr": { "num": rn, "den": rd }, "cy": { "num": yn, "den": yd } })
+}
+
+fn family_value(p: &IpdtIr) -> Value {
+    json!({ "family": "ipdt_ir", "k": p.k, "tau": p.tau, "tau_z": p.z, "theta": p.theta })
+}
+
+fn plant_value(p: &Plant) -> Value {
+    let (n, d) = p.tf.to_desc();
+    json!({ "num": n, "den": d, "delay": p.delay })
+}
+
+/// The scenario of the paper's simulations: 0.2 steps in set point and load. The paper shows
+/// them as separate runs (Figs. 3-6); the preset puts the load step after the servo response.
+fn scenario(t_end: f64, d_time: f64) -> Value {
+    json!({ "t_end": t_end, "dt": 0.01,
+            "setpoint": { "time": 0.0, "size": 0.2 },
+            "disturbance": { "time": d_time, "size": 0.2 } })
+}
+
+/// Presets of this paper: both examples with the proposed design (also for Ms = 2), the
+/// +40 % delay perturbation with the nominal controller, and Pai et al. 2010's settings.
 pub fn presets() -> Vec<Preset> {
-    vec![]
+    let mut v = vec![];
+    let pre = "praveen_kumar_narayana";
+    // Example 1
+    let ex1 = family_value(&EX1);
+    let sc1 = scenario(60.0, 30.0);
+    v.push(Preset {
+        id: format!("{pre}/ex1/proposed"),
+        title: "Boiler steam drum: PID × lead-lag, λ = 1.9, ε = 0.2".into(),
+        description: "Example 1 (Eq. 20): 0.547(1 − 0.418s)e^{−0.1s}/(s(1.06s + 1)); Table 1 design \
+                      (k_p 3.9468, k_i 1.5338, k_d 2.5361, α 0.05, β 0.0334), Ms 5.53 (neutral loop)"
+            .into(),
+        citation: CITATION.into(),
+        plant: ex1.clone(),
+        tune: json!({ "method": ID, "params": { "lambda": 1.9, "epsilon": 0.2 } }),
+        controller: Value::Null,
+        scenario: sc1.clone(),
+    });
+    v.push(Preset {
+        id: format!("{pre}/ex1/ms2"),
+        title: "Boiler steam drum: λ for Ms = 2 (Fig. 2; paper λ = 1.1474)".into(),
+        description: "Example 1 with λ solved exactly for Ms = 2 of the exact-delay loop".into(),
+        citation: CITATION.into(),
+        plant: ex1.clone(),
+        tune: json!({ "method": ID, "params": { "target_ms": 2.0, "epsilon": 0.2 } }),
+        controller: Value::Null,
+        scenario: sc1.clone(),
+    });
+    let mut perturbed1 = EX1;
+    perturbed1.theta *= 1.4;
+    if let Ok(d) = design(&EX1, LAMBDA_PAPER[0]) {
+        if let Ok(c) = controller(&d, EPSILON_DEFAULT, Derivative::Measurement) {
+            v.push(Preset {
+                id: format!("{pre}/ex1/proposed_delay+40"),
+                title: "Boiler, +40 % dead time, nominal λ = 1.9 design".into(),
+                description: "Tables 4-5: the λ = 1.9 controller on the plant with θ = 0.14".into(),
+                citation: CITATION.into(),
+                plant: family_value(&perturbed1),
+                tune: Value::Null,
+                controller: controller_value(&c),
+                scenario: scenario(100.0, 50.0),
+            });
+        }
+    }
+    for (name, plant, sc) in [
+        ("ex1/pai2010", ex1.clone(), sc1.clone()),
+        (
+            "ex1/pai2010_delay+40",
+            family_value(&perturbed1),
+            scenario(100.0, 50.0),
+        ),
+    ] {
+        let (kc, ti, td) = PAI2010[0];
+        if let Ok(c) = pai2010_controller(kc, ti, td) {
+            v.push(Preset {
+                id: format!("{pre}/{name}"),
+                title: format!(
+                    "Boiler: Pai et al. 2010 PID (K_c {kc}, τ_I {ti}, τ_D {td}){}",
+                    if name.ends_with("+40") {
+                        ", +40 % dead time"
+                    } else {
+                        ""
+                    }
+                ),
+                description: PAI_STRUCTURE.into(),
+                citation: CITATION_PAI.into(),
+                plant,
+                tune: Value::Null,
+                controller: controller_value(&c),
+                scenario: sc,
+            });
+        }
+    }
+    // Example 2
+    let full = ex2_process();
+    let mut full40 = full.clone();
+    full40.delay *= 1.4;
+    let sc2 = scenario(300.0, 150.0);
+    v.push(Preset {
+        id: format!("{pre}/ex2/reduced_proposed"),
+        title: "Example 2, reduced model (Eq. 22): PID × lead-lag, λ = 0.8".into(),
+        description: "0.5183(1 − 0.4699s)e^{−0.81s}/(s(1.1609s + 1)); Table 1 design (k_p 1.2805, \
+                      k_i 0.2180, k_d 1.1928, α 0.4050, β 0.1362), Ms 3.91"
+            .into(),
+        citation: CITATION.into(),
+        plant: family_value(&EX2_REDUCED),
+        tune: json!({ "method": ID, "params": { "lambda": 0.8, "epsilon": 0.2 } }),
+        controller: Value::Null,
+        scenario: scenario(60.0, 30.0),
+    });
+    v.push(Preset {
+        id: format!("{pre}/ex2/reduced_ms2"),
+        title: "Example 2, reduced model: λ for Ms = 2 (paper λ = 0.6914)".into(),
+        description: "λ solved exactly for Ms = 2 on the reduced model of Eq. (22)".into(),
+        citation: CITATION.into(),
+        plant: family_value(&EX2_REDUCED),
+        tune: json!({ "method": ID, "params": { "target_ms": 2.0, "epsilon": 0.2 } }),
+        controller: Value::Null,
+        scenario: scenario(60.0, 30.0),
+    });
+    if let Ok(d) = design(&EX2_REDUCED, LAMBDA_PAPER[1]) {
+        if let Ok(c) = controller(&d, EPSILON_DEFAULT, Derivative::Measurement) {
+            for (name, plant, extra) in [
+                ("ex2/proposed", &full, ""),
+                ("ex2/proposed_delay+40", &full40, ", +40 % dead time"),
+            ] {
+                v.push(Preset {
+                    id: format!("{pre}/{name}"),
+                    title: format!(
+                        "Example 2 process (Eq. 21): λ = 0.8 design from the reduced model{extra}"
+                    ),
+                    description:
+                        "0.5(1 − 0.5s)e^{−0.7s}/(s(0.4s + 1)(0.1s + 1)(0.5s + 1)) with the \
+                                  Table 1 controller designed on Eq. (22)"
+                            .into(),
+                    citation: CITATION.into(),
+                    plant: plant_value(plant),
+                    tune: Value::Null,
+                    controller: controller_value(&c),
+                    scenario: sc2.clone(),
+                });
+            }
+        }
+    }
+    let (kc, ti, td) = PAI2010[1];
+    if let Ok(c) = pai2010_controller(kc, ti, td) {
+        for (name, plant, extra) in [
+            ("ex2/pai2010", &full, ""),
+            ("ex2/pai2010_delay+40", &full40, ", +40 % dead time"),
+        ] {
+            v.push(Preset {
+                id: format!("{pre}/{name}"),
+                title: format!(
+                    "Example 2 process: Pai et al. 2010 PID (K_c {kc}, τ_I {ti}, τ_D {td}){extra}"
+                ),
+                description: PAI_STRUCTURE.into(),
+                citation: CITATION_PAI.into(),
+                plant: plant_value(plant),
+                tune: Value::Null,
+                controller: controller_value(&c),
+                scenario: if extra.is_empty() {
+                    sc2.clone()
+                } else {
+                    scenario(600.0, 300.0)
+                },
+            });
+        }
+    }
+    v
 }
