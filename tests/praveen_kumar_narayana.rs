@@ -1,9 +1,11 @@
 //! Praveen Kumar & Narayana: PID × lead-lag by pole placement (seed 004_e7142b8c2f5ed265.txt).
 
+use pidlab::freq::analyze;
 use pidlab::plant::Family;
 use pidlab::poly::Poly;
 use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
 use pidlab::rules::{self, Params};
+use pidlab::sim::{simulate, Scenario};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 fn plant_of(p: &IpdtIr) -> pidlab::plant::Plant {
@@ -235,4 +237,146 @@ fn bad_inputs_name_the_field() {
     .plant();
     let e = rules::tune(pk::ID, &other, &Params::default().with("lambda", 1.0)).unwrap_err();
     assert_eq!(e.path, "plant.family");
+}
+
+/// Servo (r: 0.2 step at t = 0) metrics of the λ design on `plant`, exact dead time, dt = 0.01.
+fn servo(
+    p: &IpdtIr,
+    lambda: f64,
+    plant: &pidlab::plant::Plant,
+    t_end: f64,
+) -> pidlab::metrics::Metrics {
+    let d = pk::design(p, lambda).unwrap();
+    let c = pk::controller(&d, 0.2, pk::Derivative::Measurement).unwrap();
+    let sc = Scenario::steps(t_end, 0.01, 0.0, 0.2, 0.0, 0.0);
+    let r = simulate(plant, &c, &sc).unwrap();
+    assert!(!r.diverged);
+    r.metrics.servo.unwrap()
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn boiler_servo_iae_ise_match_errata() {
+    // ERRATA.md: derivative on the measurement, ε = 0.2, λ = 1.9, 0.2 step: IAE 0.412,
+    // ISE 0.0650 (an independent computation). Tolerance: half a unit of the last digit given.
+    let m = servo(&pk::EX1, 1.9, &pk::EX1.plant(), 30.0);
+    assert!((m.iae - 0.412).abs() <= 0.0005, "IAE {}", m.iae);
+    assert!((m.ise - 0.0650).abs() <= 0.00005, "ISE {}", m.ise);
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn proposed_servo_ise_matches_tables_2_and_4() {
+    // Tables 2 and 4, "Proposed" rows, servo ISE. Example 2 is simulated on the true process,
+    // Eq. (21), with the controller designed on the reduced model, Eq. (22) (the printed servo
+    // rows match this, not the reduced model). The paper's simulation set-up is not given
+    // (solver, sampling); the measured differences are ≤ 0.06 %, asserted within 0.1 %.
+    let full = pk::ex2_process();
+    let mut full40 = full.clone();
+    full40.delay *= 1.4;
+    let rows: [(&str, IpdtIr, f64, pidlab::plant::Plant, f64); 4] = [
+        ("Table 2, Ex. 1", pk::EX1, 1.9, pk::EX1.plant(), 0.06497),
+        ("Table 2, Ex. 2", pk::EX2_REDUCED, 0.8, full.clone(), 0.1423),
+        (
+            "Table 4, Ex. 1",
+            pk::EX1,
+            1.9,
+            pk::EX1.plant().with_gain_delay(1.0, 1.4),
+            0.06588,
+        ),
+        ("Table 4, Ex. 2", pk::EX2_REDUCED, 0.8, full40, 0.1487),
+    ];
+    for (name, p, l, plant, printed) in rows {
+        let m = servo(&p, l, &plant, 60.0);
+        assert!(
+            (m.ise - printed).abs() <= 1e-3 * printed,
+            "{name}: ISE {} vs {printed}",
+            m.ise
+        );
+    }
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn design_ms_and_lambda_for_ms_2() {
+    // Example 2 (reduced model, λ = 0.8): printed Ms 3.9051. Our Ms is the supremum (the
+    // ω → ∞ limit of this neutral loop); a value read on a frequency grid can only be below
+    // it. Measured 3.90535: asserted within 5e-4 above the printed value.
+    let t = rules::tune(
+        pk::ID,
+        &pk::EX2_REDUCED.plant(),
+        &Params::default().with("lambda", 0.8),
+    )
+    .unwrap();
+    let ms = num(&t.details, "ms");
+    assert!(ms >= 3.9051 - 0.00005 && ms - 3.9051 <= 5e-4, "Ms {ms}");
+    // Example 1 (λ = 1.9): the supremum is the high-frequency limit 1/(1 − |L(j∞)|), with
+    // |L(j∞)| = |k z k_d α/(τ β)| ≈ 0.8194; printed 5.53 (ERRATA: 5.52 near 8,700 rad/s).
+    let t = rules::tune(
+        pk::ID,
+        &pk::EX1.plant(),
+        &Params::default().with("lambda", 1.9),
+    )
+    .unwrap();
+    let (ms, linf) = (num(&t.details, "ms"), num(&t.details, "l_inf"));
+    assert!(
+        (ms - 1.0 / (1.0 - linf)).abs() <= 1e-6 * ms,
+        "Ms {ms}, |L∞| {linf}"
+    );
+    assert!((5.525..5.55).contains(&ms), "Ms {ms}");
+    // λ for Ms = 2 (Fig. 2; text of Examples 1 and 2): printed 1.1474 and 0.6914.
+    for (p, printed, tol) in [
+        // Example 1: we find 1.147451, which the printed 1.1474 truncates (rounding would
+        // print 1.1475): asserted within one unit of the 4th decimal.
+        (pk::EX1, 1.1474, 1e-4),
+        // Example 2: we find 0.69084, 0.08 % below the printed value; asserted at 0.1 %
+        // (the paper's Ms read on a grid is below the supremum, which shifts its λ up).
+        (pk::EX2_REDUCED, 0.6914, 1e-3 * 0.6914),
+    ] {
+        let t = rules::tune(
+            pk::ID,
+            &p.plant(),
+            &Params::default().with("target_ms", 2.0),
+        )
+        .unwrap();
+        let l = num(&t.details, "lambda");
+        assert!((l - printed).abs() <= tol, "λ(Ms = 2) {l} vs {printed}");
+        // and the returned design has Ms = 2 on the exact-delay loop
+        let a = analyze(&p.plant(), &t.controller).unwrap();
+        assert!(a.stable);
+        assert!((a.ms.unwrap() - 2.0).abs() <= 1e-6, "Ms {:?}", a.ms);
+    }
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn derivative_on_error_is_filtered_and_simulates() {
+    let params = Params::default()
+        .with("lambda", 1.9)
+        .with("derivative", "error")
+        .with("n", 10.0);
+    let t = rules::tune(pk::ID, &pk::EX1.plant(), &params).unwrap();
+    // Both paths proper (no impulse on a set-point step), filter T_f = k_d/(k_p N).
+    assert!(t.controller.cr.relative_degree() >= 0 && t.controller.cy.relative_degree() >= 0);
+    let (kp, kd) = (num(&t.named, "kp"), num(&t.named, "kd"));
+    assert!((num(&t.details, "tf") - kd / kp / 10.0).abs() <= 1e-15);
+    // Cr at s = 1 equals (ε k_p + k_i + k_d/(T_f + 1))·(α + 1)/(β + 1)
+    let (ki, a, b) = (
+        num(&t.named, "ki"),
+        num(&t.named, "alpha"),
+        num(&t.named, "beta"),
+    );
+    let tf = kd / kp / 10.0;
+    let want = (0.2 * kp + ki + kd / (tf + 1.0)) * (a + 1.0) / (b + 1.0);
+    assert!((t.controller.cr.eval(1.0) - want).abs() <= 1e-12 * want);
+    let sc = Scenario::steps(30.0, 0.01, 0.0, 0.2, 15.0, 0.2);
+    let r = simulate(&pk::EX1.plant(), &t.controller, &sc).unwrap();
+    assert!(!r.diverged);
+    assert!(num(&t.details, "l_inf") == 0.0);
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn presets_load_and_tune() {
+    let ps = pk::presets();
+    assert!(ps.len() >= 8);
+    for p in &ps {
+        assert!(p.id.starts_with("praveen_kumar_narayana/"));
+        assert!(p.tune.is_null() != p.controller.is_null(), "{}", p.id);
+    }
 }

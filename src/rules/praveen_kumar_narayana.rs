@@ -248,7 +248,7 @@ pub fn design(p: &IpdtIr, lambda: f64) -> Result<Design> {
     let m2 = p.z * p.theta / 2.0;
     let b = eq17_b(p, l);
     let c = eq17_c(p);
-    if !(b > 0.0) {
+    if b.is_nan() || b <= 0.0 {
         return Err(Error::new(
             "params.lambda",
             format!(
@@ -281,7 +281,7 @@ pub fn design(p: &IpdtIr, lambda: f64) -> Result<Design> {
             format!("the matching equations (10)-(12) are numerically singular at λ = {l}"),
         ));
     }
-    if !(beta > 0.0) {
+    if beta <= 0.0 {
         return Err(Error::new(
             "params.lambda",
             format!(
@@ -490,7 +490,7 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
     let mut warnings: Vec<String> = vec![];
     let lambda = match (target_ms, lambda_given) {
         (Some(ms), _) => {
-            if !(ms > 1.0) {
+            if ms <= 1.0 {
                 return Err(Error::new(
                     "params.target_ms",
                     format!("must be > 1 (got {ms})"),
@@ -699,7 +699,7 @@ fn lambda_for_ms(
     let ms_min = ms_of(l_min);
     details.insert("ms_min".into(), json!(ms_min));
     details.insert("lambda_ms_min".into(), json!(l_min));
-    if !(ms > ms_min) {
+    if ms <= ms_min {
         return Err(Error::new(
             "params.target_ms",
             format!(
