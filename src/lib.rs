@@ -29,6 +29,7 @@
 //!   `Y = P(s)e^{−θs}(U + D)`.
 //! - Metric definitions: see [`metrics`].
 
+pub mod api;
 pub mod controller;
 pub mod error;
 pub mod freq;
@@ -41,3 +42,6 @@ pub mod ss;
 pub mod tf;
 
 pub use error::{Error, Result};
+
+/// The wasm boundary (every `#[wasm_bindgen]` export).
+pub mod wasm;
