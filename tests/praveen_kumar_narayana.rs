@@ -372,11 +372,48 @@ fn derivative_on_error_is_filtered_and_simulates() {
 }
 
 #[wasm_bindgen_test(unsupported = test)]
-fn presets_load_and_tune() {
+fn presets_load_and_tune_through_the_api() {
     let ps = pk::presets();
     assert!(ps.len() >= 8);
     for p in &ps {
         assert!(p.id.starts_with("praveen_kumar_narayana/"));
         assert!(p.tune.is_null() != p.controller.is_null(), "{}", p.id);
+        pidlab::api::parse_plant(&p.plant, "plant").unwrap();
+        pidlab::api::parse_scenario(&p.scenario, "scenario").unwrap();
+        if p.controller.is_null() {
+            // λ given directly only (the target_ms presets are covered above)
+            if p.tune["params"].get("lambda").is_some() {
+                let mut input = p.tune.clone();
+                input["plant"] = p.plant.clone();
+                let out = pidlab::api::tune(&input).unwrap();
+                assert!(
+                    out["controller"]["beta"].as_f64().unwrap() > 0.0,
+                    "{}",
+                    p.id
+                );
+                assert!(out["details"]["ms"].as_f64().unwrap() > 1.0, "{}", p.id);
+            }
+        } else {
+            pidlab::api::parse_controller(&p.controller, "controller").unwrap();
+        }
     }
+    // Table 1 through the JSON API: named parameters beside cr and cy.
+    let out = pidlab::api::tune(&serde_json::json!({
+        "method": "praveen_kumar",
+        "plant": { "family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1 },
+        "params": { "lambda": 1.9 }
+    }))
+    .unwrap();
+    assert!((out["controller"]["kp"].as_f64().unwrap() - 3.9468).abs() <= 0.5e-4);
+    assert!(out["controller"]["cy"]["num"].is_array());
+    let e = pidlab::api::tune(&serde_json::json!({
+        "method": "praveen_kumar",
+        "plant": { "family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1 },
+        "params": { "lambda": 5.0 }
+    }))
+    .unwrap_err();
+    assert!(
+        e.to_string().starts_with("params.lambda: λ too large"),
+        "{e}"
+    );
 }
