@@ -521,13 +521,19 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
     })?;
     let linf = l_inf(&p, &d);
     if neutral && linf >= 1.0 {
+        let which = if lambda < lb { "small" } else { "large" };
         return Err(Error::new(
             "params.lambda",
             format!(
-                "λ too large: |L(j∞)| = |k z k_d α/(τ β)| = {linf:.4} ≥ 1 with the ideal derivative: \
+                "λ too {which}: |L(j∞)| = |k z k_d α/(τ β)| = {linf:.4} ≥ 1 with the ideal derivative: \
                  the loop is neutral and unstable for any dead time; admissible λ ∈ {range_text}"
             ),
         ));
+    }
+    if neutral && params.opt_f64("n")?.is_some() {
+        warnings.push(
+            "params.n ignored: the derivative filter applies to derivative = \"error\" only".into(),
+        );
     }
     let c = controller(&d, epsilon, deriv)?;
     let plant_exact = p.plant();
@@ -552,7 +558,11 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
     details.insert("lambda".into(), json!(d.lambda));
     details.insert(
         "lambda_range".into(),
-        json!({ "min": lb, "max": lmax, "note": "b > 0 (Eq. 17), β > 0, |L(j∞)| < 1" }),
+        json!({ "min": lb, "max": lmax, "note": if neutral {
+            "b > 0 (Eq. 17), β > 0, |L(j∞)| < 1 (ideal derivative on the measurement)"
+        } else {
+            "b > 0 (Eq. 17), β > 0"
+        } }),
     );
     details.insert("char_poly_eq10".into(), json!(d.char_poly));
     details.insert("char_residual".into(), json!(d.residual));
