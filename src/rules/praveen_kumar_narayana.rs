@@ -939,7 +939,11 @@ pub fn presets() -> Vec<Preset> {
                 title: format!(
                     "Example 2 process: Pai et al. 2010 PID (K_c {kc}, τ_I {ti}, τ_D {td}){extra}"
                 ),
-                description: PAI_STRUCTURE.into(),
+                description: if extra.is_empty() {
+                    PAI_STRUCTURE.into()
+                } else {
+                    format!("{PAI_STRUCTURE}; with this mapping the +40 % delay loop is unstable (the printed one settles only after 257 s)")
+                },
                 citation: CITATION_PAI.into(),
                 plant: plant_value(plant),
                 tune: Value::Null,
