@@ -229,6 +229,10 @@ fn bad_inputs_name_the_field() {
     )
     .unwrap_err();
     assert_eq!(e.path, "params.derivative");
+    // Ms below the smallest Ms the design reaches on the boiler (1.432 at λ ≈ 0.276)
+    let e = rules::tune(pk::ID, &pl, &Params::default().with("target_ms", 1.3)).unwrap_err();
+    assert_eq!(e.path, "params.target_ms");
+    assert!(e.message.contains("below the smallest Ms"), "{e}");
     let other = Family::Ifoptd {
         k: 1.0,
         tau: 1.0,
