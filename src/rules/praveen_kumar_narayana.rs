@@ -55,8 +55,21 @@
 //! `target_ms` solves λ so that the exact-delay loop has the requested Ms (the Fig. 2 design
 //! chart for Ms = 2, computed exactly instead of read off the figure). The paper's own designs
 //! sit at Ms 5.53 (Example 1, λ = 1.9) and 3.91 (Example 2, λ = 0.8): with the ideal derivative
-//! the loop is neutral (|L(j∞)| ≈ 0.82 for Example 1) and the sensitivity peak lies far above
-//! the crossover (≈ 8,700 rad/s). `details` reports Ms, its frequency and |L(j∞)|.
+//! the loop is neutral (|L(j∞)| = 0.8194 for Example 1, 0.7439 for Example 2) and the
+//! supremum of |S| is the ω → ∞ limit 1/(1 − |L(j∞)|) (5.537 and 3.905; a frequency grid
+//! approaches it only at thousands of rad/s, ERRATA quotes 5.52 near 8,700 rad/s), far above
+//! the crossover. `details` reports Ms, its frequency (`w_ms` null with `ms_at_infinity` when it
+//! is the limit), |L(j∞)|, GM, PM, the delay margin and the Nyquist verdict.
+//!
+//! Ms(λ) is U-shaped on the admissible interval (the gains blow up as λ → λ_b, |L(j∞)| → 1 at
+//! the upper end); `target_ms` takes the root on the rising branch (faster, the branch of the
+//! paper's λ = 1.1474 and 0.6914, which we reproduce as 1.14745 and 0.69084).
+//!
+//! ## Examples and presets
+//! Example 1, the boiler steam drum (Eq. 20); Example 2, the fourth-order process of Eq. (21),
+//! designed on the reduced model of Eq. (22) (taken as printed, see [`EX2_REDUCED`]) and
+//! simulated on Eq. (21) (the printed servo rows match that). Pai et al. 2010's settings are
+//! presets with our reconstruction of their structure ([`pai2010_controller`]).
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
 use crate::controller::{lead_lag, Controller, Pid};
