@@ -299,6 +299,34 @@ fn proposed_servo_ise_matches_tables_2_and_4() {
 }
 
 #[wasm_bindgen_test(unsupported = test)]
+fn proposed_regulatory_ise_matches_tables_2_and_4_example_1() {
+    // Tables 2 and 4, Example 1, "Proposed", regulatory ISE (0.2 load step at the plant
+    // input). The paper's simulation settings are not stated, so the printed digits (±0.01 %)
+    // cannot be the tolerance; the measured differences are 0.04 % (Table 2) and 0.14 %
+    // (Table 4), asserted within 0.2 %. (Example 2's nominal regulatory IAE/ISE are 12-17 %
+    // off print and are only reported; see the reproduction report.)
+    let d = pk::design(&pk::EX1, 1.9).unwrap();
+    let c = pk::controller(&d, 0.2, pk::Derivative::Measurement).unwrap();
+    for (name, plant, printed) in [
+        ("Table 2", pk::EX1.plant(), 0.005695),
+        (
+            "Table 4",
+            pk::EX1.plant().with_gain_delay(1.0, 1.4),
+            0.006135,
+        ),
+    ] {
+        let sc = Scenario::steps(30.0, 0.01, 0.0, 0.0, 0.0, 0.2);
+        let r = simulate(&plant, &c, &sc).unwrap();
+        let m = r.metrics.regulatory.unwrap();
+        assert!(
+            (m.ise - printed).abs() <= 2e-3 * printed,
+            "{name}: ISE {} vs {printed}",
+            m.ise
+        );
+    }
+}
+
+#[wasm_bindgen_test(unsupported = test)]
 fn design_ms_and_lambda_for_ms_2() {
     // Example 2 (reduced model, λ = 0.8): printed Ms 3.9051. Our Ms is the supremum (the
     // ω → ∞ limit of this neutral loop); a value read on a frequency grid can only be below
