@@ -86,7 +86,7 @@ if (methods.length) {
   for (const m of methods) {
     const p = presets.find((x) => x.tune && x.tune.method === m.id);
     if (!p) { console.log(`| ${m.id} | (no preset) | | | | | |`); continue; }
-    const call = { method: m.id, plant: p.plant, params: p.tune.params ?? {} };
+    const call = { method: m.id, plant: p.tune.plant ?? p.plant, params: p.tune.params ?? {} };
     try {
       const c = pidlab.tune(call).controller;
       const n = pidlab.simulate({ plant: p.plant, controller: c, scenario: p.scenario }).y.length;

@@ -293,13 +293,16 @@ fn main() {
             println!("| {} | (no preset) | | | | | |", m.id);
             continue;
         };
+        // The design model is tune.plant when the preset gives one (Kaya 2020 Ex. 2).
+        let design = p.tune.get("plant").and_then(plant_of);
         let (Some(pl), Some(sc)) = (plant_of(&p.plant), scenario_of(&p.scenario)) else {
             println!("| {} | {} | (preset not parsed) | | | | |", m.id, p.id);
             continue;
         };
         let params =
             Params::from_value(p.tune.get("params").unwrap_or(&Value::Null)).unwrap_or_default();
-        let c = match rules::tune(&m.id, &pl, &params) {
+        let dp = design.unwrap_or_else(|| pl.clone());
+        let c = match rules::tune(&m.id, &dp, &params) {
             Ok(t) => t.controller,
             Err(e) => {
                 println!("| {} | {} | error: {e} | | | | |", m.id, p.id);
@@ -308,13 +311,13 @@ fn main() {
         };
         let n = simulate(&pl, &c, &sc).map_or(0, |s| s.y.len());
         let tt = time(
-            || drop(black_box(rules::tune(&m.id, &pl, &params).ok())),
+            || drop(black_box(rules::tune(&m.id, &dp, &params).ok())),
             per,
             20,
         );
         let tu = time(
             || {
-                if let Ok(t) = rules::tune(&m.id, &pl, &params) {
+                if let Ok(t) = rules::tune(&m.id, &dp, &params) {
                     black_box(simulate(&pl, &t.controller, &sc).ok());
                     black_box(analyze(&pl, &t.controller).ok());
                 }
