@@ -39,7 +39,7 @@ apt_install() {
     apt_updated=1
   fi
   say "apt-get install $*"
-  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "$@" </dev/null
+  $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "$@" </dev/null
 }
 
 # --- Rust -----------------------------------------------------------------------------------
