@@ -55,11 +55,17 @@ run fmt cargo fmt --all -- --check --color never
 run clippy cargo clippy --all-targets -- -D warnings
 run cargo-test cargo test --release
 run wasm-test wasm-pack test --node --release -- --lib --test '*'
+# A stale package from an earlier build must not be tested: skip the tests when the build failed.
+failed() { [[ " ${FAILED[*]} " == *" $1 "* ]]; }
 run pkg-node wasm-pack build --release --target nodejs --out-dir pkg-node
-run node-test node --test tests/node/
+if failed pkg-node; then section "node-test: skipped (pkg-node did not build)"; else
+  run node-test node --test tests/node/
+fi
 if [ "$with_browser" = 1 ]; then
   run page-build bash scripts/page.sh --no-serve
-  run browser-test node --test tests/browser/
+  if failed page-build; then section "browser-test: skipped (the page did not build)"; else
+    run browser-test node --test tests/browser/
+  fi
 else
   section "browser tests: skipped (no scripts/build-page.sh or tests/browser/ yet)"
 fi
