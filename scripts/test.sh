@@ -53,7 +53,7 @@ else
 fi
 run fmt cargo fmt --all -- --check --color never
 run clippy cargo clippy --all-targets -- -D warnings
-run cargo-test cargo test --release
+run cargo-test cargo test --release --no-fail-fast
 run wasm-test wasm-pack test --node --release -- --lib --test '*'
 # A stale package from an earlier build must not be tested: skip the tests when the build failed.
 failed() { [[ " ${FAILED[*]} " == *" $1 "* ]]; }
