@@ -32,6 +32,7 @@
 pub mod controller;
 pub mod error;
 pub mod plant;
+pub mod plot;
 pub mod poly;
 pub mod rules;
 pub mod tf;
