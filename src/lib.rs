@@ -29,12 +29,20 @@
 //!   `Y = P(s)e^{−θs}(U + D)`.
 //! - Metric definitions: see [`metrics`].
 
+pub mod api;
 pub mod controller;
 pub mod error;
+pub mod freq;
+pub mod metrics;
 pub mod plant;
 pub mod plot;
 pub mod poly;
 pub mod rules;
+pub mod sim;
+pub mod ss;
 pub mod tf;
 
 pub use error::{Error, Result};
+
+/// The wasm boundary (every `#[wasm_bindgen]` export).
+pub mod wasm;

@@ -1,0 +1,291 @@
+//! The JSON-level API of API.md, in plain Rust (no wasm-bindgen): every function takes a
+//! `serde_json::Value` and returns one, and every error names the offending field path.
+//! `crate::wasm` converts JavaScript values to and from these; native tests and fuzzing drive
+//! the very same functions.
+
+use crate::controller::Controller;
+use crate::error::{Error, Result};
+use crate::freq::{analyze as analyze_loop, Analysis};
+use crate::metrics::Metrics;
+use crate::plant::{Family, Plant};
+use crate::poly::Poly;
+use crate::rules::{self, Params};
+use crate::sim::{simulate as simulate_loop, Scenario, SimResult, Step};
+use crate::tf::Tf;
+use serde_json::{json, Map, Value};
+
+/// Largest polynomial accepted at the boundary (coefficients).
+pub const MAX_COEFFS: usize = 21;
+
+fn field<'a>(v: &'a Value, name: &str, path: &str) -> Result<&'a Value> {
+    match v {
+        Value::Object(m) => m
+            .get(name)
+            .filter(|x| !x.is_null())
+            .ok_or_else(|| Error::new(join(path, name), "is required")),
+        _ => Err(Error::new(path, "must be an object")),
+    }
+}
+
+fn opt_field<'a>(v: &'a Value, name: &str) -> Option<&'a Value> {
+    v.as_object().and_then(|m| m.get(name)).filter(|x| !x.is_null())
+}
+
+fn join(path: &str, name: &str) -> String {
+    if path.is_empty() {
+        name.to_string()
+    } else {
+        format!("{path}.{name}")
+    }
+}
+
+fn number(v: &Value, path: &str) -> Result<f64> {
+    match v.as_f64() {
+        Some(x) if x.is_finite() => Ok(x),
+        _ => Err(Error::new(path, format!("must be a finite number (got {})", short(v)))),
+    }
+}
+
+fn short(v: &Value) -> String {
+    let s = v.to_string();
+    if s.len() > 40 {
+        format!("{}…", &s[..s.char_indices().nth(40).map(|c| c.0).unwrap_or(s.len())])
+    } else {
+        s
+    }
+}
+
+fn poly(v: &Value, path: &str) -> Result<Poly> {
+    let arr = v
+        .as_array()
+        .ok_or_else(|| Error::new(path, "must be an array of numbers (descending powers of s)"))?;
+    if arr.is_empty() {
+        return Err(Error::new(path, "must have at least one coefficient"));
+    }
+    if arr.len() > MAX_COEFFS {
+        return Err(Error::new(path, format!("at most {MAX_COEFFS} coefficients are accepted")));
+    }
+    let mut c = Vec::with_capacity(arr.len());
+    for (i, x) in arr.iter().enumerate() {
+        c.push(number(x, &format!("{path}[{i}]"))?);
+    }
+    Poly::parse_desc(path, &c)
+}
+
+fn tf(v: &Value, path: &str) -> Result<Tf> {
+    let num = poly(field(v, "num", path)?, &join(path, "num"))?;
+    let den = poly(field(v, "den", path)?, &join(path, "den"))?;
+    if den.is_zero() {
+        return Err(Error::new(join(path, "den"), "must not be the zero polynomial"));
+    }
+    Ok(Tf { num, den })
+}
+
+/// Parses an API.md plant: `{num, den, delay}` or `{family, …params}`.
+pub fn parse_plant(v: &Value, path: &str) -> Result<Plant> {
+    if !v.is_object() {
+        return Err(Error::new(path, "must be an object ({num, den, delay} or {family, …})"));
+    }
+    if let Some(f) = opt_field(v, "family") {
+        let id = f
+            .as_str()
+            .ok_or_else(|| Error::new(join(path, "family"), "must be a string"))?;
+        let names = Family::param_names(id).ok_or_else(|| {
+            Error::new(
+                join(path, "family"),
+                format!("unknown family '{id}' (one of {})", Family::IDS.join(", ")),
+            )
+        })?;
+        // type-check every parameter first so the error names it
+        for n in names {
+            let x = field(v, n, path)?;
+            number(x, &join(path, n))?;
+        }
+        let fam = Family::from_params(id, |n| opt_field(v, n).and_then(|x| x.as_f64()))
+            .map_err(|e| e.within(path))?;
+        return Ok(fam.plant());
+    }
+    let t = tf(v, path)?;
+    let delay = match opt_field(v, "delay") {
+        None => 0.0,
+        Some(d) => number(d, &join(path, "delay"))?,
+    };
+    Plant::new(t, delay).map_err(|e| e.within(path))
+}
+
+/// Parses an API.md controller `{cr: {num, den}, cy: {num, den}}`.
+pub fn parse_controller(v: &Value, path: &str) -> Result<Controller> {
+    let cr = tf(field(v, "cr", path)?, &join(path, "cr"))?;
+    let cy = tf(field(v, "cy", path)?, &join(path, "cy"))?;
+    Controller::new(cr, cy).map_err(|e| e.within(path))
+}
+
+fn step(v: Option<&Value>, path: &str) -> Result<Step> {
+    match v {
+        None => Ok(Step { time: 0.0, size: 0.0 }),
+        Some(s) => Ok(Step {
+            time: opt_field(s, "time").map(|x| number(x, &join(path, "time"))).transpose()?.unwrap_or(0.0),
+            size: number(field(s, "size", path)?, &join(path, "size"))?,
+        }),
+    }
+}
+
+/// Parses an API.md scenario.
+pub fn parse_scenario(v: &Value, path: &str) -> Result<Scenario> {
+    if !v.is_object() {
+        return Err(Error::new(path, "must be an object {t_end, dt, setpoint, disturbance}"));
+    }
+    let mut sc = Scenario::steps(
+        number(field(v, "t_end", path)?, &join(path, "t_end"))?,
+        number(field(v, "dt", path)?, &join(path, "dt"))?,
+        0.0,
+        0.0,
+        0.0,
+        0.0,
+    );
+    sc.setpoint = step(opt_field(v, "setpoint"), &join(path, "setpoint"))?;
+    sc.disturbance = step(opt_field(v, "disturbance"), &join(path, "disturbance"))?;
+    if let Some(b) = opt_field(v, "settling_band") {
+        sc.settling_band = number(b, &join(path, "settling_band"))?;
+    }
+    if let Some(k) = opt_field(v, "isens_k") {
+        sc.isens_k = Some(number(k, &join(path, "isens_k"))?);
+    }
+    if let Some(t) = opt_field(v, "isens_tau") {
+        sc.isens_tau = Some(number(t, &join(path, "isens_tau"))?);
+    }
+    sc.validate().map_err(|e| e.within(path))?;
+    Ok(sc)
+}
+
+/// `{num, den}` in descending powers.
+pub fn tf_json(t: &Tf) -> Value {
+    json!({ "num": t.num.to_desc(), "den": t.den.to_desc() })
+}
+
+/// `{cr, cy}`.
+pub fn controller_json(c: &Controller) -> Value {
+    json!({ "cr": tf_json(&c.cr), "cy": tf_json(&c.cy) })
+}
+
+/// `{num, den, delay}` (plus `family` and its parameters when the plant has one).
+pub fn plant_json(p: &Plant) -> Value {
+    let mut m = Map::new();
+    m.insert("num".into(), json!(p.tf.num.to_desc()));
+    m.insert("den".into(), json!(p.tf.den.to_desc()));
+    m.insert("delay".into(), json!(p.delay));
+    if let Some(f) = p.family {
+        m.insert("family".into(), json!(f.id()));
+        if let Some(names) = Family::param_names(f.id()) {
+            for (n, x) in names.iter().zip(f.values()) {
+                m.insert((*n).into(), json!(x));
+            }
+        }
+    }
+    Value::Object(m)
+}
+
+fn num_or_null(x: Option<f64>) -> Value {
+    match x {
+        Some(v) if v.is_finite() => json!(v),
+        _ => Value::Null,
+    }
+}
+
+/// Metrics as JSON (null for absent values).
+pub fn metrics_json(m: &Metrics) -> Value {
+    json!({
+        "t_start": m.t_start, "t_end": m.t_end, "step": m.step,
+        "iae": m.iae, "ise": m.ise, "itae": m.itae, "iste": m.iste, "ist2e": m.ist2e, "ist3e": m.ist3e,
+        "isenscod": num_or_null(m.isenscod), "isensdco": num_or_null(m.isensdco),
+        "overshoot": num_or_null(m.overshoot), "undershoot": num_or_null(m.undershoot),
+        "peak_error": m.peak_error, "settling_time": num_or_null(m.settling_time),
+        "rise_time": num_or_null(m.rise_time), "tv": m.tv,
+        "y_final": m.y_final, "u_final": m.u_final,
+    })
+}
+
+/// A simulation result as JSON (API.md SimResult).
+pub fn sim_json(r: &SimResult) -> Value {
+    json!({
+        "t": r.t, "r": r.r, "d": r.d, "y": r.y, "u": r.u,
+        "diverged": r.diverged, "diverged_at": num_or_null(r.diverged_at),
+        "internal_step": r.internal_step,
+        "metrics": {
+            "servo": r.metrics.servo.as_ref().map(metrics_json),
+            "regulatory": r.metrics.regulatory.as_ref().map(metrics_json),
+        }
+    })
+}
+
+/// An analysis as JSON (API.md).
+pub fn analysis_json(a: &Analysis) -> Value {
+    let (mut w, mut re, mut im) = (vec![], vec![], vec![]);
+    for p in &a.nyquist {
+        w.push(p[0]);
+        re.push(p[1]);
+        im.push(p[2]);
+    }
+    json!({
+        "stable": a.stable, "verdict": a.verdict,
+        "rhp_closed_loop": a.rhp_closed_loop, "rhp_open_loop": a.rhp_open_loop,
+        "ms": num_or_null(a.ms), "w_ms": num_or_null(a.w_ms), "ms_at_infinity": a.ms_at_infinity,
+        "l_inf": if a.l_inf.is_finite() { json!(a.l_inf) } else { Value::Null },
+        "ill_posed": !a.l_inf.is_finite(),
+        "gm": num_or_null(a.gm), "w_pc": num_or_null(a.w_pc),
+        "gm_lower": num_or_null(a.gm_lower), "w_pc_lower": num_or_null(a.w_pc_lower),
+        "pm": num_or_null(a.pm), "w_gc": num_or_null(a.w_gc),
+        "delay_margin": num_or_null(a.delay_margin),
+        "nyquist": { "w": w, "re": re, "im": im },
+    })
+}
+
+/// `methods()` of API.md.
+pub fn methods() -> Value {
+    json!({ "methods": rules::methods().iter().map(|m| serde_json::to_value(m).unwrap_or(Value::Null)).collect::<Vec<_>>() })
+}
+
+/// Every paper preset: `{ presets: [...] }`.
+pub fn presets() -> Value {
+    json!({ "presets": rules::presets().iter().map(|p| serde_json::to_value(p).unwrap_or(Value::Null)).collect::<Vec<_>>() })
+}
+
+/// `tune({method, plant, params})` of API.md.
+pub fn tune(input: &Value) -> Result<Value> {
+    let method = field(input, "method", "")?
+        .as_str()
+        .ok_or_else(|| Error::new("method", "must be a string"))?;
+    let plant = parse_plant(field(input, "plant", "")?, "plant")?;
+    let params = Params::from_value(opt_field(input, "params").unwrap_or(&Value::Null))?;
+    let t = rules::tune(method, &plant, &params)?;
+    let mut c = match controller_json(&t.controller) {
+        Value::Object(m) => m,
+        _ => Map::new(),
+    };
+    for (k, v) in &t.named {
+        c.insert(k.clone(), v.clone());
+    }
+    Ok(json!({
+        "method": t.method,
+        "controller": Value::Object(c),
+        "details": Value::Object(t.details.clone()),
+        "plant": plant_json(&plant),
+    }))
+}
+
+/// `simulate({plant, controller, scenario})` of API.md.
+pub fn simulate(input: &Value) -> Result<Value> {
+    let plant = parse_plant(field(input, "plant", "")?, "plant")?;
+    let c = parse_controller(field(input, "controller", "")?, "controller")?;
+    let sc = parse_scenario(field(input, "scenario", "")?, "scenario")?;
+    let r = simulate_loop(&plant, &c, &sc)?;
+    Ok(sim_json(&r))
+}
+
+/// `analyze({plant, controller})` of API.md.
+pub fn analyze(input: &Value) -> Result<Value> {
+    let plant = parse_plant(field(input, "plant", "")?, "plant")?;
+    let c = parse_controller(field(input, "controller", "")?, "controller")?;
+    let a = analyze_loop(&plant, &c)?;
+    Ok(analysis_json(&a))
+}

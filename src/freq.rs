@@ -1,0 +1,665 @@
+//! Frequency analysis with the exact delay: `L(jω) = Cy(jω)·P(jω)·e^{−jωθ}`.
+//!
+//! - **Ms** is the true supremum of `|S(jω)| = 1/|1 + L(jω)|` over ω > 0, including the
+//!   ω → ∞ limit. With a dead time and a biproper loop (`L(j∞) = L∞ ≠ 0`, e.g. an ideal
+//!   derivative on a plant of relative degree one) `L` keeps circling with radius → |L∞|, and
+//!   the supremum includes `1/(1 − |L∞|)`. The sweep is adaptive in ω (a step is halved until
+//!   `L` moves by less than a tenth of its distance to −1, so a narrow peak cannot be stepped
+//!   over), local maxima are refined by golden-section search, and the sweep stops only when
+//!   the bound `1/(1 − sup_{ω'≥ω}|L_rat(jω')|)` on everything beyond ω cannot beat what was
+//!   found.
+//! - **GM** (upper gain margin, and the lower one for conditionally stable loops), **PM**, both
+//!   crossover frequencies and the **delay margin**.
+//! - **Stability** by the Nyquist criterion: the winding of `1 + L` along a contour shifted by a
+//!   tiny δ into the right half-plane (so integrators lie to its left), with the open-loop
+//!   poles right of it counted from the roots of the unreduced denominators (nalgebra), so an
+//!   unstable pole-zero cancellation counts as the closed-loop pole it is. A loop whose
+//!   `|L(j∞)| ≥ 1` with a dead time is neutral-unstable; an improper `L` is ill-posed; a
+//!   set-point path with unstable poles of its own is internally unstable.
+
+use crate::controller::Controller;
+use crate::error::{Error, Result};
+use crate::plant::Plant;
+use crate::poly::{Poly, C64};
+use crate::ss::common_denominator;
+use crate::tf::Tf;
+
+/// Result of [`analyze`]. Angles in degrees, frequencies in rad per time unit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Analysis {
+    /// Closed-loop stable (Nyquist, internal, neutral and well-posedness checks).
+    pub stable: bool,
+    /// One line: "stable", or why not.
+    pub verdict: String,
+    /// Closed-loop roots in the right half-plane (None when ill-posed or neutral-unstable).
+    pub rhp_closed_loop: Option<usize>,
+    /// Open-loop poles of Cy·P in the right half-plane (integrators not counted).
+    pub rhp_open_loop: usize,
+    /// Maximum sensitivity (None when the loop is ill-posed).
+    pub ms: Option<f64>,
+    /// Frequency of Ms; None when the supremum is the ω → ∞ limit.
+    pub w_ms: Option<f64>,
+    /// True when Ms is the high-frequency limit 1/(1 − |L∞|) (not attained at finite ω).
+    pub ms_at_infinity: bool,
+    /// |L(j∞)| (0 for strictly proper loops; infinite for improper ones).
+    pub l_inf: f64,
+    /// Upper gain margin (factor), None if the gain can grow without bound.
+    pub gm: Option<f64>,
+    /// Phase-crossover frequency of `gm` (None if it is the ω → ∞ limit).
+    pub w_pc: Option<f64>,
+    /// Lower gain margin (factor < 1) of conditionally stable loops.
+    pub gm_lower: Option<f64>,
+    /// Phase-crossover frequency of `gm_lower`.
+    pub w_pc_lower: Option<f64>,
+    /// Phase margin (degrees) at the most critical gain crossover.
+    pub pm: Option<f64>,
+    /// Gain-crossover frequency of `pm`.
+    pub w_gc: Option<f64>,
+    /// Delay margin: the smallest extra dead time that destabilizes the loop.
+    pub delay_margin: Option<f64>,
+    /// Nyquist samples `[ω, Re L, Im L]` for plotting (at most ~1500, ω ascending).
+    pub nyquist: Vec<[f64; 3]>,
+}
+
+/// The loop transfer function, unreduced: numerator and denominator products.
+struct LoopTf {
+    lr: Tf,
+    delay: f64,
+}
+
+impl LoopTf {
+    fn new(plant: &Plant, c: &Controller) -> LoopTf {
+        LoopTf {
+            lr: c.cy.mul(&plant.tf),
+            delay: plant.delay,
+        }
+    }
+    fn rat(&self, s: C64) -> C64 {
+        self.lr.eval_c(s)
+    }
+    fn at(&self, w: f64) -> C64 {
+        self.rat(C64::new(0.0, w)) * C64::from_polar(1.0, -w * self.delay)
+    }
+}
+
+/// `L(jω)` with the exact delay.
+pub fn open_loop(plant: &Plant, c: &Controller, w: f64) -> C64 {
+    c.cy.eval_jw(w) * plant.eval_jw(w)
+}
+
+/// Characteristic frequencies: magnitudes of the non-zero poles and zeros of L and 1/θ.
+fn char_freqs(l: &LoopTf) -> (f64, f64) {
+    let mut f: Vec<f64> = l
+        .lr
+        .num
+        .roots()
+        .into_iter()
+        .chain(l.lr.den.roots())
+        .map(|z| z.norm())
+        .filter(|x| x.is_finite() && *x > 1e-12)
+        .collect();
+    if l.delay > 0.0 {
+        f.push(1.0 / l.delay);
+    }
+    if f.is_empty() {
+        f.push(1.0);
+    }
+    let lo = f.iter().cloned().fold(f64::INFINITY, f64::min);
+    let hi = f.iter().cloned().fold(0.0, f64::max);
+    (lo, hi)
+}
+
+/// Tail bound: `T(ω) = sup_{ω'≥ω} |L_rat(jω')|` sampled on a log grid (suffix maximum),
+/// with the ω → ∞ limit appended.
+struct Tail {
+    w: Vec<f64>,
+    vals: Vec<C64>,
+    sup: Vec<f64>,
+    inf_val: f64,
+}
+
+impl Tail {
+    fn new(l: &LoopTf, lo: f64, hi: f64, l_inf: f64, extra: &[f64]) -> Tail {
+        let n = ((hi / lo).log10() * 100.0).ceil().max(10.0) as usize;
+        let mut w: Vec<f64> = (0..=n).map(|i| lo * (hi / lo).powf(i as f64 / n as f64)).collect();
+        for &p in extra {
+            for k in -20..=20 {
+                let x = p * (1.0 + 0.005 * k as f64);
+                if x > lo && x < hi {
+                    w.push(x);
+                }
+            }
+        }
+        w.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+        let vals: Vec<C64> = w.iter().map(|&x| l.rat(C64::new(0.0, x))).collect();
+        let mut sup = vec![0.0; w.len()];
+        let mut m = l_inf;
+        for i in (0..w.len()).rev() {
+            m = m.max(vals[i].norm());
+            sup[i] = m;
+        }
+        Tail { w, vals, sup, inf_val: l_inf }
+    }
+
+    /// Start of the rotation region of a delayed biproper loop: beyond it the rational part
+    /// changes by less than 5 % over one period 2π/θ of the delay's phase.
+    fn rotation_start(&self, delay: f64) -> f64 {
+        let period = 2.0 * std::f64::consts::PI / delay;
+        let mut start = self.w.last().copied().unwrap_or(0.0);
+        for i in (0..self.w.len().saturating_sub(1)).rev() {
+            let dv = (self.vals[i + 1] - self.vals[i]).norm() / (self.w[i + 1] - self.w[i]);
+            if dv * period <= 0.05 * self.vals[i].norm() {
+                start = self.w[i];
+            } else {
+                break;
+            }
+        }
+        start
+    }
+
+    /// Frequency of the largest |L_rat| at or beyond `x`; None when the supremum is only
+    /// approached as ω → ∞.
+    fn argmax_from(&self, x: f64) -> Option<f64> {
+        let i0 = self.w.iter().position(|&g| g >= x)?;
+        let (mut bi, mut bv) = (i0, 0.0);
+        for i in i0..self.w.len() {
+            let v = self.vals[i].norm();
+            if v > bv {
+                bv = v;
+                bi = i;
+            }
+        }
+        (bi + 1 < self.w.len() && bv > self.inf_val * (1.0 + 1e-12)).then_some(self.w[bi])
+    }
+    fn at(&self, x: f64) -> f64 {
+        match self.w.iter().position(|&g| g >= x) {
+            Some(0) => self.sup[0],
+            Some(i) => self.sup[i - 1],
+            None => self.inf_val.max(*self.sup.last().unwrap_or(&0.0)),
+        }
+    }
+}
+
+fn golden_max(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
+    // maximize over log ω in [a, b]
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    let (mut la, mut lb) = (a.ln(), b.ln());
+    let mut c = lb - g * (lb - la);
+    let mut d = la + g * (lb - la);
+    let (mut fc, mut fd) = (f(c.exp()), f(d.exp()));
+    for _ in 0..80 {
+        if fc > fd {
+            lb = d;
+            d = c;
+            fd = fc;
+            c = lb - g * (lb - la);
+            fc = f(c.exp());
+        } else {
+            la = c;
+            c = d;
+            fc = fd;
+            d = la + g * (lb - la);
+            fd = f(d.exp());
+        }
+        if (lb - la).abs() < 1e-13 {
+            break;
+        }
+    }
+    a = la.exp();
+    b = lb.exp();
+    let x = 0.5 * (a + b);
+    (x, f(x))
+}
+
+fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    let mut fa = f(a);
+    for _ in 0..100 {
+        let m = 0.5 * (a + b);
+        let fm = f(m);
+        if fm == 0.0 {
+            return m;
+        }
+        if (fm < 0.0) == (fa < 0.0) {
+            a = m;
+            fa = fm;
+        } else {
+            b = m;
+        }
+        if (b - a) <= 1e-15 * b {
+            break;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// Adaptive sampling of `g` on [a, b]: returns samples with `|g_{k+1} − g_k|` at most `frac`
+/// of `min(|1 + g_k|, |1 + g_{k+1}|)` (or the depth cap).
+fn refine(g: &impl Fn(f64) -> C64, a: (f64, C64), b: (f64, C64), frac: f64, depth: u32, out: &mut Vec<(f64, C64)>) {
+    let d = (b.1 - a.1).norm();
+    let m = (1.0 + a.1).norm().min((1.0 + b.1).norm());
+    if depth == 0 || d <= frac * m.max(1e-9) || !(d.is_finite()) {
+        out.push(b);
+        return;
+    }
+    let wm = (a.0 * b.0).sqrt();
+    let mid = (wm, g(wm));
+    refine(g, a, mid, frac, depth - 1, out);
+    refine(g, mid, b, frac, depth - 1, out);
+}
+
+/// Maximum sensitivity and its frequency (`None`: the ω → ∞ limit).
+pub fn max_sensitivity(plant: &Plant, c: &Controller) -> Result<(f64, Option<f64>)> {
+    let a = analyze(plant, c)?;
+    match a.ms {
+        Some(ms) => Ok((ms, a.w_ms)),
+        None => Err(Error::new("controller", a.verdict)),
+    }
+}
+
+/// Full frequency analysis (see the module docs).
+pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
+    let l = LoopTf::new(plant, c);
+    let mut out = Analysis {
+        stable: false,
+        verdict: String::new(),
+        rhp_closed_loop: None,
+        rhp_open_loop: 0,
+        ms: None,
+        w_ms: None,
+        ms_at_infinity: false,
+        l_inf: 0.0,
+        gm: None,
+        w_pc: None,
+        gm_lower: None,
+        w_pc_lower: None,
+        pm: None,
+        w_gc: None,
+        delay_margin: None,
+        nyquist: vec![],
+    };
+    if l.lr.num.is_zero() {
+        // no feedback at all: the closed loop is the open-loop plant
+        let unstable = plant.tf.den.roots().iter().any(|z| z.re >= 0.0);
+        out.stable = !unstable;
+        out.verdict = if unstable {
+            "unstable: no feedback (Cy = 0) and the plant has poles in the closed right half-plane".into()
+        } else {
+            "stable (no feedback)".into()
+        };
+        out.ms = Some(1.0);
+        out.l_inf = 0.0;
+        return Ok(out);
+    }
+    if !l.lr.is_proper() {
+        out.l_inf = f64::INFINITY;
+        out.verdict = "ill-posed: |L(j∞)| = ∞ (ideal derivative on a biproper plant); add a derivative filter (N)".into();
+        return Ok(out);
+    }
+    let l_inf_c = l.lr.high_frequency_gain().unwrap_or(0.0);
+    out.l_inf = l_inf_c.abs();
+    let neutral = l.delay > 0.0 && out.l_inf > 0.0;
+    let (flo, fhi) = char_freqs(&l);
+    let w_lo = flo * 1e-4;
+    let w_hi = fhi * 1e5;
+    let pole_freqs: Vec<f64> = l
+        .lr
+        .den
+        .roots()
+        .iter()
+        .chain(l.lr.num.roots().iter())
+        .map(|z| z.norm())
+        .filter(|x| *x > 0.0 && x.is_finite())
+        .collect();
+    let tail = Tail::new(&l, w_lo, w_hi, out.l_inf, &pole_freqs);
+
+    // ---- Ms, GM, PM sweep on the imaginary axis ----
+    let g = |w: f64| l.at(w);
+    let s_mag = |w: f64| 1.0 / (1.0 + g(w)).norm();
+    // lower bounds from the limits
+    let lim_inf = if l.delay > 0.0 {
+        if out.l_inf < 1.0 {
+            1.0 / (1.0 - out.l_inf)
+        } else {
+            f64::INFINITY
+        }
+    } else {
+        1.0 / (1.0 + l_inf_c).abs()
+    };
+    let lim_zero = {
+        let l0 = l.lr.num.coef(0) / l.lr.den.coef(0);
+        if l0.is_finite() {
+            1.0 / (1.0 + l0).abs()
+        } else {
+            0.0
+        }
+    };
+    if neutral && out.l_inf >= 1.0 {
+        out.verdict = format!(
+            "neutral-unstable: |L(j∞)| = {:.4} ≥ 1 — the derivative's high-frequency gain times the \
+             plant's puts infinitely many closed-loop roots in the right half-plane; reduce the \
+             derivative gain or add a derivative filter (N)",
+            out.l_inf
+        );
+        out.ms_at_infinity = true;
+        let n = 600;
+        let top = fhi * 30.0;
+        out.nyquist = (0..=n)
+            .map(|i| {
+                let w = flo * 1e-2 * (top / (flo * 1e-2)).powf(i as f64 / n as f64);
+                let z = g(w);
+                [w, z.re, z.im]
+            })
+            .filter(|p| p[1].is_finite() && p[2].is_finite())
+            .collect();
+        return Ok(out);
+    }
+    let per_decade = 40.0;
+    let mut samples: Vec<(f64, C64)> = vec![(w_lo, g(w_lo))];
+    let mut best = (lim_zero, None::<f64>);
+    let mut w = w_lo;
+    let step = 10f64.powf(1.0 / per_decade);
+    let max_points = 400_000;
+    let mut truncated = false;
+    // In the rotation region of a delayed biproper loop, |S| peaks once per period where
+    // L_rat e^{−jωθ} aligns with −1; there the sweep stops and the tail is handled below.
+    let w_rot = if neutral {
+        let period = 2.0 * std::f64::consts::PI / l.delay;
+        tail.rotation_start(l.delay) + 3.0 * period
+    } else {
+        f64::INFINITY
+    };
+    let mut in_rotation_tail = false;
+    loop {
+        let w2 = w * step;
+        let a = *samples.last().unwrap_or(&(w, g(w)));
+        refine(&g, a, (w2, g(w2)), 0.1, 24, &mut samples);
+        w = w2;
+        // stop criteria
+        let t = tail.at(w);
+        let found_ms = samples.iter().fold(best.0, |m, (_, z)| m.max(1.0 / (1.0 + z).norm()));
+        let ms_done = t < 1.0 && 1.0 / (1.0 - t) <= found_ms.max(lim_inf) * (1.0 + 1e-7);
+        let no_more_crossovers = t < 1.0;
+        let gm_done = t <= out.l_inf * (1.0 + 1e-7) + 1e-12 || t < 0.2;
+        if (ms_done && no_more_crossovers && gm_done) || w > w_hi {
+            break;
+        }
+        if w >= w_rot && no_more_crossovers {
+            in_rotation_tail = true;
+            break;
+        }
+        if samples.len() > max_points {
+            truncated = true;
+            break;
+        }
+    }
+    let mut tail_samples: Vec<(f64, C64)> = vec![];
+    if in_rotation_tail {
+        if let Some(ws) = tail.argmax_from(w) {
+            // sample ±1.5 periods around the largest |L_rat| beyond the sweep, 64 per period
+            let period = 2.0 * std::f64::consts::PI / l.delay;
+            let a = (ws - 1.5 * period).max(w);
+            let n = 192;
+            for i in 0..=n {
+                let x = a + 3.0 * period * i as f64 / n as f64;
+                tail_samples.push((x, g(x)));
+            }
+        }
+    }
+    // Ms: local maxima refined (sweep samples, then the rotation-tail window)
+    for seq in [&samples, &tail_samples] {
+    let samples = seq;
+    let mags: Vec<f64> = samples.iter().map(|(_, z)| 1.0 / (1.0 + z).norm()).collect();
+    let mut cands: Vec<usize> = (1..mags.len().saturating_sub(1))
+        .filter(|&i| mags[i] >= mags[i - 1] && mags[i] >= mags[i + 1])
+        .collect();
+    cands.sort_by(|&a, &b| mags[b].partial_cmp(&mags[a]).unwrap_or(std::cmp::Ordering::Equal));
+    cands.truncate(8);
+    for &i in &cands {
+        let (x, v) = golden_max(s_mag, samples[i - 1].0, samples[i + 1].0);
+        if v > best.0 {
+            best = (v, Some(x));
+        }
+    }
+    if let Some(i) = (0..mags.len()).max_by(|&a, &b| mags[a].partial_cmp(&mags[b]).unwrap_or(std::cmp::Ordering::Equal)) {
+        if mags[i] > best.0 {
+            best = (mags[i], Some(samples[i].0));
+        }
+    }
+    }
+    if lim_inf >= best.0 {
+        best = (lim_inf, None);
+        out.ms_at_infinity = true;
+    }
+    out.ms = lim_inf.is_finite().then_some(best.0).or(if l.delay == 0.0 { Some(best.0) } else { None });
+    out.w_ms = best.1;
+
+    // crossings
+    let mut gms: Vec<(f64, f64)> = vec![]; // (margin, ω)
+    let mut pms: Vec<(f64, f64)> = vec![]; // (pm deg, ω)
+    for win in samples.windows(2).chain(tail_samples.windows(2)) {
+        let ((w1, z1), (w2, z2)) = (win[0], win[1]);
+        if (z1.im < 0.0) != (z2.im < 0.0) && (z1.re < 0.0 || z2.re < 0.0) {
+            let wc = bisect(|x| g(x).im, w1, w2);
+            let z = g(wc);
+            if z.re < 0.0 {
+                gms.push((1.0 / z.norm(), wc));
+            }
+        }
+        if (z1.norm() < 1.0) != (z2.norm() < 1.0) {
+            let wc = bisect(|x| g(x).norm() - 1.0, w1, w2);
+            let z = g(wc);
+            let mut pm = z.arg().to_degrees() + 180.0;
+            if pm > 180.0 {
+                pm -= 360.0;
+            }
+            pms.push((pm, wc));
+        }
+    }
+    if neutral && out.l_inf > 0.0 {
+        // crossings continue forever with |L| → |L∞|: the limit margin
+        gms.push((1.0 / tail.at(w).max(out.l_inf), f64::INFINITY));
+    }
+    let up = gms.iter().filter(|(m, _)| *m > 1.0).fold(None, |acc: Option<(f64, f64)>, &x| match acc {
+        Some(a) if a.0 <= x.0 => Some(a),
+        _ => Some(x),
+    });
+    let lowm = gms.iter().filter(|(m, _)| *m < 1.0).fold(None, |acc: Option<(f64, f64)>, &x| match acc {
+        Some(a) if a.0 >= x.0 => Some(a),
+        _ => Some(x),
+    });
+    out.gm = up.map(|x| x.0);
+    out.w_pc = up.and_then(|x| x.1.is_finite().then_some(x.1));
+    out.gm_lower = lowm.map(|x| x.0);
+    out.w_pc_lower = lowm.and_then(|x| x.1.is_finite().then_some(x.1));
+    if let Some(&(pm, wc)) = pms.iter().min_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal)) {
+        out.pm = Some(pm);
+        out.w_gc = Some(wc);
+    }
+    let dm = pms
+        .iter()
+        .map(|(pm, wc)| {
+            let p = if *pm < 0.0 { pm + 360.0 } else { *pm };
+            p.to_radians() / wc
+        })
+        .fold(f64::INFINITY, f64::min);
+    out.delay_margin = dm.is_finite().then_some(dm);
+    // decimated Nyquist samples
+    let stride = (samples.len() / 1500).max(1);
+    out.nyquist = samples
+        .iter()
+        .step_by(stride)
+        .filter(|(_, z)| z.re.is_finite() && z.im.is_finite())
+        .map(|(w, z)| [*w, z.re, z.im])
+        .collect();
+
+    // ---- stability ----
+    let (rhp_ol, count) = nyquist_count(&l, w_lo, w_hi, &tail);
+    out.rhp_open_loop = rhp_ol;
+    // set-point path: poles of Cr not shared with Cy
+    let cd = common_denominator(&c.cr.den, &c.cy.den);
+    let extra = cd.div_rem(&c.cy.den).map(|(q, _)| q).unwrap_or_else(|_| Poly::constant(1.0));
+    let cr_unstable = extra.roots().iter().any(|z| z.re >= -1e-12);
+    match count {
+        Err(msg) => {
+            out.verdict = msg;
+        }
+        Ok(z) => {
+            out.rhp_closed_loop = Some(z);
+            if z > 0 {
+                out.verdict = format!(
+                    "unstable: {z} closed-loop root(s) in the right half-plane (open loop has {rhp_ol} unstable pole(s))"
+                );
+            } else if cr_unstable {
+                out.verdict = "unstable: the set-point path Cr has an unstable or integrating pole not shared with Cy (internally unstable)".into();
+            } else {
+                out.stable = true;
+                out.verdict = if neutral {
+                    format!("stable (neutral loop: |L(j∞)| = {:.4} < 1)", out.l_inf)
+                } else {
+                    "stable".into()
+                };
+            }
+        }
+    }
+    if truncated && out.stable {
+        out.verdict.push_str(" (frequency sweep truncated)");
+    }
+    Ok(out)
+}
+
+/// Number of open-loop RHP poles and of closed-loop RHP roots (Nyquist on the δ-shifted line).
+fn nyquist_count(l: &LoopTf, w_lo: f64, w_hi: f64, tail: &Tail) -> (usize, std::result::Result<usize, String>) {
+    let delta = w_lo * 1e-4;
+    let rhp = l.lr.den.roots().iter().filter(|z| z.re > delta).count();
+    // closed-loop root at the origin (cancelled integrator): marginal
+    let q0 = l.lr.den.coef(0) + l.lr.num.coef(0);
+    let scale = l.lr.den.max_abs().max(l.lr.num.max_abs());
+    if q0.abs() <= 1e-14 * scale {
+        return (rhp, Err("unstable: closed-loop pole at s = 0 (an integrator cancelled by a zero)".into()));
+    }
+    let f = |w: f64| {
+        let s = C64::new(delta, w);
+        l.rat(s) * (-(s * l.delay)).exp()
+    };
+    // arg tracking of 1 + L from ω = 0 to beyond the last |L| ≥ 1
+    let mut pts: Vec<(f64, C64)> = vec![(0.0, f(0.0))];
+    let start = delta * 1e-3;
+    let mut w = start;
+    let step = 10f64.powf(1.0 / 40.0);
+    refine_lin(&f, pts[0], (w, f(w)), &mut pts);
+    loop {
+        let w2 = w * step;
+        let a = *pts.last().unwrap_or(&(w, f(w)));
+        refine(&f, a, (w2, f(w2)), 0.2, 30, &mut pts);
+        w = w2;
+        if tail.at(w) * (-delta * l.delay).exp() < 0.999 || w > w_hi || pts.len() > 400_000 {
+            break;
+        }
+    }
+    // Φ: continuous change of arg(1 + L) from ω = 0 to ω_N (the conjugate half mirrors it);
+    // beyond ω_N and on the large arc |L| < 1, so 1 + L stays in Re > 0 and that part adds
+    // Arg(1 + L(−jω_N)) − Arg(1 + L(jω_N)) = −2·Arg(1 + L(jω_N)). The contour is clockwise, so
+    // Z = P − (total change)/2π.
+    let mut phase = 0.0;
+    let mut prev = (1.0 + pts[0].1).arg();
+    for (_, z) in pts.iter().skip(1) {
+        let a = (1.0 + z).arg();
+        let mut d = a - prev;
+        while d > std::f64::consts::PI {
+            d -= 2.0 * std::f64::consts::PI;
+        }
+        while d < -std::f64::consts::PI {
+            d += 2.0 * std::f64::consts::PI;
+        }
+        phase += d;
+        prev = a;
+    }
+    let last = (1.0 + pts.last().map(|p| p.1).unwrap_or(C64::new(0.0, 0.0))).arg();
+    let total = 2.0 * phase - 2.0 * last;
+    let wind = total / (2.0 * std::f64::consts::PI);
+    let wr = wind.round();
+    if (wind - wr).abs() > 0.2 {
+        return (rhp, Err(format!("stability undetermined: winding number {wind:.3} is not near an integer")));
+    }
+    let z = rhp as f64 - wr;
+    if z < -0.5 {
+        return (rhp, Err(format!("stability undetermined: inconsistent count {z}")));
+    }
+    (rhp, Ok(z.round() as usize))
+}
+
+fn refine_lin(g: &impl Fn(f64) -> C64, a: (f64, C64), b: (f64, C64), out: &mut Vec<(f64, C64)>) {
+    // linear subdivision of [0, b] (log subdivision cannot start at 0)
+    let n = 64;
+    let mut prev = a;
+    for i in 1..=n {
+        let w = b.0 * i as f64 / n as f64;
+        let p = (w, g(w));
+        refine(g, prev, p, 0.2, 20, out);
+        prev = p;
+    }
+}
+
+/// Solves for the design parameter x in [lo, hi] giving `Ms = target` (bisection on log x after a
+/// bracketing scan). `design(x)` returns the plant and controller for x. Errors name
+/// `params.target_ms`.
+pub fn solve_for_ms(
+    target: f64,
+    lo: f64,
+    hi: f64,
+    design: impl Fn(f64) -> Result<(Plant, Controller)>,
+) -> Result<f64> {
+    if !(target.is_finite() && target > 1.0) {
+        return Err(Error::new("params.target_ms", "must be a finite number > 1"));
+    }
+    if !(lo > 0.0 && hi > lo && hi.is_finite()) {
+        return Err(Error::new("params.target_ms", "internal: bad search interval"));
+    }
+    let ms_of = |x: f64| -> Option<f64> {
+        let (p, c) = design(x).ok()?;
+        let a = analyze(&p, &c).ok()?;
+        if a.stable {
+            a.ms
+        } else {
+            Some(f64::INFINITY)
+        }
+    };
+    let n = 48;
+    let xs: Vec<f64> = (0..=n).map(|i| lo * (hi / lo).powf(i as f64 / n as f64)).collect();
+    let vals: Vec<Option<f64>> = xs.iter().map(|&x| ms_of(x)).collect();
+    let mut range = (f64::INFINITY, 0.0f64);
+    for v in vals.iter().flatten() {
+        if v.is_finite() {
+            range = (range.0.min(*v), range.1.max(*v));
+        }
+    }
+    for i in 0..n {
+        if let (Some(a), Some(b)) = (vals[i], vals[i + 1]) {
+            if (a - target) * (b - target) <= 0.0 && (a.is_finite() || b.is_finite()) {
+                let (mut x0, mut x1) = (xs[i], xs[i + 1]);
+                let mut f0 = a - target;
+                for _ in 0..100 {
+                    let xm = (x0 * x1).sqrt();
+                    let fm = ms_of(xm).map(|v| v - target).unwrap_or(f64::INFINITY);
+                    if (fm <= 0.0) == (f0 <= 0.0) {
+                        x0 = xm;
+                        f0 = fm;
+                    } else {
+                        x1 = xm;
+                    }
+                    if x1 - x0 <= 1e-12 * x1 {
+                        break;
+                    }
+                }
+                return Ok((x0 * x1).sqrt());
+            }
+        }
+    }
+    Err(Error::new(
+        "params.target_ms",
+        format!(
+            "Ms = {target} is not reachable for the parameter in [{lo}, {hi}] (stable designs span Ms {:.4}..{:.4})",
+            range.0, range.1
+        ),
+    ))
+}

@@ -1,0 +1,62 @@
+//! The one boundary module: every `#[wasm_bindgen]` export lives here. Each converts the JS
+//! argument to a `serde_json::Value`, calls [`crate::api`], and turns a [`crate::Error`] into a
+//! JS `Error` whose message starts with the field path.
+
+use crate::api;
+use crate::error::Error;
+use serde::Serialize;
+use serde_json::Value;
+use wasm_bindgen::prelude::*;
+
+fn to_js(v: &Value) -> Result<JsValue, JsError> {
+    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .map_err(|e| JsError::new(&format!("output: {e}")))
+}
+
+fn from_js(v: JsValue) -> Result<Value, JsError> {
+    if v.is_undefined() || v.is_null() {
+        return Err(JsError::new("input: must be an object"));
+    }
+    serde_wasm_bindgen::from_value::<Value>(v)
+        .map_err(|e| JsError::new(&format!("input: cannot be read as plain data ({e})")))
+}
+
+fn err(e: Error) -> JsError {
+    JsError::new(&e.to_string())
+}
+
+fn call(input: JsValue, f: fn(&Value) -> crate::Result<Value>) -> Result<JsValue, JsError> {
+    let v = from_js(input)?;
+    let out = f(&v).map_err(err)?;
+    to_js(&out)
+}
+
+/// `methods()`: the implemented tuning rules.
+#[wasm_bindgen]
+pub fn methods() -> Result<JsValue, JsError> {
+    to_js(&api::methods())
+}
+
+/// `presets()`: every paper example and comparison setting.
+#[wasm_bindgen]
+pub fn presets() -> Result<JsValue, JsError> {
+    to_js(&api::presets())
+}
+
+/// `tune({method, plant, params})`.
+#[wasm_bindgen]
+pub fn tune(input: JsValue) -> Result<JsValue, JsError> {
+    call(input, api::tune)
+}
+
+/// `simulate({plant, controller, scenario})`.
+#[wasm_bindgen]
+pub fn simulate(input: JsValue) -> Result<JsValue, JsError> {
+    call(input, api::simulate)
+}
+
+/// `analyze({plant, controller})`.
+#[wasm_bindgen]
+pub fn analyze(input: JsValue) -> Result<JsValue, JsError> {
+    call(input, api::analyze)
+}
