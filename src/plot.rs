@@ -502,7 +502,20 @@ impl Spec {
 
 /// Draws the plot described by `spec` on its canvas (wasm only; natively the spec is validated
 /// and an error says that drawing needs a browser canvas).
+///
+/// `spec` may also be the JSON text of the spec (a JS string): the page passes
+/// `JSON.stringify(spec)` because parsing text is much faster than converting a JS object with
+/// long arrays element by element across the wasm boundary.
 pub fn draw(spec: &Value) -> Result<()> {
+    let parsed;
+    let spec = match spec {
+        Value::String(text) => {
+            parsed = serde_json::from_str::<Value>(text)
+                .map_err(|e| err("spec", format!("is not valid JSON ({e})")))?;
+            &parsed
+        }
+        v => v,
+    };
     let s = Spec::from_json(spec)?;
     draw_spec(&s)
 }
@@ -816,15 +829,25 @@ pub fn render<DB: DrawingBackend>(s: &Spec, root: &DrawingArea<DB, Shift>) -> Re
     };
 
     // Layout.
-    let top = px(8.0)
-        + if s.title.is_empty() {
-            0
-        } else {
-            (font * 1.5).round() as i32
-        };
     let left = px(58.0);
-    let bottom = px(44.0);
     let right = px(12.0);
+    let legend = if s.legend {
+        legend_entries(s)
+    } else {
+        Vec::new()
+    };
+    let line_h = (small * 1.4).round() as i32;
+    let sample = px(22.0);
+    let (legend_pos, rows) =
+        legend_layout(&legend, (w as i32 - left - right).max(10), sample, small, k);
+    let title_h = if s.title.is_empty() {
+        0
+    } else {
+        (font * 1.5).round() as i32
+    };
+    let legend_top = px(6.0) + title_h;
+    let top = legend_top + line_h * rows + px(6.0);
+    let bottom = px(44.0);
     let pw = (w as i32 - left - right).max(10);
     let ph = (h as i32 - top - bottom).max(10);
     // Equal aspect for Nyquist: widen the shorter range.
@@ -969,81 +992,84 @@ pub fn render<DB: DrawingBackend>(s: &Spec, root: &DrawingArea<DB, Shift>) -> Re
         }
     }
 
-    // Legend (top right, inside the plotting box). Text width is estimated from the number
-    // of characters (no text measurement, see the module documentation).
-    if s.legend {
-        let mut entries: Vec<(String, Rgba, Dash, f64)> = s
-            .series
-            .iter()
-            .filter(|x| !x.label.is_empty())
-            .map(|x| {
-                (
-                    x.label.clone(),
-                    if x.faint {
-                        Rgba {
-                            alpha: x.color.alpha * 0.45,
-                            ..x.color
-                        }
-                    } else {
-                        x.color
-                    },
-                    x.dash,
-                    x.width,
-                )
-            })
-            .collect();
-        if let Some(c) = &s.circle {
-            if !c.label.is_empty() {
-                entries.push((c.label.clone(), c.color, Dash::Dash, 1.5));
-            }
+    // Legend: a band between the title and the plotting box, entries flowing left to right
+    // (never covers the curves). Text width is estimated from the number of characters (no
+    // text measurement, see the module documentation).
+    for (i, (label, color, dash, width)) in legend.iter().enumerate() {
+        let Some(&(lx, row)) = legend_pos.get(i) else {
+            break;
+        };
+        let cy = legend_top + line_h * row + line_h / 2;
+        let a = (left + lx, cy);
+        let b = (left + lx + sample, cy);
+        let st = color.style().stroke_width(px(*width).max(1) as u32);
+        let segs = match dash {
+            Dash::Solid => vec![vec![a, b]],
+            Dash::Dash => dashes(&[a, b], 6.0 * k, 4.0 * k),
+            Dash::Dot => dashes(&[a, b], 2.0 * k, 3.0 * k),
+        };
+        for seg in segs {
+            root.draw(&PathElement::new(seg, st)).map_err(derr)?;
         }
-        if !entries.is_empty() {
-            let line_h = (small * 1.35).round() as i32;
-            let sample = px(22.0);
-            let maxch = entries
-                .iter()
-                .map(|e| e.0.chars().count())
-                .max()
-                .unwrap_or(0) as f64;
-            let bw = sample + px(12.0) + (maxch * small * 0.56).round() as i32;
-            let bh = line_h * entries.len() as i32 + px(6.0);
-            let (ux, uy) = chart.backend_coord(&(xr.1, yr.1));
-            let x0 = ux - bw - px(4.0);
-            let y0 = uy + px(4.0);
-            root.draw(&Rectangle::new(
-                [(x0, y0), (x0 + bw, y0 + bh)],
-                RGBAColor(255, 255, 255, 0.85).filled(),
-            ))
+        let ts = ("sans-serif", small)
+            .into_font()
+            .color(&fg)
+            .pos(Pos::new(HPos::Left, VPos::Center));
+        root.draw_text(label, &ts, (b.0 + px(4.0), cy))
             .map_err(derr)?;
-            root.draw(&Rectangle::new(
-                [(x0, y0), (x0 + bw, y0 + bh)],
-                RGBAColor(0, 0, 0, 0.25).stroke_width(1),
-            ))
-            .map_err(derr)?;
-            for (i, (label, color, dash, width)) in entries.iter().enumerate() {
-                let cy = y0 + px(3.0) + line_h * i as i32 + line_h / 2;
-                let a = (x0 + px(5.0), cy);
-                let b = (x0 + px(5.0) + sample, cy);
-                let st = color.style().stroke_width(px(*width).max(1) as u32);
-                let segs = match dash {
-                    Dash::Solid => vec![vec![a, b]],
-                    Dash::Dash => dashes(&[a, b], 6.0 * k, 4.0 * k),
-                    Dash::Dot => dashes(&[a, b], 2.0 * k, 3.0 * k),
-                };
-                for seg in segs {
-                    root.draw(&PathElement::new(seg, st)).map_err(derr)?;
-                }
-                let ts = ("sans-serif", small)
-                    .into_font()
-                    .color(&fg)
-                    .pos(Pos::new(HPos::Left, VPos::Center));
-                root.draw_text(label, &ts, (b.0 + px(5.0), cy))
-                    .map_err(derr)?;
-            }
-        }
     }
     root.present().map_err(derr)?;
     Ok(())
+}
+
+/// The legend entries: labelled series, then the circle.
+fn legend_entries(s: &Spec) -> Vec<(String, Rgba, Dash, f64)> {
+    let mut entries: Vec<(String, Rgba, Dash, f64)> = s
+        .series
+        .iter()
+        .filter(|x| !x.label.is_empty())
+        .map(|x| {
+            let c = if x.faint {
+                Rgba {
+                    alpha: x.color.alpha * 0.45,
+                    ..x.color
+                }
+            } else {
+                x.color
+            };
+            (x.label.clone(), c, x.dash, x.width)
+        })
+        .collect();
+    if let Some(c) = &s.circle {
+        if !c.label.is_empty() {
+            entries.push((c.label.clone(), c.color, Dash::Dash, 1.5));
+        }
+    }
+    entries
+}
+
+/// Flows legend entries into rows of width `avail`: (x offset, row) per entry, and the row count.
+fn legend_layout(
+    entries: &[(String, Rgba, Dash, f64)],
+    avail: i32,
+    sample: i32,
+    small: f64,
+    k: f64,
+) -> (Vec<(i32, i32)>, i32) {
+    let mut pos = Vec::with_capacity(entries.len());
+    let (mut x, mut row) = (0i32, 0i32);
+    for e in entries {
+        let tw = (e.0.chars().count() as f64 * small * 0.56).round() as i32;
+        let ew = sample + (4.0 * k).round() as i32 + tw + (14.0 * k).round() as i32;
+        if x > 0 && x + ew > avail {
+            x = 0;
+            row += 1;
+        }
+        pos.push((x, row));
+        x += ew;
+    }
+    let rows = if entries.is_empty() { 0 } else { row + 1 };
+    (pos, rows)
 }
 
 fn draw_series<DB: DrawingBackend, F: Fn((f64, f64)) -> (i32, i32)>(
@@ -1328,5 +1354,10 @@ mod tests {
     fn draw_natively_says_it_needs_a_canvas() {
         let e = draw(&json!({"canvas": "c"})).expect_err("no canvas natively");
         assert_eq!(e.path, "spec.canvas");
+        // The JSON-text form is validated the same way.
+        let e = draw(&json!("{\"canvas\": \"c\", \"kind\": 3}")).expect_err("bad kind");
+        assert_eq!(e.path, "spec.kind");
+        let e = draw(&json!("{not json")).expect_err("bad text");
+        assert_eq!(e.path, "spec");
     }
 }
