@@ -369,17 +369,28 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
         f64::INFINITY
     };
     let mut in_rotation_tail = false;
+    let mut found_ms = best.0;
+    // smallest |1/L| seen at a sign change of Im L with Re L < 0 (approximate, refined below)
+    let mut gm_found = f64::INFINITY;
+    let mut seen = 1;
     loop {
         let w2 = w * step;
         let a = *samples.last().unwrap_or(&(w, g(w)));
         refine(&g, a, (w2, g(w2)), 0.1, 24, &mut samples);
         w = w2;
-        // stop criteria
+        for i in seen..samples.len() {
+            let (z0, z1) = (samples[i - 1].1, samples[i].1);
+            found_ms = found_ms.max(1.0 / (1.0 + z1).norm());
+            if (z0.im < 0.0) != (z1.im < 0.0) && (z0.re < 0.0 || z1.re < 0.0) {
+                gm_found = gm_found.min(1.0 / z0.norm().max(z1.norm()));
+            }
+        }
+        seen = samples.len();
+        // stop criteria: nothing beyond ω can raise Ms, cross |L| = 1, or lower the GM
         let t = tail.at(w);
-        let found_ms = samples.iter().fold(best.0, |m, (_, z)| m.max(1.0 / (1.0 + z).norm()));
         let ms_done = t < 1.0 && 1.0 / (1.0 - t) <= found_ms.max(lim_inf) * (1.0 + 1e-7);
         let no_more_crossovers = t < 1.0;
-        let gm_done = t <= out.l_inf * (1.0 + 1e-7) + 1e-12 || t < 0.2;
+        let gm_done = t * gm_found < 0.999 || t <= out.l_inf * (1.0 + 1e-7) + 1e-12 || t < 1e-4;
         if (ms_done && no_more_crossovers && gm_done) || w > w_hi {
             break;
         }
