@@ -1,5 +1,5 @@
 // pidlab page: controls -> wasm (tune, simulate, analyze) -> plots (drawn in Rust) and readouts.
-// No user or URL value ever reaches innerHTML or eval: the DOM is built with createElement and
+// No user or URL value is ever parsed as HTML or run as code: the DOM is built with createElement and
 // textContent only. Every input schedules one render per animation frame.
 import * as wasm from './pkg/pidlab.js';
 import * as S from './state.js';
@@ -630,6 +630,14 @@ function showMetrics(r) {
   for (const s of table.querySelectorAll('.swatch')) s.style.backgroundColor = s.getAttribute('data-color');
 }
 
+// Display symbols of the named structure parameters (the papers' notation); unknown names
+// are shown as given.
+const SYMBOLS = {
+  kc: 'K_c', ti: 'τ_I', td: 'τ_D', kp: 'K_P', ki: 'K_I', kd: 'K_D', n: 'N', b: 'b', c: 'c',
+  a1: 'a₁', a2: 'a₂', b1: 'b₁', b2: 'b₂', p: 'p', gamma: 'γ', epsilon: 'ε', lambda: 'λ', zeta: 'ζ',
+  xi: 'ξ', alpha: 'α', beta: 'β', phi: 'φ', theta_design: 'θ (design)', tf: 'T_f', tau_f: 'τ_f',
+};
+
 function tfText(t) {
   return '(' + S.polyText(t.num) + ') / (' + S.polyText(t.den) + ')';
 }
@@ -656,7 +664,7 @@ function showController(r) {
       text = JSON.stringify(v, (kk, vv) => (typeof vv === 'number' ? Number(vv.toPrecision(5)) : vv));
       if (text.length > 300) text = text.slice(0, 300) + '…';
     }
-    dl.append(el('dt', { text: k }), el('dd', { text }));
+    dl.append(el('dt', { text: SYMBOLS[k] || k, title: k }), el('dd', { text }));
   };
   for (const [k, v] of Object.entries(r.ctl)) if (k !== 'cr' && k !== 'cy' && k !== 'title') show(named, k, v);
   if (r.tune && r.tune.details) {

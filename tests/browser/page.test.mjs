@@ -4,7 +4,7 @@
 // Chromium: /usr/bin/chromium (override with PIDLAB_CHROMIUM).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdtempSync, rmSync, existsSync, mkdirSync } from 'node:fs';
+import { mkdtempSync, rmSync, existsSync, mkdirSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve, dirname } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -219,6 +219,92 @@ test('an unstable setting shows the banner', async () => {
   assert.ok(banners.some((b) => /unstable/i.test(b)), 'banner: ' + banners.join(' | '));
   assert.equal(await page.textContent('#ro-stable'), 'UNSTABLE');
   assert.deepEqual(log.errors, []);
+  await page.close();
+});
+
+test('robustness: the true-plant Ms is analyze on the perturbed plant; the nominal stays drawn', async () => {
+  const st = boilerPk(2.0);
+  st.pert = { k: 30, tau: 0, zero: 0, theta: 40 };
+  const { page, log } = await open(S.encodeHash(st));
+  assert.equal(await page.isVisible('#ro-true-box'), true);
+  const got = await page.evaluate((lam) => {
+    const w = window.__pidlab.wasm;
+    const p = window.__pidlab.state().plant;
+    const t = w.tune({ method: lam.id, plant: p, params: { ...lam.fixed, lambda: 2.0 } });
+    const truePlant = { ...p, k: p.k * 1.3, theta: p.theta * 1.4 };
+    const a = w.analyze({ plant: truePlant, controller: { cr: t.controller.cr, cy: t.controller.cy } });
+    return { ms: a.ms, value: document.getElementById('ro-ms-true').getAttribute('data-value') };
+  }, LAM);
+  assert.equal(got.value, String(got.ms));
+  const rows = await page.$$eval('#metrics tbody th', (t) => t.map((x) => x.textContent));
+  assert.deepEqual(rows, ['current, nominal plant', 'current, true plant']);
+  await assertPlotsDrawn(page, 'perturbed');
+  assert.deepEqual(log.errors, []);
+  await page.close();
+});
+
+test('embed mode shows the plots and only the chosen sliders', async () => {
+  const st = boilerPk(2.0);
+  st.show = ['mp-lambda', 'fp-theta'];
+  const { page, log } = await open(S.encodeHash(st, true), { width: 640, height: 700 });
+  assert.equal(await page.isVisible('#mp-lambda'), true);
+  assert.equal(await page.isVisible('#fp-theta'), true);
+  assert.equal(await page.isVisible('#fp-k'), false);
+  assert.equal(await page.isVisible('#pt-k'), false);
+  assert.equal(await page.isVisible('header.top'), false);
+  assert.equal(await page.isVisible('#metrics'), false);
+  await assertPlotsDrawn(page, 'embed');
+  assert.deepEqual(log.errors, []);
+  await page.close();
+});
+
+test('CSV export of the responses and PNG export of a plot', async () => {
+  const { page } = await open(S.encodeHash(boilerPk(2.0)));
+  const [csv] = await Promise.all([page.waitForEvent('download'), page.click('#export-csv')]);
+  const text = readFileSync(await csv.path(), 'utf8').trim().split('\n');
+  assert.equal(text[0], 't,r,d,y,u');
+  const n = await page.evaluate(() => {
+    const st = window.__pidlab.state();
+    return Math.round(st.scenario.t_end / st.scenario.dt) + 1;
+  });
+  assert.equal(text.length, n + 1);
+  assert.ok(text.slice(1).every((l) => l.split(',').length === 5 && l.split(',').every((v) => Number.isFinite(Number(v)))));
+  const [png] = await Promise.all([page.waitForEvent('download'), page.click('button.png[data-canvas="plot-nyquist"]')]);
+  assert.equal(png.suggestedFilename(), 'plot-nyquist.png');
+  const head = readFileSync(await png.path()).subarray(0, 8);
+  assert.deepEqual([...head], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+  await page.close();
+});
+
+test('a custom num/den plant keeps the last controller and renders', async () => {
+  const { page, log } = await open(S.encodeHash(boilerPk(2.0)));
+  await setInput(page, '#family', 'custom', 'change');
+  assert.match(await page.$eval('#method', (m) => m.options[m.selectedIndex].textContent), /held/);
+  await page.fill('#custom-den', '2, 3, 1, 0');
+  await frames(page);
+  const st = await page.evaluate(() => window.__pidlab.state());
+  assert.deepEqual(st.plant.den, [2, 3, 1, 0]);
+  await assertPlotsDrawn(page, 'custom plant');
+  await page.fill('#custom-den', '2, x');
+  await frames(page);
+  assert.equal(await page.getAttribute('#custom-den', 'aria-invalid'), 'true');
+  assert.deepEqual(log.errors, []);
+  await page.close();
+});
+
+test('no URL or user text is interpreted as HTML', async () => {
+  for (const f of ['app.js', 'state.js']) {
+    const src = readFileSync(join(root, 'www', f), 'utf8');
+    assert.doesNotMatch(src, /innerHTML|outerHTML|insertAdjacentHTML|document\.write|\beval\(|new Function/, f);
+  }
+  const st = boilerPk(2.0);
+  st.method = '__literal';
+  st.literal = { cr: { num: [1], den: [1, 0] }, cy: { num: [1], den: [1, 0] }, title: '<img src=x onerror="window.__pwned=1">' };
+  st.pins = [{ label: '<b id=pwn>x</b>', plant: st.plant, controller: st.literal, scenario: st.scenario }];
+  const { page } = await open(S.encodeHash(st));
+  assert.equal(await page.evaluate(() => document.querySelectorAll('img, #pwn').length), 0);
+  assert.equal(await page.evaluate(() => window.__pwned), undefined);
+  assert.match(await page.textContent('#method'), /<img src=x/);
   await page.close();
 });
 
