@@ -29,7 +29,8 @@ let embed = false;
 let last = null; // last computed results
 let pinCache = []; // simulated pins (parallel to state.pins)
 let pending = false;
-const perf = { renders: 0, lastWorkMs: 0, works: [] };
+const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {} };
+const lap = (name, t0) => { perf.phases[name] = performance.now() - t0; return performance.now(); };
 
 // ---------------------------------------------------------------- wasm loading
 async function loadWasm() {
@@ -374,6 +375,7 @@ function methodParams() {
 
 function compute() {
   const r = { banners: [], ctl: null, tune: null, sim: null, simNom: null, an: null, anTrue: null, plant: state.plant, truePlant: null };
+  let t0 = performance.now();
   if (state.method && state.method !== '__literal') {
     try {
       r.tune = wasm.tune({ method: state.method, plant: state.plant, params: methodParams() });
@@ -386,6 +388,7 @@ function compute() {
   } else {
     r.banners.push({ kind: 'error', title: 'No controller', text: 'No tuning method applies to this plant. Choose a plant family, or load a paper preset.' });
   }
+  t0 = lap('tune', t0);
   if (!r.ctl) return r;
   const controller = { cr: r.ctl.cr, cy: r.ctl.cy };
   const perturbed = S.isPerturbed(state.pert);
@@ -398,6 +401,7 @@ function compute() {
   if (perturbed) {
     try { r.simNom = wasm.simulate({ plant: state.plant, controller, scenario: state.scenario }); } catch { r.simNom = null; }
   }
+  t0 = lap('simulate', t0);
   try {
     r.an = wasm.analyze({ plant: state.plant, controller });
   } catch (e) {
@@ -406,6 +410,7 @@ function compute() {
   if (perturbed) {
     try { r.anTrue = wasm.analyze({ plant: r.truePlant, controller }); } catch { r.anTrue = null; }
   }
+  lap('analyze', t0);
   const verdictBanner = (an, who) => {
     if (!an) return;
     const v = String(an.verdict || '');
@@ -432,7 +437,9 @@ function render() {
     last = r;
     showBanners(r.banners);
     showReadouts(r);
+    const t1 = performance.now();
     drawPlots(r);
+    lap('plots', t1);
     showMetrics(r);
     showController(r);
   } catch (e) {
@@ -472,11 +479,19 @@ function showReadouts(r) {
 
 const dpr = () => Math.max(1, Math.min(3, window.devicePixelRatio || 1));
 
+// CSS sizes of the canvases, kept by a ResizeObserver so a render never forces a layout.
+const cssSize = new Map();
+
 function sizeCanvas(c) {
-  const rect = c.getBoundingClientRect();
+  let sz = cssSize.get(c.id);
+  if (!sz) {
+    const rect = c.getBoundingClientRect();
+    sz = { width: rect.width, height: rect.height };
+    cssSize.set(c.id, sz);
+  }
   const k = dpr();
-  const w = Math.max(60, Math.round(rect.width * k));
-  const h = Math.max(60, Math.round(rect.height * k));
+  const w = Math.max(60, Math.round(sz.width * k));
+  const h = Math.max(60, Math.round(sz.height * k));
   if (c.width !== w) c.width = w;
   if (c.height !== h) c.height = h;
 }
@@ -522,8 +537,8 @@ function thin(x, y, buckets) {
 
 function plot(spec) {
   try {
-    const c = $(spec.canvas);
-    const buckets = Math.max(50, Math.round(c.getBoundingClientRect().width));
+    const sz = cssSize.get(spec.canvas);
+    const buckets = Math.max(50, Math.round(sz ? sz.width : 600));
     if (spec.kind === 'time') {
       for (const s of spec.series) { const t = thin(s.x, s.y, buckets); s.x = t.x; s.y = t.y; }
     }
@@ -845,7 +860,19 @@ async function main() {
       changed();
     }
   });
-  if (typeof ResizeObserver === 'function') new ResizeObserver(() => changed()).observe($('plots'));
+  if (typeof ResizeObserver === 'function') {
+    const ro = new ResizeObserver((entries) => {
+      let any = false;
+      for (const e of entries) {
+        const old = cssSize.get(e.target.id);
+        const sz = { width: e.contentRect.width, height: e.contentRect.height };
+        if (!old || old.width !== sz.width || old.height !== sz.height) any = true;
+        cssSize.set(e.target.id, sz);
+      }
+      if (any) changed();
+    });
+    for (const c of document.querySelectorAll('.plot canvas')) ro.observe(c);
+  }
   window.__pidlab = {
     wasm,
     state: () => structuredClone(state),

@@ -314,7 +314,7 @@ test('input-to-paint latency of the λ slider', async () => {
   const r = await page.evaluate(async (count) => {
     const x = document.getElementById('mp-lambda');
     const perf = window.__pidlab.perf;
-    const frame = [], painted = [], work = [];
+    const frame = [], painted = [], work = [], phases = {};
     for (let i = 0; i < count; i++) {
       const v = 1.5 + 2.5 * ((i * 37) % count) / count;
       const t0 = performance.now();
@@ -329,8 +329,9 @@ test('input-to-paint latency of the λ slider', async () => {
         ch.port2.postMessage(0);
       }));
       work.push(perf.lastWorkMs);
+      for (const [k, v] of Object.entries(perf.phases)) (phases[k] = phases[k] || []).push(v);
     }
-    return { frame, painted, work };
+    return { frame, painted, work, phases };
   }, n);
   const q = (a, p) => { const s = [...a].sort((u, v) => u - v); return s[Math.min(s.length - 1, Math.floor(p * (s.length - 1) + 0.5))]; };
   const line = (name, a) => `${name}: p50 ${q(a, 0.5).toFixed(2)} ms, p95 ${q(a, 0.95).toFixed(2)} ms`;
@@ -338,6 +339,7 @@ test('input-to-paint latency of the λ slider', async () => {
   console.log('  ' + line('work (re-tune + re-simulate + re-analyse + redraw 4 plots)', r.work));
   console.log('  ' + line('input event -> end of the frame that redraws', r.frame));
   console.log('  ' + line('input event -> first task after that frame (painted)', r.painted));
+  console.log('  of which ' + Object.entries(r.phases).map(([k, v]) => `${k} p50 ${q(v, 0.5).toFixed(2)} ms`).join(', '));
   assert.equal(r.work.length, n);
   await page.close();
 });
