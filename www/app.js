@@ -203,9 +203,22 @@ function buildMethod() {
   const hasTarget = names.includes('target_ms') || names.includes('lambda');
   tr.hidden = !hasTarget;
   if (!info) return;
-  // λ without a default: start from the target-Ms solution.
+  // λ without a default: start from the λ that gives Ms = 1.6 (solved once), then let the
+  // user move λ directly (re-solving on every frame would be slow).
   const lam = info.params.find((p) => p.name === 'lambda');
-  if (lam && (lam.default === null || lam.default === undefined) && state.params.lambda === undefined && state.target === null) state.target = 1.6;
+  if (lam && (lam.default === null || lam.default === undefined) && typeof state.params.lambda !== 'number' && state.target === null) {
+    try {
+      const fixed = {};
+      for (const p of info.params) if (typeof p.default === 'number' || typeof p.default === 'string') fixed[p.name] = p.default;
+      delete fixed.lambda;
+      delete fixed.target_ms;
+      const t = wasm.tune({ method: info.id, plant: state.plant, params: { ...fixed, ...state.params, target_ms: 1.6 } });
+      const l = t.details && t.details.lambda;
+      if (typeof l === 'number' && Number.isFinite(l)) state.params.lambda = Number(l.toPrecision(4));
+    } catch {
+      // fall back to the slider's midpoint below
+    }
+  }
   if (!hasTarget) state.target = null;
   $('target-on').checked = state.target !== null;
   $('target-slider').replaceChildren(slider({
@@ -290,6 +303,8 @@ function showPresetInfo() {
   $('preset-info').hidden = !p;
   $('preset-desc').textContent = p ? p.description + ' ' : '';
   $('preset-cite').textContent = p ? p.citation : '';
+  const prefix = p ? String(p.id).split('/').slice(0, -1).join('/') + '/' : null;
+  $('pin-example').hidden = !p || !PRESETS.some((x) => x.id !== p.id && prefix.length > 1 && String(x.id).startsWith(prefix));
 }
 
 function loadPreset(id) {
@@ -312,6 +327,30 @@ function loadPreset(id) {
   }
   state.preset = p.id;
   buildAll();
+  changed();
+}
+
+/** Pins every setting of the active preset's example (recreates the paper's comparison figure). */
+function pinExample() {
+  const cur = PRESETS.find((x) => x.id === state.preset);
+  if (!cur) return;
+  const prefix = String(cur.id).split('/').slice(0, -1).join('/') + '/';
+  const group = PRESETS.filter((p) => String(p.id).startsWith(prefix) && p.id !== cur.id);
+  for (const p of group.slice(0, 6)) {
+    const plant = S.cleanPlant(p.plant);
+    if (!plant) continue;
+    let controller = null;
+    try {
+      if (p.tune && p.tune.method) controller = wasm.tune({ method: p.tune.method, plant, params: p.tune.params || {} }).controller;
+      else if (p.controller) controller = p.controller;
+    } catch {
+      controller = null;
+    }
+    if (!controller) continue;
+    if (state.pins.length >= 6) state.pins.shift();
+    state.pins.push({ label: p.title, plant, controller: { cr: controller.cr, cy: controller.cy }, scenario: structuredClone(state.scenario) });
+  }
+  refreshPins();
   changed();
 }
 
@@ -839,6 +878,7 @@ async function main() {
     changed();
   });
   $('pin').addEventListener('click', pin);
+  $('pin-example').addEventListener('click', pinExample);
   $('pert-reset').addEventListener('click', () => { state.pert = { k: 0, tau: 0, zero: 0, theta: 0 }; buildPert(); changed(); });
   $('copy-link').addEventListener('click', () => share('link'));
   $('copy-embed').addEventListener('click', () => share('embed'));

@@ -78,6 +78,8 @@ export function cleanPlant(p) {
 function cleanScenario(s) {
   const d = structuredClone(DEFAULT_SCENARIO);
   if (!s || typeof s !== 'object') return d;
+  // Further numeric scenario options (e.g. settling_band) pass through unchanged.
+  for (const [k, v] of Object.entries(s).slice(0, 16)) if (/^[a-z_]{1,30}$/.test(k) && isNum(v)) d[k] = v;
   if (isNum(s.t_end)) d.t_end = s.t_end;
   if (isNum(s.dt)) d.dt = s.dt;
   for (const ev of ['setpoint', 'disturbance']) {

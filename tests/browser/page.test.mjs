@@ -177,7 +177,20 @@ test('every method and every preset renders all plots', async () => {
     if (banners.length) console.log(`  note: preset ${id}: ${banners.join(' | ')}`);
     assert.ok((await page.textContent('#preset-cite')).length > 0, `preset ${id} shows its citation`);
   }
-  console.log(`  ${methods.length} methods, ${presets.length} presets rendered`);
+  // A paper example with comparison settings: overlay them all (the paper's figure).
+  let overlaid = 0;
+  for (const id of presets) {
+    await setInput(page, '#preset', id, 'change');
+    if (!(await page.isVisible('#pin-example'))) continue;
+    await page.click('#pin-example');
+    await frames(page);
+    const pins = await page.$$eval('#pin-list li', (l) => l.length);
+    assert.ok(pins > 0, `preset ${id}: the example's other settings are pinned`);
+    await assertPlotsDrawn(page, `example of ${id} overlaid`);
+    overlaid++;
+    break;
+  }
+  console.log(`  ${methods.length} methods, ${presets.length} presets rendered; example overlay tried: ${overlaid}`);
   assert.deepEqual(log.errors, []);
   assert.deepEqual(log.blocked, []);
   await page.close();
