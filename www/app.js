@@ -493,7 +493,13 @@ function render() {
 }
 
 // ---------------------------------------------------------------- output
+let bannerKey = '';
 function showBanners(list) {
+  // Only touch the (assertive) live region when the message changes, so a screen reader
+  // announces a new problem once, not on every frame while a slider moves.
+  const key = list.map((b) => b.kind + b.title + b.text).join('|');
+  if (key === bannerKey) return;
+  bannerKey = key;
   const box = $('banners');
   box.replaceChildren(...list.map((b) => el('div', { class: 'banner ' + b.kind }, el('strong', { text: b.title + '. ' }), el('span', { text: b.text }))));
 }
@@ -513,6 +519,12 @@ function showReadouts(r) {
   setOut('ro-stable', an ? (an.stable ? 'stable' : 'UNSTABLE') : '–', an ? an.stable : null);
   $('ro-stable').classList.toggle('bad', !!an && !an.stable);
   $('ro-true-box').hidden = !r.anTrue;
+  // A short summary for screen readers, announced once the input has settled.
+  clearTimeout(announceTimer);
+  announceTimer = setTimeout(() => {
+    const parts = ['Ms ' + $('ro-ms').textContent, 'gain margin ' + $('ro-gm').textContent, 'phase margin ' + $('ro-pm').textContent, $('ro-stable').textContent];
+    $('announce').textContent = parts.join(', ');
+  }, 700);
   setOut('ro-ms-true', r.anTrue ? S.fmt(r.anTrue.ms) + (r.anTrue.stable ? '' : ' (unstable)') : '–', r.anTrue ? r.anTrue.ms : null);
 }
 
@@ -774,6 +786,7 @@ function pin() {
 
 // ---------------------------------------------------------------- share / export
 let hashTimer = 0;
+let announceTimer = 0;
 function saveHashSoon() {
   clearTimeout(hashTimer);
   hashTimer = setTimeout(() => {

@@ -130,6 +130,9 @@ test('loads from file:// with no console error and no network request', async ()
   for (const u of log.requests) assert.match(u, /^(file|data|blob):/);
   const ms = await page.textContent('#ro-ms');
   assert.notEqual(ms.trim(), '–');
+  // The readouts are announced (aria-live) once the input settles.
+  await page.waitForFunction(() => document.getElementById('announce').textContent.startsWith('Ms '), null, { timeout: 3000 });
+  assert.equal(await page.getAttribute('#announce', 'aria-live'), 'polite');
   await page.close();
 });
 
