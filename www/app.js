@@ -711,6 +711,13 @@ function tfText(t) {
 function showController(r) {
   const info = methodInfo(state.method);
   $('ctl-structure').textContent = info ? info.title + ' — ' + info.structure : state.method === '__literal' && state.literal ? 'Literal controller: ' + (state.literal.title || '') : '';
+  // What a printout needs to be read on its own: the plant, the method and its parameters.
+  const pl = state.plant;
+  const plantText = pl.family
+    ? S.FAMILIES[pl.family].formula + ' with ' + S.FAMILIES[pl.family].params.map((n) => n + ' = ' + S.fmt(pl[n])).join(', ')
+    : 'P(s) = (' + S.polyText(pl.num) + ') / (' + S.polyText(pl.den) + ') · e^(−' + S.fmt(pl.delay) + 's)';
+  const pert = S.isPerturbed(state.pert) ? '; true plant perturbed: ' + Object.entries(state.pert).filter(([, v]) => v !== 0).map(([k, v]) => k + ' ' + (v > 0 ? '+' : '') + v + ' %').join(', ') : '';
+  $('print-summary').textContent = 'Plant: ' + plantText + pert + '. Controller: ' + pinLabel() + '.';
   $('ctl-cite').textContent = info ? info.citation : (PRESETS.find((p) => p.id === state.preset) || {}).citation || '';
   const named = $('ctl-named');
   named.replaceChildren();
