@@ -178,6 +178,12 @@ function applicableMethods() {
   return fam ? METHODS.filter((m) => (m.families || []).includes(fam)) : [];
 }
 
+/** A parameter without a default: the value a paper preset uses with this method, if any. */
+function presetValue(method, name) {
+  const p = PRESETS.find((x) => x.tune && x.tune.method === method && x.tune.params && typeof x.tune.params[name] === 'number');
+  return p ? p.tune.params[name] : null;
+}
+
 function buildMethod() {
   const sel = $('method');
   sel.replaceChildren();
@@ -239,7 +245,7 @@ function buildMethod() {
     } else {
       const min = Number.isFinite(p.min) ? p.min : 0;
       const max = Number.isFinite(p.max) ? p.max : 10;
-      if (typeof v !== 'number') v = typeof p.default === 'number' ? p.default : Number(((min + max) / 2).toPrecision(3));
+      if (typeof v !== 'number') v = typeof p.default === 'number' ? p.default : presetValue(info.id, p.name) ?? Number(((min + max) / 2).toPrecision(3));
       if (p.name !== 'lambda' || state.target === null) state.params[p.name] = v;
       const row = slider({
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, min, max, value: v,
