@@ -16,6 +16,7 @@
 import { readFileSync, writeFileSync, mkdirSync, existsSync } from 'node:fs';
 import { createHash } from 'node:crypto';
 import { dirname, join, resolve, relative } from 'node:path';
+import { pathToFileURL } from 'node:url';
 
 const root = resolve(dirname(new URL(import.meta.url).pathname), '..');
 const www = resolve(process.argv[2] || join(root, 'www'));
@@ -79,6 +80,23 @@ function inlineModule(path) {
 }
 
 const html = read(join(www, 'index.html')).toString('utf8');
+
+// Smoke test: the wasm must instantiate with its glue and answer methods(). A module damaged by
+// an optimizer (Debian's wasm-opt 108 breaks wasm-bindgen 0.2.130's externref table:
+// "WebAssembly.Table.set(): Argument 1 is invalid") would otherwise ship a dead page.
+try {
+  const glue = await import(pathToFileURL(join(www, 'pkg', 'pidlab.js')).href);
+  glue.initSync({ module: readFileSync(join(www, 'pkg', 'pidlab_bg.wasm')) });
+  const m = glue.methods();
+  if (!m || !Array.isArray(m.methods)) throw new Error('methods() did not return { methods: [...] }');
+  for (const f of ['tune', 'simulate', 'analyze', 'presets', 'plot']) {
+    if (typeof glue[f] !== 'function') console.warn(`inline.mjs: warning: the wasm module exports no ${f}()`);
+  }
+} catch (e) {
+  console.error(`inline.mjs: www/pkg does not work: ${e && e.message ? e.message : e}`);
+  console.error('  (if wasm-opt ran on it, rebuild with: wasm-pack build --release --no-opt --target web --out-dir www/pkg)');
+  process.exit(3);
+}
 const css = read(join(www, 'style.css')).toString('utf8');
 const wasmBytes = read(join(www, 'pkg', 'pidlab_bg.wasm'));
 
