@@ -168,7 +168,7 @@ export function fmt(x, digits = 4) {
   if (x === 0) return '0';
   const a = Math.abs(x);
   let s = a >= 1e-3 && a < 1e6 ? Number(x.toPrecision(digits)).toString() : x.toExponential(digits - 1);
-  return s.replace('-', '−');
+  return s.replace(/-/g, '−');
 }
 
 /** A polynomial (descending powers of s) as text, e.g. "1.2 s² + 0.5 s + 3". */

@@ -56,6 +56,7 @@ test('numbers and polynomials are written the way the readouts show them', () =>
   assert.equal(S.fmt(null), '–');
   assert.equal(S.fmt(Infinity), '∞');
   assert.equal(S.fmt(1.5e-7), '1.500e−7');
+  assert.equal(S.fmt(-1.5e-7), '−1.500e−7');
   assert.equal(S.polyText([2, -1, 0.5]), '2 s² − s + 0.5');
   assert.equal(S.polyText([1, 0]), 's');
   assert.equal(S.polyText([0]), '0');
