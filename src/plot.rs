@@ -1325,6 +1325,34 @@ mod tests {
     }
 
     #[wasm_bindgen_test(unsupported = test)]
+    fn small_canvases_and_long_legends_do_not_panic() {
+        // Layout margins larger than the canvas, a legend that wraps to many rows, extreme
+        // ranges: rendering must return (Ok or an error), never panic.
+        let many: Vec<Value> = (0..40)
+            .map(|i| json!({"label": format!("a long legend entry number {i}"), "x": [0, 1], "y": [i, -i]}))
+            .collect();
+        for (w, h) in [
+            (40, 40),
+            (41, 300),
+            (300, 41),
+            (60, 60),
+            (360, 225),
+            (4000, 40),
+        ] {
+            for dpr in [0.5, 1.0, 4.0] {
+                let v = json!({"canvas": "c", "title": "A title", "xlabel": "t", "ylabel": "y",
+                               "dpr": dpr, "series": many,
+                               "circle": {"cx": -1, "cy": 0, "r": 0.5, "label": "Ms"}});
+                let _ = render_json(&v, w, h);
+                let v = json!({"canvas": "c", "kind": "nyquist", "dpr": dpr,
+                               "series": [{"x": [-1e300, 1e300, 0], "y": [1e300, -1e300, 0]}],
+                               "xrange": [-1e-300, 1e-300]});
+                let _ = render_json(&v, w, h);
+            }
+        }
+    }
+
+    #[wasm_bindgen_test(unsupported = test)]
     fn decimation_keeps_the_envelope() {
         let px: Vec<(i32, i32)> = (0..1000)
             .map(|i| (i / 100, if i % 2 == 0 { i % 37 } else { -(i % 41) }))
