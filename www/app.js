@@ -699,6 +699,13 @@ function showMetrics(r) {
   if (r.simNom) rows.push(row('current, nominal plant', C_CUR, r.simNom, r.an && r.an.ms));
   rows.push(row(r.simNom ? 'current, true plant' : 'current design', C_CUR, r.sim, (r.anTrue || r.an || {}).ms));
   table.tBodies[0].replaceChildren(...rows);
+  // Text equivalents of the plots for screen readers.
+  const m = r.sim && r.sim.metrics ? r.sim.metrics : {};
+  const sv = m.servo || {}, rg = m.regulatory || {};
+  $('plot-servo').setAttribute('aria-label', 'Set-point response of y to a step in r: overshoot ' + (typeof sv.overshoot === 'number' ? S.fmt(100 * sv.overshoot, 3) + ' %' : '–') + ', settling time ' + S.fmt(sv.settling_time) + ', IAE ' + S.fmt(sv.iae));
+  $('plot-load').setAttribute('aria-label', 'Load response of y to a step at the plant input: peak error ' + S.fmt(rg.peak_error) + ', settling time ' + S.fmt(rg.settling_time) + ', IAE ' + S.fmt(rg.iae));
+  $('plot-u').setAttribute('aria-label', 'Control signal u: total variation ' + S.fmt(sv.tv) + ' (servo), ' + S.fmt(rg.tv) + ' (load)');
+  $('plot-nyquist').setAttribute('aria-label', 'Nyquist plot of L(jω) with the circle of radius 1/Ms around −1; Ms ' + (r.an ? S.fmt(r.an.ms) : '–') + (r.an && r.an.stable === false ? ', closed loop unstable' : ''));
   for (const s of table.querySelectorAll('.swatch')) s.style.backgroundColor = s.getAttribute('data-color');
 }
 
