@@ -23,12 +23,17 @@ fn field<'a>(v: &'a Value, name: &str, path: &str) -> Result<&'a Value> {
             .get(name)
             .filter(|x| !x.is_null())
             .ok_or_else(|| Error::new(join(path, name), "is required")),
-        _ => Err(Error::new(path, "must be an object")),
+        _ => Err(Error::new(
+            if path.is_empty() { "input" } else { path },
+            "must be an object",
+        )),
     }
 }
 
 fn opt_field<'a>(v: &'a Value, name: &str) -> Option<&'a Value> {
-    v.as_object().and_then(|m| m.get(name)).filter(|x| !x.is_null())
+    v.as_object()
+        .and_then(|m| m.get(name))
+        .filter(|x| !x.is_null())
 }
 
 fn join(path: &str, name: &str) -> String {
@@ -42,14 +47,20 @@ fn join(path: &str, name: &str) -> String {
 fn number(v: &Value, path: &str) -> Result<f64> {
     match v.as_f64() {
         Some(x) if x.is_finite() => Ok(x),
-        _ => Err(Error::new(path, format!("must be a finite number (got {})", short(v)))),
+        _ => Err(Error::new(
+            path,
+            format!("must be a finite number (got {})", short(v)),
+        )),
     }
 }
 
 fn short(v: &Value) -> String {
     let s = v.to_string();
     if s.len() > 40 {
-        format!("{}…", &s[..s.char_indices().nth(40).map(|c| c.0).unwrap_or(s.len())])
+        format!(
+            "{}…",
+            &s[..s.char_indices().nth(40).map(|c| c.0).unwrap_or(s.len())]
+        )
     } else {
         s
     }
@@ -63,7 +74,10 @@ fn poly(v: &Value, path: &str) -> Result<Poly> {
         return Err(Error::new(path, "must have at least one coefficient"));
     }
     if arr.len() > MAX_COEFFS {
-        return Err(Error::new(path, format!("at most {MAX_COEFFS} coefficients are accepted")));
+        return Err(Error::new(
+            path,
+            format!("at most {MAX_COEFFS} coefficients are accepted"),
+        ));
     }
     let mut c = Vec::with_capacity(arr.len());
     for (i, x) in arr.iter().enumerate() {
@@ -76,7 +90,10 @@ fn tf(v: &Value, path: &str) -> Result<Tf> {
     let num = poly(field(v, "num", path)?, &join(path, "num"))?;
     let den = poly(field(v, "den", path)?, &join(path, "den"))?;
     if den.is_zero() {
-        return Err(Error::new(join(path, "den"), "must not be the zero polynomial"));
+        return Err(Error::new(
+            join(path, "den"),
+            "must not be the zero polynomial",
+        ));
     }
     Ok(Tf { num, den })
 }
@@ -84,7 +101,10 @@ fn tf(v: &Value, path: &str) -> Result<Tf> {
 /// Parses an API.md plant: `{num, den, delay}` or `{family, …params}`.
 pub fn parse_plant(v: &Value, path: &str) -> Result<Plant> {
     if !v.is_object() {
-        return Err(Error::new(path, "must be an object ({num, den, delay} or {family, …})"));
+        return Err(Error::new(
+            path,
+            "must be an object ({num, den, delay} or {family, …})",
+        ));
     }
     if let Some(f) = opt_field(v, "family") {
         let id = f
@@ -122,9 +142,15 @@ pub fn parse_controller(v: &Value, path: &str) -> Result<Controller> {
 
 fn step(v: Option<&Value>, path: &str) -> Result<Step> {
     match v {
-        None => Ok(Step { time: 0.0, size: 0.0 }),
+        None => Ok(Step {
+            time: 0.0,
+            size: 0.0,
+        }),
         Some(s) => Ok(Step {
-            time: opt_field(s, "time").map(|x| number(x, &join(path, "time"))).transpose()?.unwrap_or(0.0),
+            time: opt_field(s, "time")
+                .map(|x| number(x, &join(path, "time")))
+                .transpose()?
+                .unwrap_or(0.0),
             size: number(field(s, "size", path)?, &join(path, "size"))?,
         }),
     }
@@ -133,7 +159,10 @@ fn step(v: Option<&Value>, path: &str) -> Result<Step> {
 /// Parses an API.md scenario.
 pub fn parse_scenario(v: &Value, path: &str) -> Result<Scenario> {
     if !v.is_object() {
-        return Err(Error::new(path, "must be an object {t_end, dt, setpoint, disturbance}"));
+        return Err(Error::new(
+            path,
+            "must be an object {t_end, dt, setpoint, disturbance}",
+        ));
     }
     let mut sc = Scenario::steps(
         number(field(v, "t_end", path)?, &join(path, "t_end"))?,

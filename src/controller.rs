@@ -36,7 +36,10 @@ impl Controller {
     pub fn new(cr: Tf, cy: Tf) -> Result<Controller> {
         for (name, t) in [("cr", &cr), ("cy", &cy)] {
             if !t.num.is_finite() {
-                return Err(Error::new(format!("{name}.num"), "coefficients must be finite"));
+                return Err(Error::new(
+                    format!("{name}.num"),
+                    "coefficients must be finite",
+                ));
             }
             if !t.den.is_finite() || t.den.is_zero() {
                 return Err(Error::new(
@@ -58,7 +61,12 @@ impl Controller {
     }
 
     /// From descending coefficient arrays (JS convention).
-    pub fn from_desc(cr_num: &[f64], cr_den: &[f64], cy_num: &[f64], cy_den: &[f64]) -> Result<Controller> {
+    pub fn from_desc(
+        cr_num: &[f64],
+        cr_den: &[f64],
+        cy_num: &[f64],
+        cy_den: &[f64],
+    ) -> Result<Controller> {
         let cr = Tf::parse_desc(cr_num, cr_den).map_err(|e| e.within("cr"))?;
         let cy = Tf::parse_desc(cy_num, cy_den).map_err(|e| e.within("cy"))?;
         Controller::new(cr, cy)
@@ -206,7 +214,11 @@ impl Pid {
         let s = Poly::s();
         let lag = Poly::linear(tf_, 1.0);
         let integral = self.ki != 0.0;
-        let base = if integral { s.clone() } else { Poly::constant(1.0) };
+        let base = if integral {
+            s.clone()
+        } else {
+            Poly::constant(1.0)
+        };
         let den = base.mul(&lag);
         // numerator of K_p·w + K_i/s + K_d·w'·s/(T_f s + 1) over `den`
         let num = |wp: f64, wd: f64| {
@@ -216,8 +228,14 @@ impl Pid {
             }
             n.add(&base.mul(&s).scale(self.kd * wd))
         };
-        let mut cr = Tf { num: num(self.b, self.c), den: den.clone() };
-        let mut cy = Tf { num: num(1.0, 1.0), den };
+        let mut cr = Tf {
+            num: num(self.b, self.c),
+            den: den.clone(),
+        };
+        let mut cy = Tf {
+            num: num(1.0, 1.0),
+            den,
+        };
         if let Some(f) = &self.series {
             cr = cr.mul(f);
             cy = cy.mul(f);
@@ -257,7 +275,11 @@ mod tests {
 
     #[test]
     fn filtered_and_weighted() {
-        let c = Pid::parallel(2.0, 1.0, 0.5).weights(0.3, 0.0).filter_n(10.0).to_controller().unwrap();
+        let c = Pid::parallel(2.0, 1.0, 0.5)
+            .weights(0.3, 0.0)
+            .filter_n(10.0)
+            .to_controller()
+            .unwrap();
         let x = 1.7;
         let tf_ = 0.5 / 2.0 / 10.0;
         let d = 0.5 * x / (tf_ * x + 1.0);

@@ -61,7 +61,10 @@ pub fn positive(path: &str, x: f64) -> Result<f64> {
     if x.is_finite() && x > 0.0 {
         Ok(x)
     } else {
-        Err(Error::new(path, format!("must be finite and > 0 (got {x})")))
+        Err(Error::new(
+            path,
+            format!("must be finite and > 0 (got {x})"),
+        ))
     }
 }
 
@@ -70,6 +73,9 @@ pub fn non_negative(path: &str, x: f64) -> Result<f64> {
     if x.is_finite() && x >= 0.0 {
         Ok(x)
     } else {
-        Err(Error::new(path, format!("must be finite and >= 0 (got {x})")))
+        Err(Error::new(
+            path,
+            format!("must be finite and >= 0 (got {x})"),
+        ))
     }
 }

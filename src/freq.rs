@@ -89,23 +89,27 @@ pub fn open_loop(plant: &Plant, c: &Controller, w: f64) -> C64 {
 
 /// Characteristic frequencies: magnitudes of the non-zero poles and zeros of L and 1/θ.
 fn char_freqs(l: &LoopTf) -> (f64, f64) {
-    let mut f: Vec<f64> = l
-        .lr
-        .num
-        .roots()
-        .into_iter()
-        .chain(l.lr.den.roots())
-        .map(|z| z.norm())
-        .filter(|x| x.is_finite() && *x > 1e-12)
-        .collect();
+    let mut f: Vec<f64> =
+        l.lr.num
+            .roots()
+            .into_iter()
+            .chain(l.lr.den.roots())
+            .map(|z| z.norm())
+            .filter(|x| x.is_finite() && *x > 1e-12)
+            .collect();
     if l.delay > 0.0 {
         f.push(1.0 / l.delay);
     }
     if f.is_empty() {
         f.push(1.0);
     }
-    let lo = f.iter().cloned().fold(f64::INFINITY, f64::min);
-    let hi = f.iter().cloned().fold(0.0, f64::max);
+    // clamp to a range where a frequency sweep is meaningful in f64
+    let lo = f
+        .iter()
+        .cloned()
+        .fold(f64::INFINITY, f64::min)
+        .clamp(1e-9, 1e9);
+    let hi = f.iter().cloned().fold(0.0, f64::max).clamp(lo, 1e9);
     (lo, hi)
 }
 
@@ -120,8 +124,12 @@ struct Tail {
 
 impl Tail {
     fn new(l: &LoopTf, lo: f64, hi: f64, l_inf: f64, extra: &[f64]) -> Tail {
-        let n = ((hi / lo).log10() * 100.0).ceil().max(10.0) as usize;
-        let mut w: Vec<f64> = (0..=n).map(|i| lo * (hi / lo).powf(i as f64 / n as f64)).collect();
+        let n = ((hi.log10() - lo.log10()) * 100.0)
+            .ceil()
+            .clamp(10.0, 20_000.0) as usize;
+        let mut w: Vec<f64> = (0..=n)
+            .map(|i| lo * (hi / lo).powf(i as f64 / n as f64))
+            .collect();
         for &p in extra {
             for k in -20..=20 {
                 let x = p * (1.0 + 0.005 * k as f64);
@@ -138,7 +146,12 @@ impl Tail {
             m = m.max(vals[i].norm());
             sup[i] = m;
         }
-        Tail { w, vals, sup, inf_val: l_inf }
+        Tail {
+            w,
+            vals,
+            sup,
+            inf_val: l_inf,
+        }
     }
 
     /// Start of the rotation region of a delayed biproper loop: beyond it the rational part
@@ -234,7 +247,14 @@ fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
 
 /// Adaptive sampling of `g` on [a, b]: returns samples with `|g_{k+1} − g_k|` at most `frac`
 /// of `min(|1 + g_k|, |1 + g_{k+1}|)` (or the depth cap).
-fn refine(g: &impl Fn(f64) -> C64, a: (f64, C64), b: (f64, C64), frac: f64, depth: u32, out: &mut Vec<(f64, C64)>) {
+fn refine(
+    g: &impl Fn(f64) -> C64,
+    a: (f64, C64),
+    b: (f64, C64),
+    frac: f64,
+    depth: u32,
+    out: &mut Vec<(f64, C64)>,
+) {
     let d = (b.1 - a.1).norm();
     let m = (1.0 + a.1).norm().min((1.0 + b.1).norm());
     if depth == 0 || d <= frac * m.max(1e-9) || !(d.is_finite()) {
@@ -282,7 +302,8 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
         let unstable = plant.tf.den.roots().iter().any(|z| z.re >= 0.0);
         out.stable = !unstable;
         out.verdict = if unstable {
-            "unstable: no feedback (Cy = 0) and the plant has poles in the closed right half-plane".into()
+            "unstable: no feedback (Cy = 0) and the plant has poles in the closed right half-plane"
+                .into()
         } else {
             "stable (no feedback)".into()
         };
@@ -301,15 +322,14 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
     let (flo, fhi) = char_freqs(&l);
     let w_lo = flo * 1e-4;
     let w_hi = fhi * 1e5;
-    let pole_freqs: Vec<f64> = l
-        .lr
-        .den
-        .roots()
-        .iter()
-        .chain(l.lr.num.roots().iter())
-        .map(|z| z.norm())
-        .filter(|x| *x > 0.0 && x.is_finite())
-        .collect();
+    let pole_freqs: Vec<f64> =
+        l.lr.den
+            .roots()
+            .iter()
+            .chain(l.lr.num.roots().iter())
+            .map(|z| z.norm())
+            .filter(|x| *x > 0.0 && x.is_finite())
+            .collect();
     let tail = Tail::new(&l, w_lo, w_hi, out.l_inf, &pole_freqs);
 
     // ---- Ms, GM, PM sweep on the imaginary axis ----
@@ -358,7 +378,7 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
     let mut best = (lim_zero, None::<f64>);
     let mut w = w_lo;
     let step = 10f64.powf(1.0 / per_decade);
-    let max_points = 400_000;
+    let max_points = 100_000;
     let mut truncated = false;
     // In the rotation region of a delayed biproper loop, |S| peaks once per period where
     // L_rat e^{−jωθ} aligns with −1; there the sweep stops and the tail is handled below.
@@ -418,30 +438,45 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
     }
     // Ms: local maxima refined (sweep samples, then the rotation-tail window)
     for seq in [&samples, &tail_samples] {
-    let samples = seq;
-    let mags: Vec<f64> = samples.iter().map(|(_, z)| 1.0 / (1.0 + z).norm()).collect();
-    let mut cands: Vec<usize> = (1..mags.len().saturating_sub(1))
-        .filter(|&i| mags[i] >= mags[i - 1] && mags[i] >= mags[i + 1])
-        .collect();
-    cands.sort_by(|&a, &b| mags[b].partial_cmp(&mags[a]).unwrap_or(std::cmp::Ordering::Equal));
-    cands.truncate(8);
-    for &i in &cands {
-        let (x, v) = golden_max(s_mag, samples[i - 1].0, samples[i + 1].0);
-        if v > best.0 {
-            best = (v, Some(x));
+        let samples = seq;
+        let mags: Vec<f64> = samples
+            .iter()
+            .map(|(_, z)| 1.0 / (1.0 + z).norm())
+            .collect();
+        let mut cands: Vec<usize> = (1..mags.len().saturating_sub(1))
+            .filter(|&i| mags[i] >= mags[i - 1] && mags[i] >= mags[i + 1])
+            .collect();
+        cands.sort_by(|&a, &b| {
+            mags[b]
+                .partial_cmp(&mags[a])
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
+        cands.truncate(8);
+        for &i in &cands {
+            let (x, v) = golden_max(s_mag, samples[i - 1].0, samples[i + 1].0);
+            if v > best.0 {
+                best = (v, Some(x));
+            }
         }
-    }
-    if let Some(i) = (0..mags.len()).max_by(|&a, &b| mags[a].partial_cmp(&mags[b]).unwrap_or(std::cmp::Ordering::Equal)) {
-        if mags[i] > best.0 {
-            best = (mags[i], Some(samples[i].0));
+        if let Some(i) = (0..mags.len()).max_by(|&a, &b| {
+            mags[a]
+                .partial_cmp(&mags[b])
+                .unwrap_or(std::cmp::Ordering::Equal)
+        }) {
+            if mags[i] > best.0 {
+                best = (mags[i], Some(samples[i].0));
+            }
         }
-    }
     }
     if lim_inf >= best.0 {
         best = (lim_inf, None);
         out.ms_at_infinity = true;
     }
-    out.ms = lim_inf.is_finite().then_some(best.0).or(if l.delay == 0.0 { Some(best.0) } else { None });
+    out.ms =
+        lim_inf
+            .is_finite()
+            .then_some(best.0)
+            .or(if l.delay == 0.0 { Some(best.0) } else { None });
     out.w_ms = best.1;
 
     // crossings
@@ -470,19 +505,28 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
         // crossings continue forever with |L| → |L∞|: the limit margin
         gms.push((1.0 / tail.at(w).max(out.l_inf), f64::INFINITY));
     }
-    let up = gms.iter().filter(|(m, _)| *m > 1.0).fold(None, |acc: Option<(f64, f64)>, &x| match acc {
-        Some(a) if a.0 <= x.0 => Some(a),
-        _ => Some(x),
-    });
-    let lowm = gms.iter().filter(|(m, _)| *m < 1.0).fold(None, |acc: Option<(f64, f64)>, &x| match acc {
-        Some(a) if a.0 >= x.0 => Some(a),
-        _ => Some(x),
-    });
+    let up =
+        gms.iter()
+            .filter(|(m, _)| *m > 1.0)
+            .fold(None, |acc: Option<(f64, f64)>, &x| match acc {
+                Some(a) if a.0 <= x.0 => Some(a),
+                _ => Some(x),
+            });
+    let lowm = gms
+        .iter()
+        .filter(|(m, _)| *m < 1.0)
+        .fold(None, |acc: Option<(f64, f64)>, &x| match acc {
+            Some(a) if a.0 >= x.0 => Some(a),
+            _ => Some(x),
+        });
     out.gm = up.map(|x| x.0);
     out.w_pc = up.and_then(|x| x.1.is_finite().then_some(x.1));
     out.gm_lower = lowm.map(|x| x.0);
     out.w_pc_lower = lowm.and_then(|x| x.1.is_finite().then_some(x.1));
-    if let Some(&(pm, wc)) = pms.iter().min_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal)) {
+    if let Some(&(pm, wc)) = pms
+        .iter()
+        .min_by(|a, b| a.0.partial_cmp(&b.0).unwrap_or(std::cmp::Ordering::Equal))
+    {
         out.pm = Some(pm);
         out.w_gc = Some(wc);
     }
@@ -508,15 +552,21 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
     out.rhp_open_loop = rhp_ol;
     // set-point path: poles of Cr not shared with Cy
     let cd = common_denominator(&c.cr.den, &c.cy.den);
-    let extra = cd.div_rem(&c.cy.den).map(|(q, _)| q).unwrap_or_else(|_| Poly::constant(1.0));
+    let extra = cd
+        .div_rem(&c.cy.den)
+        .map(|(q, _)| q)
+        .unwrap_or_else(|_| Poly::constant(1.0));
     let cr_unstable = extra.roots().iter().any(|z| z.re >= -1e-12);
     match count {
         Err(msg) => {
             out.verdict = msg;
+            out.delay_margin = None;
         }
         Ok(z) => {
             out.rhp_closed_loop = Some(z);
             if z > 0 {
+                // margins of an unstable loop are not margins
+                out.delay_margin = None;
                 out.verdict = format!(
                     "unstable: {z} closed-loop root(s) in the right half-plane (open loop has {rhp_ol} unstable pole(s))"
                 );
@@ -539,14 +589,22 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
 }
 
 /// Number of open-loop RHP poles and of closed-loop RHP roots (Nyquist on the δ-shifted line).
-fn nyquist_count(l: &LoopTf, w_lo: f64, w_hi: f64, tail: &Tail) -> (usize, std::result::Result<usize, String>) {
+fn nyquist_count(
+    l: &LoopTf,
+    w_lo: f64,
+    w_hi: f64,
+    tail: &Tail,
+) -> (usize, std::result::Result<usize, String>) {
     let delta = w_lo * 1e-4;
     let rhp = l.lr.den.roots().iter().filter(|z| z.re > delta).count();
     // closed-loop root at the origin (cancelled integrator): marginal
     let q0 = l.lr.den.coef(0) + l.lr.num.coef(0);
     let scale = l.lr.den.max_abs().max(l.lr.num.max_abs());
     if q0.abs() <= 1e-14 * scale {
-        return (rhp, Err("unstable: closed-loop pole at s = 0 (an integrator cancelled by a zero)".into()));
+        return (
+            rhp,
+            Err("unstable: closed-loop pole at s = 0 (an integrator cancelled by a zero)".into()),
+        );
     }
     let f = |w: f64| {
         let s = C64::new(delta, w);
@@ -563,7 +621,7 @@ fn nyquist_count(l: &LoopTf, w_lo: f64, w_hi: f64, tail: &Tail) -> (usize, std::
         let a = *pts.last().unwrap_or(&(w, f(w)));
         refine(&f, a, (w2, f(w2)), 0.2, 30, &mut pts);
         w = w2;
-        if tail.at(w) * (-delta * l.delay).exp() < 0.999 || w > w_hi || pts.len() > 400_000 {
+        if tail.at(w) * (-delta * l.delay).exp() < 0.999 || w > w_hi || pts.len() > 100_000 {
             break;
         }
     }
@@ -590,11 +648,19 @@ fn nyquist_count(l: &LoopTf, w_lo: f64, w_hi: f64, tail: &Tail) -> (usize, std::
     let wind = total / (2.0 * std::f64::consts::PI);
     let wr = wind.round();
     if (wind - wr).abs() > 0.2 {
-        return (rhp, Err(format!("stability undetermined: winding number {wind:.3} is not near an integer")));
+        return (
+            rhp,
+            Err(format!(
+                "stability undetermined: winding number {wind:.3} is not near an integer"
+            )),
+        );
     }
     let z = rhp as f64 - wr;
     if z < -0.5 {
-        return (rhp, Err(format!("stability undetermined: inconsistent count {z}")));
+        return (
+            rhp,
+            Err(format!("stability undetermined: inconsistent count {z}")),
+        );
     }
     (rhp, Ok(z.round() as usize))
 }
@@ -621,10 +687,16 @@ pub fn solve_for_ms(
     design: impl Fn(f64) -> Result<(Plant, Controller)>,
 ) -> Result<f64> {
     if !(target.is_finite() && target > 1.0) {
-        return Err(Error::new("params.target_ms", "must be a finite number > 1"));
+        return Err(Error::new(
+            "params.target_ms",
+            "must be a finite number > 1",
+        ));
     }
     if !(lo > 0.0 && hi > lo && hi.is_finite()) {
-        return Err(Error::new("params.target_ms", "internal: bad search interval"));
+        return Err(Error::new(
+            "params.target_ms",
+            "internal: bad search interval",
+        ));
     }
     let ms_of = |x: f64| -> Option<f64> {
         let (p, c) = design(x).ok()?;
@@ -636,7 +708,9 @@ pub fn solve_for_ms(
         }
     };
     let n = 48;
-    let xs: Vec<f64> = (0..=n).map(|i| lo * (hi / lo).powf(i as f64 / n as f64)).collect();
+    let xs: Vec<f64> = (0..=n)
+        .map(|i| lo * (hi / lo).powf(i as f64 / n as f64))
+        .collect();
     let vals: Vec<Option<f64>> = xs.iter().map(|&x| ms_of(x)).collect();
     let mut range = (f64::INFINITY, 0.0f64);
     for v in vals.iter().flatten() {

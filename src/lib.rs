@@ -17,7 +17,7 @@
 //! let res = simulate(&plant, &c, &Scenario::steps(60.0, 0.01, 0.0, 1.0, 30.0, 1.0)).unwrap();
 //! assert!(!res.diverged);
 //! let a = analyze(&plant, &c).unwrap();
-//! assert!(a.stable && a.ms > 1.0);
+//! assert!(a.stable && a.ms.unwrap() > 1.0);
 //! ```
 //!
 //! ## Conventions
@@ -31,6 +31,7 @@
 
 pub mod api;
 pub mod controller;
+pub mod cstr;
 pub mod error;
 pub mod freq;
 pub mod metrics;

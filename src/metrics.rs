@@ -161,8 +161,19 @@ fn window(
     let d_w = traj.step_at(&traj.disturbance, a);
     let ss = steady_state(m, r_w, d_w);
     let (k0, _) = traj.locate(a);
-    let mut acc = Acc { iae: 0.0, ise: 0.0, itae: 0.0, iste: 0.0, ist2e: 0.0, ist3e: 0.0, cod: 0.0, dco: 0.0 };
-    let u_inf = ss.map(|s| s.1).unwrap_or_else(|| res.u.last().copied().unwrap_or(0.0));
+    let mut acc = Acc {
+        iae: 0.0,
+        ise: 0.0,
+        itae: 0.0,
+        iste: 0.0,
+        ist2e: 0.0,
+        ist3e: 0.0,
+        cod: 0.0,
+        dco: 0.0,
+    };
+    let u_inf = ss
+        .map(|s| s.1)
+        .unwrap_or_else(|| res.u.last().copied().unwrap_or(0.0));
     let kk = ik.unwrap_or(0.0);
     let tt = it.unwrap_or(0.0);
     let mut u_jumps = false;
@@ -316,7 +327,8 @@ fn window(
     // TV over samples with a ≤ t_k < b (≤ at the end of the run)
     let mut tv = 0.0;
     for (k, t) in res.t.iter().enumerate() {
-        let inside = *t >= a - traj.tol && (*t < b - traj.tol || (b >= sc.t_end && *t <= b + traj.tol));
+        let inside =
+            *t >= a - traj.tol && (*t < b - traj.tol || (b >= sc.t_end && *t <= b + traj.tol));
         if inside {
             let prev = if k == 0 { 0.0 } else { res.u[k - 1] };
             tv += (res.u[k] - prev).abs();
@@ -364,7 +376,11 @@ pub(crate) fn windows(
     let stop = diverged_at.unwrap_or(f64::INFINITY);
     let d_on = ld.size != 0.0 && ld.time < sc.t_end;
     let s_on = sp.size != 0.0 && sp.time < sc.t_end;
-    let servo_end = if d_on && ld.time > sp.time { ld.time } else { sc.t_end };
+    let servo_end = if d_on && ld.time > sp.time {
+        ld.time
+    } else {
+        sc.t_end
+    };
     let servo = (s_on && servo_end > sp.time && servo_end <= stop)
         .then(|| window(m, traj, res, sc, sp.time, servo_end, sp.size, true, ik, it));
     let regulatory = (d_on && sc.t_end <= stop)

@@ -8,13 +8,26 @@ use crate::error::{non_negative, positive, Error, Result};
 use crate::poly::{Poly, C64};
 use crate::tf::Tf;
 
+/// Largest dead time accepted (in the plant's time unit).
+pub const MAX_DELAY: f64 = 1e6;
+
 /// A named plant family of API.md with its parameters (time in the plant's own unit).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Family {
     /// `k(1 − τ_z s)e^{−θs}/(s(τ s + 1))`: integrating, inverse response, dead time.
-    IpdtIr { k: f64, tau: f64, tau_z: f64, theta: f64 },
+    IpdtIr {
+        k: f64,
+        tau: f64,
+        tau_z: f64,
+        theta: f64,
+    },
     /// `k(1 − τ_z s)e^{−θs}/(τ s + 1)`: first order, inverse response, dead time.
-    FopdtIr { k: f64, tau: f64, tau_z: f64, theta: f64 },
+    FopdtIr {
+        k: f64,
+        tau: f64,
+        tau_z: f64,
+        theta: f64,
+    },
     /// `k e^{−θs}/s`: pure integrator with dead time.
     Piptd { k: f64, theta: f64 },
     /// `k e^{−θs}/s²`: double integrator with dead time.
@@ -22,9 +35,19 @@ pub enum Family {
     /// `k e^{−θs}/(s(τ s + 1))`: integrator plus first-order lag.
     Ifoptd { k: f64, tau: f64, theta: f64 },
     /// `k(1 + z s)e^{−θs}/(s(τ s + 1))` (z < 0: inverse response).
-    IfoptdZero { k: f64, tau: f64, z: f64, theta: f64 },
+    IfoptdZero {
+        k: f64,
+        tau: f64,
+        z: f64,
+        theta: f64,
+    },
     /// `k(1 + z s)e^{−θs}/(s(τ s − 1))`: integrator with an unstable pole.
-    IfoptdZeroUnstable { k: f64, tau: f64, z: f64, theta: f64 },
+    IfoptdZeroUnstable {
+        k: f64,
+        tau: f64,
+        z: f64,
+        theta: f64,
+    },
 }
 
 impl Family {
@@ -80,13 +103,43 @@ impl Family {
             }
         }
         let f = match id {
-            "ipdt_ir" => Family::IpdtIr { k: v[0], tau: v[1], tau_z: v[2], theta: v[3] },
-            "fopdt_ir" => Family::FopdtIr { k: v[0], tau: v[1], tau_z: v[2], theta: v[3] },
-            "piptd" => Family::Piptd { k: v[0], theta: v[1] },
-            "diptd" => Family::Diptd { k: v[0], theta: v[1] },
-            "ifoptd" => Family::Ifoptd { k: v[0], tau: v[1], theta: v[2] },
-            "ifoptd_zero" => Family::IfoptdZero { k: v[0], tau: v[1], z: v[2], theta: v[3] },
-            _ => Family::IfoptdZeroUnstable { k: v[0], tau: v[1], z: v[2], theta: v[3] },
+            "ipdt_ir" => Family::IpdtIr {
+                k: v[0],
+                tau: v[1],
+                tau_z: v[2],
+                theta: v[3],
+            },
+            "fopdt_ir" => Family::FopdtIr {
+                k: v[0],
+                tau: v[1],
+                tau_z: v[2],
+                theta: v[3],
+            },
+            "piptd" => Family::Piptd {
+                k: v[0],
+                theta: v[1],
+            },
+            "diptd" => Family::Diptd {
+                k: v[0],
+                theta: v[1],
+            },
+            "ifoptd" => Family::Ifoptd {
+                k: v[0],
+                tau: v[1],
+                theta: v[2],
+            },
+            "ifoptd_zero" => Family::IfoptdZero {
+                k: v[0],
+                tau: v[1],
+                z: v[2],
+                theta: v[3],
+            },
+            _ => Family::IfoptdZeroUnstable {
+                k: v[0],
+                tau: v[1],
+                z: v[2],
+                theta: v[3],
+            },
         };
         f.validate()?;
         Ok(f)
@@ -95,7 +148,18 @@ impl Family {
     /// Parameter values in the order of [`Family::param_names`].
     pub fn values(&self) -> Vec<f64> {
         match *self {
-            Family::IpdtIr { k, tau, tau_z, theta } | Family::FopdtIr { k, tau, tau_z, theta } => {
+            Family::IpdtIr {
+                k,
+                tau,
+                tau_z,
+                theta,
+            }
+            | Family::FopdtIr {
+                k,
+                tau,
+                tau_z,
+                theta,
+            } => {
                 vec![k, tau, tau_z, theta]
             }
             Family::Piptd { k, theta } | Family::Diptd { k, theta } => vec![k, theta],
@@ -119,6 +183,9 @@ impl Family {
                 }
                 "theta" => {
                     non_negative("theta", x)?;
+                    if x > MAX_DELAY {
+                        return Err(Error::new("theta", format!("must be <= {MAX_DELAY:e}")));
+                    }
                 }
                 "tau_z" => {
                     non_negative("tau_z", x)?;
@@ -138,10 +205,9 @@ impl Family {
     pub fn rational(&self) -> Tf {
         let s = Poly::s();
         let (num, den) = match *self {
-            Family::IpdtIr { k, tau, tau_z, .. } => (
-                Poly::linear(-k * tau_z, k),
-                s.mul(&Poly::linear(tau, 1.0)),
-            ),
+            Family::IpdtIr { k, tau, tau_z, .. } => {
+                (Poly::linear(-k * tau_z, k), s.mul(&Poly::linear(tau, 1.0)))
+            }
             Family::FopdtIr { k, tau, tau_z, .. } => {
                 (Poly::linear(-k * tau_z, k), Poly::linear(tau, 1.0))
             }
@@ -203,6 +269,9 @@ impl Plant {
             ));
         }
         non_negative("delay", delay)?;
+        if delay > MAX_DELAY {
+            return Err(Error::new("delay", format!("must be <= {MAX_DELAY:e}")));
+        }
         Ok(Plant {
             tf,
             delay,

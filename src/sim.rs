@@ -38,7 +38,7 @@ use nalgebra::{DMatrix, DVector};
 pub const DEG: usize = 5;
 const NODES: usize = DEG + 1;
 /// Hard cap on the number of pieces of one simulation.
-const MAX_PIECES: usize = 4_000_000;
+const MAX_PIECES: usize = 1_000_000;
 
 /// A step event: `size` applied at `time`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -70,12 +70,25 @@ pub struct Scenario {
 
 impl Scenario {
     /// Set-point step and load step.
-    pub fn steps(t_end: f64, dt: f64, sp_time: f64, sp_size: f64, d_time: f64, d_size: f64) -> Scenario {
+    pub fn steps(
+        t_end: f64,
+        dt: f64,
+        sp_time: f64,
+        sp_size: f64,
+        d_time: f64,
+        d_size: f64,
+    ) -> Scenario {
         Scenario {
             t_end,
             dt,
-            setpoint: Step { time: sp_time, size: sp_size },
-            disturbance: Step { time: d_time, size: d_size },
+            setpoint: Step {
+                time: sp_time,
+                size: sp_size,
+            },
+            disturbance: Step {
+                time: d_time,
+                size: d_size,
+            },
             settling_band: 0.02,
             isens_k: None,
             isens_tau: None,
@@ -87,7 +100,10 @@ impl Scenario {
         positive("t_end", self.t_end)?;
         positive("dt", self.dt)?;
         if self.t_end / self.dt > 1e7 {
-            return Err(Error::new("dt", "too small for t_end: more than 10⁷ output samples"));
+            return Err(Error::new(
+                "dt",
+                "too small for t_end: more than 10⁷ output samples",
+            ));
         }
         non_negative("setpoint.time", self.setpoint.time)?;
         crate::error::finite("setpoint.size", self.setpoint.size)?;
@@ -180,7 +196,8 @@ impl LoopModel {
         let cp = ps.c.row(0).transpose();
         let mut a = DMatrix::zeros(n, n);
         a.view_mut((0, 0), (nc, nc)).copy_from(ac);
-        a.view_mut((0, nc), (nc, np)).copy_from(&(&bcy * cp.transpose()));
+        a.view_mut((0, nc), (nc, np))
+            .copy_from(&(&bcy * cp.transpose()));
         a.view_mut((nc, nc), (np, np)).copy_from(ap);
         let mut bw = DVector::zeros(n);
         bw.rows_mut(0, nc).copy_from(&(&bcy * dp));
@@ -287,14 +304,22 @@ fn propagators(m: &LoopModel, len: f64) -> Result<Prop> {
     }
     let e1 = (big * (len / DEG as f64)).exp();
     if !e1.iter().all(|x| x.is_finite()) {
-        return Err(Error::new("controller", "loop matrix exponential overflowed (gains too large?)"));
+        return Err(Error::new(
+            "controller",
+            "loop matrix exponential overflowed (gains too large?)",
+        ));
     }
     // V[j][k] = σ_j^k, σ_j = j/DEG; coefficients c = V⁻¹ w.
     let v = DMatrix::from_fn(NODES, NODES, |j, k| (j as f64 / DEG as f64).powi(k as i32));
     let vinv = v
         .try_inverse()
         .ok_or_else(|| Error::new("", "internal: interpolation matrix singular"))?;
-    let mut p = Prop { phi: vec![], kw: vec![], rr: vec![], rd: vec![] };
+    let mut p = Prop {
+        phi: vec![],
+        kw: vec![],
+        rr: vec![],
+        rd: vec![],
+    };
     let mut ei = e1.clone();
     for i in 1..=DEG {
         if i > 1 {
@@ -335,7 +360,10 @@ impl Trajectory {
     /// Start time and length of piece `k`.
     pub fn piece(&self, k: usize) -> (f64, f64) {
         let p = self.offsets.len();
-        ((k / p) as f64 * self.h + self.offsets[k % p], self.lens[k % p])
+        (
+            (k / p) as f64 * self.h + self.offsets[k % p],
+            self.lens[k % p],
+        )
     }
 
     /// Value of a step signal at `t` (right-hand limit).
@@ -464,7 +492,11 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
     } else {
         sc.dt / (sc.dt / hmax - 1e-9).ceil().max(1.0)
     };
-    let n_delay = if m.delay > 0.0 { (m.delay / h).round() as usize } else { 0 };
+    let n_delay = if m.delay > 0.0 {
+        (m.delay / h).round() as usize
+    } else {
+        0
+    };
     let tol = 1e-9 * h;
     // piece offsets within a step: 0 and the event offsets
     let mut offs = vec![0.0];
@@ -481,7 +513,13 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
     }
     offs.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
     let lens: Vec<f64> = (0..offs.len())
-        .map(|i| if i + 1 < offs.len() { offs[i + 1] - offs[i] } else { h - offs[i] })
+        .map(|i| {
+            if i + 1 < offs.len() {
+                offs[i + 1] - offs[i]
+            } else {
+                h - offs[i]
+            }
+        })
         .collect();
     let pps = offs.len();
     let n_steps = ((sc.t_end + tol) / h).ceil().max(1.0) as usize;
@@ -531,7 +569,7 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
         let p = &props[k % pps];
         let wv = DVector::from_column_slice(&w);
         let mut bad = false;
-        for i in 0..NODES {
+        for (i, wi) in w.iter().enumerate() {
             if i > 0 {
                 xi.copy_from(&p.rr[i - 1]);
                 xi *= r;
@@ -541,8 +579,8 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
             } else {
                 xi.copy_from(&x);
             }
-            let v = m.g.dot(&xi) + m.h * r + m.hd * d + m.e * w[i];
-            let y = m.yx.dot(&xi) + m.yw * w[i] + m.yr * r + m.yd * d;
+            let v = m.g.dot(&xi) + m.h * r + m.hd * d + m.e * wi;
+            let y = m.yx.dot(&xi) + m.yw * wi + m.yr * r + m.yd * d;
             if !(v.abs() <= limit && y.abs() <= limit) {
                 bad = true;
             }
@@ -584,7 +622,11 @@ fn isens_weights(plant: &Plant, sc: &Scenario) -> (Option<f64>, Option<f64>) {
 /// Divergence is not an error: `diverged`/`diverged_at` are set and the samples stop there.
 pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResult> {
     sc.validate().map_err(|e| e.within("scenario"))?;
-    let m = LoopModel::new(plant, c, sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end)?;
+    let m = LoopModel::new(
+        plant,
+        c,
+        sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
+    )?;
     let (traj, diverged_at) = integrate(&m, sc)?;
     let kmax = (sc.t_end / sc.dt).round() as usize;
     let t_stop = diverged_at.unwrap_or(f64::INFINITY);

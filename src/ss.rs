@@ -52,7 +52,10 @@ pub fn realize_common(nums: &[Poly], den: &Poly) -> Result<Ss> {
     let mut d = DMatrix::zeros(1, k);
     for (j, num) in nums.iter().enumerate() {
         if num.degree() > n && !num.is_zero() {
-            return Err(Error::new("num", "improper: numerator degree exceeds denominator degree"));
+            return Err(Error::new(
+                "num",
+                "improper: numerator degree exceeds denominator degree",
+            ));
         }
         let nn: Vec<f64> = (0..=n).map(|i| num.coef(i) / lead).collect();
         let dj = nn[n];
@@ -71,7 +74,10 @@ pub fn realize_common(nums: &[Poly], den: &Poly) -> Result<Ss> {
 /// Realization of a single proper transfer function.
 pub fn realize(tf: &Tf) -> Result<Ss> {
     if !tf.is_proper() {
-        return Err(Error::new("num", "improper transfer function cannot be realized"));
+        return Err(Error::new(
+            "num",
+            "improper transfer function cannot be realized",
+        ));
     }
     realize_common(std::slice::from_ref(&tf.num), &tf.den)
 }
@@ -126,7 +132,10 @@ fn over(n: &Poly, d: &Poly, cd: &Poly) -> Result<Poly> {
     let (q, r) = cd.div_rem(d)?;
     let scale = cd.max_abs().max(1.0);
     if r.max_abs() > 1e-9 * scale {
-        return Err(Error::new("den", "internal: common denominator is not a multiple"));
+        return Err(Error::new(
+            "den",
+            "internal: common denominator is not a multiple",
+        ));
     }
     Ok(n.mul(&q))
 }
@@ -247,7 +256,10 @@ mod tests {
     #[test]
     fn setpoint_filter_realization() {
         let f = Tf::parse_desc(&[0.3, 1.0], &[1.0, 1.9, 1.0]).unwrap();
-        let c = Pid::ideal(4.0, 1.9, 0.5).to_controller().unwrap().with_setpoint_filter(&f);
+        let c = Pid::ideal(4.0, 1.9, 0.5)
+            .to_controller()
+            .unwrap()
+            .with_setpoint_filter(&f);
         let r = c.realize().unwrap();
         let s = C64::new(-0.2, 1.3);
         let cr = eval_ss(&r.ss, s, 0);

@@ -79,7 +79,10 @@ impl Tf {
         match self.relative_degree() {
             d if d > 0 => Ok(0.0),
             0 => Ok(self.num.leading() / self.den.leading()),
-            _ => Err(Error::new("", "improper transfer function has no finite limit")),
+            _ => Err(Error::new(
+                "",
+                "improper transfer function has no finite limit",
+            )),
         }
     }
 

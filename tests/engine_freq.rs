@@ -37,7 +37,10 @@ fn integrator_with_delay_under_p_control_has_analytic_margins() {
         // resolution (the brute-force value is a lower bound, ours must not be below it).
         let b = brute_ms(&p, &c, 1e-3 * kk, 1e3 * kk, 200_000);
         let ms = a.ms.unwrap();
-        assert!(ms >= b * (1.0 - 1e-12) && ms <= b * (1.0 + 1e-6), "ms {ms} brute {b}");
+        assert!(
+            ms >= b * (1.0 - 1e-12) && ms <= b * (1.0 + 1e-6),
+            "ms {ms} brute {b}"
+        );
     }
 }
 
@@ -73,8 +76,18 @@ fn praveen_kumar_boiler_ms_is_the_high_frequency_limit() {
     // relative-degree-one plant gives |L(j∞)| = (α/β)·K_d·k·τ_z/τ; the supremum of |S| is the
     // limit 1/(1 − |L∞|) (ERRATA: Ms ≈ 5.5, approached far above crossover).
     let (kp, ki, kd, al, be) = (3.9468, 1.5338, 2.5361, 0.05, 0.0334);
-    let p = Family::IpdtIr { k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 }.plant();
-    let c = Pid::parallel(kp, ki, kd).weights(0.2, 0.0).series_filter(lead_lag(al, be)).to_controller().unwrap();
+    let p = Family::IpdtIr {
+        k: 0.547,
+        tau: 1.06,
+        tau_z: 0.418,
+        theta: 0.1,
+    }
+    .plant();
+    let c = Pid::parallel(kp, ki, kd)
+        .weights(0.2, 0.0)
+        .series_filter(lead_lag(al, be))
+        .to_controller()
+        .unwrap();
     let a = analyze(&p, &c).unwrap();
     let linf = al / be * kd * 0.547 * 0.418 / 1.06;
     assert!((a.l_inf - linf).abs() < 1e-12);
@@ -89,13 +102,25 @@ fn praveen_kumar_boiler_ms_is_the_high_frequency_limit() {
 
 #[wasm_bindgen_test(unsupported = test)]
 fn neutral_unstable_and_ill_posed_loops_are_named() {
-    let boiler = Family::IpdtIr { k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 }.plant();
+    let boiler = Family::IpdtIr {
+        k: 0.547,
+        tau: 1.06,
+        tau_z: 0.418,
+        theta: 0.1,
+    }
+    .plant();
     // K_d large enough that |L(j∞)| = K_d·k·τ_z/τ > 1
     let a = analyze(&boiler, &Pid::ipd(2.0, 0.6, 6.0).to_controller().unwrap()).unwrap();
     assert!(!a.stable && a.verdict.starts_with("neutral-unstable"));
     assert!(a.ms.is_none());
     // ideal derivative on a biproper plant: ill-posed
-    let fo = Family::FopdtIr { k: 1.0, tau: 1.0, tau_z: 0.5, theta: 0.5 }.plant();
+    let fo = Family::FopdtIr {
+        k: 1.0,
+        tau: 1.0,
+        tau_z: 0.5,
+        theta: 0.5,
+    }
+    .plant();
     let b = analyze(&fo, &Pid::ipd(1.0, 1.0, 0.2).to_controller().unwrap()).unwrap();
     assert!(!b.stable && b.verdict.starts_with("ill-posed") && b.l_inf.is_infinite());
 }
@@ -104,9 +129,17 @@ fn neutral_unstable_and_ill_posed_loops_are_named() {
 fn shamsuzzoha_lee_example_1_loop() {
     // ERRATA: e^{−0.2s}/(s(s+1)), PID 3.997/1.893/0.499 (ideal derivative on the measurement
     // path Cy), set-point filter (0.3·1.9273 s + 1)/(1.0119 s² + 1.9273 s + 1): Ms = 1.652.
-    let p = Family::Ifoptd { k: 1.0, tau: 1.0, theta: 0.2 }.plant();
+    let p = Family::Ifoptd {
+        k: 1.0,
+        tau: 1.0,
+        theta: 0.2,
+    }
+    .plant();
     let fr = Tf::parse_desc(&[0.3 * 1.9273, 1.0], &[1.0119, 1.9273, 1.0]).unwrap();
-    let c = Pid::ideal(3.997, 1.893, 0.499).to_controller().unwrap().with_setpoint_filter(&fr);
+    let c = Pid::ideal(3.997, 1.893, 0.499)
+        .to_controller()
+        .unwrap()
+        .with_setpoint_filter(&fr);
     let a = analyze(&p, &c).unwrap();
     assert!(a.stable);
     // printed 1.65 (Table 1), ERRATA 1.652: three decimals
@@ -117,8 +150,15 @@ fn shamsuzzoha_lee_example_1_loop() {
 fn solve_for_ms_hits_the_target() {
     // P control of e^{−s}/s: Ms(K) increases with K; solve K for Ms = 1.8.
     let p = Family::Piptd { k: 1.0, theta: 1.0 }.plant();
-    let k = solve_for_ms(1.8, 0.05, 1.5, |k| Ok((p.clone(), Pid::parallel(k, 0.0, 0.0).to_controller()?))).unwrap();
+    let k = solve_for_ms(1.8, 0.05, 1.5, |k| {
+        Ok((p.clone(), Pid::parallel(k, 0.0, 0.0).to_controller()?))
+    })
+    .unwrap();
     let a = analyze(&p, &Pid::parallel(k, 0.0, 0.0).to_controller().unwrap()).unwrap();
     assert!((a.ms.unwrap() - 1.8).abs() < 1e-8);
-    assert!(solve_for_ms(0.5, 0.05, 1.5, |k| Ok((p.clone(), Pid::parallel(k, 0.0, 0.0).to_controller()?))).is_err());
+    assert!(solve_for_ms(0.5, 0.05, 1.5, |k| Ok((
+        p.clone(),
+        Pid::parallel(k, 0.0, 0.0).to_controller()?
+    )))
+    .is_err());
 }

@@ -55,10 +55,21 @@ fn first_order_lag_with_delay_open_loop_and_load() {
     let sc = Scenario::steps(20.0, 0.01, 0.5, 1.0, 10.0, -0.5);
     let res = simulate(&plant, &c, &sc).unwrap();
     let exact = |t: f64| {
-        let s = |t0: f64, a: f64| if t >= t0 { a * 2.0 * (1.0 - (-(t - t0) / 3.0).exp()) } else { 0.0 };
+        let s = |t0: f64, a: f64| {
+            if t >= t0 {
+                a * 2.0 * (1.0 - (-(t - t0) / 3.0).exp())
+            } else {
+                0.0
+            }
+        };
         s(0.5 + 1.234, 1.0) + s(10.0 + 1.234, -0.5)
     };
-    let err = res.t.iter().zip(&res.y).map(|(t, y)| (y - exact(*t)).abs()).fold(0.0, f64::max);
+    let err = res
+        .t
+        .iter()
+        .zip(&res.y)
+        .map(|(t, y)| (y - exact(*t)).abs())
+        .fold(0.0, f64::max);
     assert!(err <= 1e-6, "max error {err:e}");
     // the disturbance never reaches u (u = r here)
     assert!(res.u.iter().zip(&res.r).all(|(u, r)| (u - r).abs() < 1e-12));
@@ -121,7 +132,11 @@ fn boiler_reference(
         (y, v, vd, [x[1], y0dd, r - y, zd])
     };
     let dist = |t: f64, left: bool| {
-        let on = if left { t > dist_t + 1e-12 } else { t >= dist_t - 1e-12 };
+        let on = if left {
+            t > dist_t + 1e-12
+        } else {
+            t >= dist_t - 1e-12
+        };
         if on {
             1.0
         } else {
@@ -203,7 +218,13 @@ fn boiler_neutral_loop_against_fine_rk4() {
     // Praveen Kumar & Narayana Table 1, λ = 1.9 (ERRATA): ideal derivative on y, lead-lag
     // (α s + 1)/(β s + 1) with α = θ/2, set-point weight ε = 0.2. |L(j∞)| ≈ 0.82: neutral.
     let (kp, ki, kd, al, be, eps) = (3.9468, 1.5338, 2.5361, 0.05, 0.0334, 0.2);
-    let plant = Family::IpdtIr { k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 }.plant();
+    let plant = Family::IpdtIr {
+        k: 0.547,
+        tau: 1.06,
+        tau_z: 0.418,
+        theta: 0.1,
+    }
+    .plant();
     let c = Pid::parallel(kp, ki, kd)
         .weights(eps, 0.0)
         .series_filter(lead_lag(al, be))

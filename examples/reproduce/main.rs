@@ -11,12 +11,16 @@ mod shamsuzzoha_lee2008;
 
 fn main() {
     let only: Vec<String> = std::env::args().skip(1).collect();
-    let sections: Vec<(&str, fn() -> String)> = vec![
+    type Section = (&'static str, fn() -> String);
+    let sections: Vec<Section> = vec![
         ("engine", engine::report),
         ("arvanitis2012", arvanitis2012::report),
         ("shamsuzzoha_lee2008", shamsuzzoha_lee2008::report),
         ("kaya2020", kaya2020::report),
-        ("medarametla_manimozhi2018", medarametla_manimozhi2018::report),
+        (
+            "medarametla_manimozhi2018",
+            medarametla_manimozhi2018::report,
+        ),
         ("praveen_kumar_narayana", praveen_kumar_narayana::report),
     ];
     let mut doc = String::from(

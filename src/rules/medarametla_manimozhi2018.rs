@@ -1,20 +1,1264 @@
-//! (being written)
+//! Medarametla & Manimozhi (2018): PID controller with a second-order filter for integrating
+//! processes, tuned by pole placement on the second-order Laguerre shift of the dead time,
+//! with a set-point filter that makes the servo response `e^{−θs}/(ps+1)²` on the design
+//! model.
+//!
+//! P. K. Medarametla, M. Manimozhi, "Novel proportional-integral-derivative controller with
+//! second order filter for integrating processes", Asia-Pac. J. Chem. Eng. 13 (2018) e2195.
+//!
+//! # Structure (Fig. 1)
+//! `r → F → (+) → G_c → G_p`, one-degree-of-freedom `G_c` on the filtered error, so
+//! `Cr = F·G_c`, `Cy = G_c` with
+//! - Eq. (4a), PIPTD: `G_c = (k_p + k_i/s + k_d s)·(a₁s+1)²/(b₁s+1)²`;
+//! - Eq. (5a), the others: `G_c = (k_p + k_i/s + k_d s)·(a₁s+1)²/(b₂s²+b₁s+1)`;
+//! - `a₁ = θ/4` (Eqs. 14d, 22d, 23d, 30d), so that `(a₁s+1)²` cancels the denominator of the
+//!   Laguerre shift and the characteristic equation becomes polynomial (Eqs. 11, 19).
+//!
+//! # Design = coefficient matching as one linear solve
+//! **Approximation used only inside the derivation** (Eq. 10, the second-order Laguerre
+//! shift): `e^{−θs} ≈ (1 − θs/4)²/(1 + θs/4)²`. The plant keeps its exact dead time
+//! everywhere else (simulation, Ms, stability).
+//!
+//! With `P = N(s)/D(s)·e^{−θs}` the Laguerre characteristic equation (Eqs. 11, 19, 27 with
+//! Eq. 10 and a₁ = θ/4) is
+//! `CE(s) = s·D(s)·(b₂s² + b₁s + 1) + N(s)·(k_d s² + k_p s + k_i)·(1 − θs/4)²`,
+//! and the design asks `CE(s) = N(0)·k_i·T(s)` with the target `T(0) = 1` of Eq. (13), (21),
+//! (29) or (31). Both sides are affine in `x = (k_p, k_i, k_d, b₁, b₂)` (ERRATA.md), so
+//! matching the coefficients of `s¹ … sⁿ` (`s⁰` matches identically) is a linear system
+//! solved with nalgebra. The printed closed forms (Eq. 14, Eqs. 22, 23, 30) are cross-checks
+//! in the tests; Eqs. (23a)-(23f) as extracted are damaged (ERRATA.md) and are not used.
+//!
+//! For PIPTD the filter is the square `(b₁s+1)²` (Eq. 4): the same system is solved in
+//! `(k_p, k_d, 2b₁, b₁²)` for a given `k_i` (four equations), which is affine in `k_i`;
+//! the condition `(2b₁)² = 4·b₁²` then is a quadratic in `k_i` whose roots are `k_i = 0`
+//! (a degenerate solution: k_p = 0, b₁ = −θ/4) and the design, Eq. (14).
+//!
+//! # Deviations and choices (documented here and in the reproduction report)
+//! - Table 3, jacketed CSTR: k_d prints 160,460; the solve gives 1,604,557.8 (the exact
+//!   rational solution; ERRATA.md quotes 1,604,559): a dropped digit. Every other Table 3
+//!   entry reproduces to its printed digits.
+//! - Eq. (38) is printed for z > 0 (target (λs+1)⁴(1+zs)). For z ≤ 0 the paper gives the
+//!   target (λs+1)⁵ (Eq. 31, z < 0) but no filter; we use the same construction (F cancels
+//!   the designed closed-loop poles and the PID zeros),
+//!   `F = (λs+1)⁵/((k_d/k_i·s² + k_p/k_i·s + 1)(a₁s+1)²(ps+1)²)`, so that the design-model
+//!   servo response is `(1+zs)(1−θs/4)²/((1+θs/4)²(ps+1)²)` (the right-half-plane zero
+//!   cannot be cancelled). For z = 0 the target of Eq. (29) degenerates to (λs+1)⁴ and
+//!   b₂ = 0 (first-order filter).
+//! - **The set-point filter the paper simulated.** Eqs. (34)-(38) print `F₂ = 1/(ps+1)²`
+//!   (servo `e^{−θs}/(ps+1)²`, Eq. 36). Examples 1 and 4 (Eqs. 35, 38) reproduce Tables 4-5
+//!   with it, but the Eq. (37) examples (2, 3, 5) reproduce only with `1/(ps+1)³`: with the
+//!   square the servo IAE is θ + 2p (Ex. 2: 4.40, Ex. 3: 3.00), the printed 6.1 and 4.00 are
+//!   θ + 3p, and TV and t_s match only with the cube too. The parameter `p_order` (2 by
+//!   default, as printed; 3 reproduces the simulations) selects it; the presets of Examples
+//!   2, 3, 5 use 3. Example 5 was simulated with p = 1 (the text says 0.9): only p = 1 gives
+//!   its printed servo rows (4.419, 2.21, 0.01; perturbed 4.494, 3.968, 0.039).
+//! - **Ms as printed is approximate.** Example 1's true Ms is the high-frequency limit
+//!   1/(1 − |L(j∞)|) = 2.042 (the controller is improper by one on a relative-degree-one
+//!   plant); Example 4's λ = 1.07 gives Ms 2.12, not 2.35; Example 5's "Ms 2.81 at
+//!   λ = 1.895" is the Ms of that controller on the process of Eq. (49) (2.851), not on the
+//!   model of Eq. (50) it was designed for (1.774). The Ms of Examples 4-6 (2.35, 2.81,
+//!   3.52) are those of the Anil & Padma Sree settings of Table 2, which our mapping of
+//!   them reproduces to the printed digits (2.3500, 2.8128, 3.5209).
+//! - Table 1's first row is labelled DIPTD in the extraction; it is the PIPTD fit
+//!   (it gives λ = 6.71 for Example 1, θ = 5, Ms = 2, as the text says). The IFOPTD-with-zero
+//!   fit is truncated after "7.817"; the missing factor is Ms⁴ (it then gives λ = 1.076 for
+//!   Example 4, printed 1.07). That fit has no z argument: it was made for one z/τ which the
+//!   paper does not state, so its use always adds a warning.
 
-use super::{MethodInfo, Params, Preset, Tuning};
-use crate::error::Result;
-use crate::plant::Plant;
+use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use crate::controller::{Controller, Pid};
+use crate::error::{Error, Result};
+use crate::plant::{Family, Plant};
+use crate::poly::Poly;
+use crate::tf::Tf;
+use nalgebra::{DMatrix, DVector};
+use serde_json::{json, Map, Value};
+
+/// Method id (API.md).
+pub const ID: &str = "medarametla";
+
+/// Citation of the paper.
+pub const CITATION: &str =
+    "P. K. Medarametla, M. Manimozhi, \"Novel proportional-integral-derivative \
+controller with second order filter for integrating processes\", Asia-Pacific Journal of Chemical \
+Engineering 13 (2018) e2195, doi:10.1002/apj.2195";
+
+/// Families the design covers (Eqs. 1a-1d, 24a).
+pub const FAMILIES: [&str; 5] = [
+    "piptd",
+    "diptd",
+    "ifoptd",
+    "ifoptd_zero",
+    "ifoptd_zero_unstable",
+];
+
+/// Eq. (10): the second-order Laguerre shift `(1 − θs/4)²/(1 + θs/4)²`, an approximation of
+/// `e^{−θs}` used **only inside the design** (and by tests that check the design exactly).
+pub fn laguerre2(theta: f64) -> Tf {
+    let a = theta / 4.0;
+    Tf {
+        num: Poly::linear(-a, 1.0).pow(2),
+        den: Poly::linear(a, 1.0).pow(2),
+    }
+}
+
+/// Which desired characteristic polynomial the design places.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TargetKind {
+    /// Eq. (13), PIPTD: `(λs+1)²(1+θs/4)²`.
+    Eq13,
+    /// Eq. (21), DIPTD and IFOPTD: `(λs+1)³(1+θs/4)²`.
+    Eq21,
+    /// Eq. (29), IFOPTD with a zero (z ≥ 0) and the unstable variant: `(λs+1)⁴(1+zs)`.
+    Eq29,
+    /// Eq. (31), negative z: `(λs+1)⁵`.
+    Eq31,
+}
+
+impl TargetKind {
+    /// Equation label.
+    pub fn label(&self) -> &'static str {
+        match self {
+            TargetKind::Eq13 => "Eq. (13): (λs+1)²(1+θs/4)²",
+            TargetKind::Eq21 => "Eq. (21): (λs+1)³(1+θs/4)²",
+            TargetKind::Eq29 => "Eq. (29): (λs+1)⁴(1+zs)",
+            TargetKind::Eq31 => "Eq. (31): (λs+1)⁵",
+        }
+    }
+}
+
+/// A Medarametla–Manimozhi design: gains, filter and the data that defines it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Design {
+    /// The plant family designed for.
+    pub family: Family,
+    /// Closed-loop time constant λ.
+    pub lambda: f64,
+    /// Proportional gain.
+    pub kp: f64,
+    /// Integral gain.
+    pub ki: f64,
+    /// Derivative gain.
+    pub kd: f64,
+    /// Filter lead `a₁ = θ/4`.
+    pub a1: f64,
+    /// Filter `b₁` (PIPTD: the filter is `(b₁s+1)²`).
+    pub b1: f64,
+    /// Filter `b₂` (PIPTD: `b₁²`, the square filter of Eq. 4).
+    pub b2: f64,
+    /// True for PIPTD, whose filter is `(b₁s+1)²` (Eq. 4).
+    pub square_filter: bool,
+    /// The target used.
+    pub target_kind: TargetKind,
+    /// The desired characteristic polynomial `T(s)`, `T(0) = 1`.
+    pub target: Poly,
+}
+
+impl Design {
+    /// The controller filter `(a₁s+1)²/(b₂s²+b₁s+1)` (Eq. 5a) or `(a₁s+1)²/(b₁s+1)²` (Eq. 4a).
+    pub fn series_filter(&self) -> Tf {
+        Tf {
+            num: Poly::linear(self.a1, 1.0).pow(2),
+            den: self.filter_den(),
+        }
+    }
+
+    /// `b₂s² + b₁s + 1` (for PIPTD `(b₁s+1)²`).
+    pub fn filter_den(&self) -> Poly {
+        if self.square_filter {
+            Poly::linear(self.b1, 1.0).pow(2)
+        } else {
+            Poly::from_asc(&[1.0, self.b1, self.b2])
+        }
+    }
+
+    /// `k_d/k_i s² + k_p/k_i s + 1`: the PID zeros normalized (Eq. 33's denominator).
+    pub fn pid_zeros(&self) -> Poly {
+        Poly::from_asc(&[1.0, self.kp / self.ki, self.kd / self.ki])
+    }
+
+    /// The set-point filter with parameter `p` as printed: Eq. (35) for PIPTD, Eq. (37) for
+    /// DIPTD and IFOPTD, Eq. (38) for IFOPTD with a zero (and its z ≤ 0 extension, see the
+    /// module doc); the `F₂ = 1/(ps+1)²` section of Eq. (34).
+    pub fn setpoint_filter(&self, p: f64) -> Tf {
+        self.setpoint_filter_order(p, 2)
+    }
+
+    /// The set-point filter with `F₂ = 1/(ps+1)ⁿ`. The printed Eqs. (34)-(38) have n = 2; the
+    /// simulated servo rows of Tables 4-5 for Examples 2, 3 and 5 (the Eq. 37 families) are
+    /// reproduced only with n = 3 (module doc).
+    pub fn setpoint_filter_order(&self, p: f64, n: u32) -> Tf {
+        let lam = Poly::linear(self.lambda, 1.0);
+        let pp = Poly::linear(p, 1.0).pow(n);
+        let (num, den) = match self.target_kind {
+            // Eq. (35): (λs+1)² / ((k_d/k_i s² + k_p/k_i s + 1)(ps+1)²)
+            TargetKind::Eq13 => (lam.pow(2), self.pid_zeros().mul(&pp)),
+            // Eq. (37): (λs+1)³ / ((k_d/k_i s² + k_p/k_i s + 1)(ps+1)²)
+            TargetKind::Eq21 => (lam.pow(3), self.pid_zeros().mul(&pp)),
+            // Eq. (38): (λs+1)⁴ / ((k_d/k_i s² + k_p/k_i s + 1)(a₁s+1)²(ps+1)²)
+            TargetKind::Eq29 => (
+                lam.pow(4),
+                self.pid_zeros()
+                    .mul(&Poly::linear(self.a1, 1.0).pow(2))
+                    .mul(&pp),
+            ),
+            // Eq. (38) extended to the target of Eq. (31) (module doc).
+            TargetKind::Eq31 => (
+                lam.pow(5),
+                self.pid_zeros()
+                    .mul(&Poly::linear(self.a1, 1.0).pow(2))
+                    .mul(&pp),
+            ),
+        };
+        Tf { num, den }
+    }
+
+    /// The PID × filter, before the set-point filter.
+    pub fn pid(&self) -> Pid {
+        Pid::parallel(self.kp, self.ki, self.kd).series_filter(self.series_filter())
+    }
+
+    /// The controller of Fig. 1: `Cy = G_c`, `Cr = F·G_c`.
+    pub fn controller(&self, p: f64) -> Result<Controller> {
+        self.controller_order(p, 2)
+    }
+
+    /// The controller with `F₂ = 1/(ps+1)ⁿ` in the set-point filter (n = 2 or 3).
+    pub fn controller_order(&self, p: f64, n: u32) -> Result<Controller> {
+        if !(p.is_finite() && p > 0.0) {
+            return Err(Error::new(
+                "params.p",
+                format!("must be finite and > 0 (got {p})"),
+            ));
+        }
+        if !(2..=3).contains(&n) {
+            return Err(Error::new(
+                "params.p_order",
+                format!("must be 2 or 3 (got {n})"),
+            ));
+        }
+        self.pid()
+            .setpoint_filter(self.setpoint_filter_order(p, n))
+            .to_controller()
+    }
+
+    /// The characteristic polynomial with the Laguerre shift (Eqs. 11, 19, 27 with Eq. 10):
+    /// `s·D·(b₂s²+b₁s+1) + N·(k_d s²+k_p s+k_i)(1−θs/4)²`.
+    pub fn laguerre_ce(&self) -> Poly {
+        let r = self.family.rational();
+        let th = self.family.theta();
+        let pid = Poly::from_asc(&[self.ki, self.kp, self.kd]);
+        Poly::s()
+            .mul(&r.den)
+            .mul(&self.filter_den())
+            .add(&r.num.mul(&pid).mul(&Poly::linear(-th / 4.0, 1.0).pow(2)))
+    }
+
+    /// The design-model servo response `y/r` with the Laguerre shift in place of the delay:
+    /// `(1−θs/4)²/((1+θs/4)²(ps+1)²)` (times `(1+zs)` for the z < 0 target, Eq. 31).
+    pub fn laguerre_servo(&self, p: f64) -> Tf {
+        self.laguerre_servo_order(p, 2)
+    }
+
+    /// The design-model servo response with `F₂ = 1/(ps+1)ⁿ`.
+    pub fn laguerre_servo_order(&self, p: f64, n: u32) -> Tf {
+        let mut t = laguerre2(self.family.theta()).mul(&Tf {
+            num: Poly::constant(1.0),
+            den: Poly::linear(p, 1.0).pow(n),
+        });
+        if self.target_kind == TargetKind::Eq31 {
+            if let Family::IfoptdZero { z, .. } = self.family {
+                t.num = t.num.mul(&Poly::linear(z, 1.0));
+            }
+        }
+        t
+    }
+}
+
+/// `(λs+1)ⁿ`.
+fn lam_pow(lambda: f64, n: u32) -> Poly {
+    Poly::linear(lambda, 1.0).pow(n)
+}
+
+/// The target of the family (Eqs. 13, 21, 29, 31), normalized to `T(0) = 1`.
+pub fn target(family: &Family, lambda: f64) -> (TargetKind, Poly) {
+    let th = family.theta();
+    let lag = Poly::linear(th / 4.0, 1.0).pow(2);
+    match *family {
+        Family::Piptd { .. } => (TargetKind::Eq13, lam_pow(lambda, 2).mul(&lag)),
+        Family::Diptd { .. } | Family::Ifoptd { .. } => {
+            (TargetKind::Eq21, lam_pow(lambda, 3).mul(&lag))
+        }
+        Family::IfoptdZero { z, .. } if z < 0.0 => (TargetKind::Eq31, lam_pow(lambda, 5)),
+        Family::IfoptdZero { z, .. } | Family::IfoptdZeroUnstable { z, .. } => (
+            TargetKind::Eq29,
+            lam_pow(lambda, 4).mul(&Poly::linear(z, 1.0)),
+        ),
+        // not a family of this paper; callers reject it before
+        _ => (TargetKind::Eq21, lam_pow(lambda, 3).mul(&lag)),
+    }
+}
+
+/// Checks the family belongs to the paper and its parameters allow the design.
+fn check_family(family: &Family) -> Result<()> {
+    if !FAMILIES.contains(&family.id()) {
+        return Err(Error::new(
+            "plant.family",
+            format!(
+                "method '{ID}' applies to families {}; got '{}'",
+                FAMILIES.join(", "),
+                family.id()
+            ),
+        ));
+    }
+    family.validate().map_err(|e| e.within("plant"))?;
+    let th = family.theta();
+    if th <= 0.0 {
+        return Err(Error::new(
+            "plant.theta",
+            "must be > 0 for this method (the design places poles at −4/θ and a₁ = θ/4)",
+        ));
+    }
+    if let Family::IfoptdZeroUnstable { z, .. } = *family {
+        if z <= 0.0 {
+            return Err(Error::new(
+                "plant.z",
+                "must be > 0 for ifoptd_zero_unstable (Eq. 29 places a pole at −1/z; Eq. 31 is given only for the stable-pole process)",
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The coefficient-matching columns: `CE(s) − N(0)k_i T(s) = c₀(s) + Σ_j x_j c_j(s)` for
+/// `x = (k_p, k_i, k_d, b₁, b₂)`.
+fn columns(family: &Family, tgt: &Poly) -> (Poly, [Poly; 5]) {
+    let r = family.rational();
+    let th = family.theta();
+    let l = Poly::linear(-th / 4.0, 1.0).pow(2); // (1 − θs/4)², Eq. (10)'s numerator
+    let s = Poly::s();
+    let sd = s.mul(&r.den);
+    let n0 = r.num.coef(0);
+    let c_kp = r.num.mul(&s).mul(&l);
+    let c_ki = r.num.mul(&l).sub(&tgt.scale(n0));
+    let c_kd = r.num.mul(&s).mul(&s).mul(&l);
+    let c_b1 = sd.mul(&s);
+    let c_b2 = sd.mul(&s).mul(&s);
+    (sd, [c_kp, c_ki, c_kd, c_b1, c_b2])
+}
+
+/// Solves a square system with nalgebra's LU after row and column equilibration (the
+/// coefficients span many decades for plants such as the CSTR); `None` when singular or not
+/// finite.
+fn lin_solve(m: DMatrix<f64>, rhs: DVector<f64>) -> Option<DVector<f64>> {
+    let scale = m.amax();
+    if !(scale.is_finite() && scale > 0.0) || m.nrows() != m.ncols() {
+        return None;
+    }
+    let n = m.nrows();
+    let mut m = m;
+    let mut rhs = rhs;
+    for i in 0..n {
+        let r = m.row(i).amax();
+        if r > 0.0 {
+            m.row_mut(i).scale_mut(1.0 / r);
+            rhs[i] /= r;
+        }
+    }
+    let mut cs = vec![1.0; n];
+    for (j, c) in cs.iter_mut().enumerate() {
+        let a = m.column(j).amax();
+        if a > 0.0 {
+            *c = 1.0 / a;
+            m.column_mut(j).scale_mut(*c);
+        }
+    }
+    let mut x = m.lu().solve(&rhs)?;
+    for (j, c) in cs.iter().enumerate() {
+        x[j] *= c;
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// The design for a plant family and λ (no validation of the resulting filter; see
+/// [`design`]).
+fn solve(family: &Family, lambda: f64) -> Result<Design> {
+    let (kind, tgt) = target(family, lambda);
+    let (c0, cols) = columns(family, &tgt);
+    let th = family.theta();
+    let singular = || {
+        Error::new(
+            "params.lambda",
+            format!("the coefficient-matching system is singular for λ = {lambda} on this plant"),
+        )
+    };
+    let square = matches!(family, Family::Piptd { .. });
+    let n = tgt.degree();
+    let (kp, ki, kd, b1, b2) = if square {
+        // Unknowns (k_p, k_d, B₁ = 2b₁, B₂ = b₁²) for given k_i: rows s¹..s⁴.
+        let idx = [0usize, 2, 3, 4];
+        let m = DMatrix::from_fn(n, 4, |i, j| cols[idx[j]].coef(i + 1));
+        let r0 = DVector::from_fn(n, |i, _| -c0.coef(i + 1));
+        let r1 = DVector::from_fn(n, |i, _| -cols[1].coef(i + 1));
+        let x0 = lin_solve(m.clone(), r0).ok_or_else(singular)?;
+        let x1 = lin_solve(m, r1).ok_or_else(singular)?;
+        // (B₁(k_i))² − 4B₂(k_i) = a k_i² + b k_i + c with c = 0 identically (the degenerate
+        // root k_i = 0); the design is the other root.
+        let a = x1[2] * x1[2];
+        let b = 2.0 * x0[2] * x1[2] - 4.0 * x1[3];
+        if a == 0.0 || !a.is_finite() || !b.is_finite() {
+            return Err(singular());
+        }
+        let ki = -b / a;
+        let kp = x0[0] + ki * x1[0];
+        let kd = x0[1] + ki * x1[1];
+        let b1 = 0.5 * (x0[2] + ki * x1[2]);
+        (kp, ki, kd, b1, b1 * b1)
+    } else {
+        let m = DMatrix::from_fn(n, 5, |i, j| cols[j].coef(i + 1));
+        let rhs = DVector::from_fn(n, |i, _| -c0.coef(i + 1));
+        if m.nrows() != 5 {
+            return Err(singular());
+        }
+        let x = lin_solve(m, rhs).ok_or_else(singular)?;
+        (x[0], x[1], x[2], x[3], x[4])
+    };
+    for (name, v) in [
+        ("k_p", kp),
+        ("k_i", ki),
+        ("k_d", kd),
+        ("b₁", b1),
+        ("b₂", b2),
+    ] {
+        if !v.is_finite() {
+            return Err(Error::new(
+                "params.lambda",
+                format!("the design gives a non-finite {name} for λ = {lambda}"),
+            ));
+        }
+    }
+    Ok(Design {
+        family: *family,
+        lambda,
+        kp,
+        ki,
+        kd,
+        a1: th / 4.0,
+        b1,
+        b2,
+        square_filter: square,
+        target_kind: kind,
+        target: tgt,
+    })
+}
+
+/// Why a design is not usable: filter poles or PID zeros in the closed right half plane.
+fn defect(d: &Design) -> Option<String> {
+    if d.ki == 0.0 {
+        return Some("k_i = 0 (no integral action)".into());
+    }
+    if d.b1 < 0.0 {
+        return Some(format!(
+            "b₁ = {:.6} < 0: the controller filter b₂s²+b₁s+1 would be unstable",
+            d.b1
+        ));
+    }
+    if d.b2 < 0.0 {
+        return Some(format!(
+            "b₂ = {:.6} < 0: the controller filter b₂s²+b₁s+1 would be unstable",
+            d.b2
+        ));
+    }
+    if d.b1 == 0.0 && d.b2 == 0.0 && !d.square_filter {
+        return Some("b₁ = b₂ = 0: the controller would be improper by three".into());
+    }
+    if d.kp / d.ki < 0.0 || d.kd / d.ki < 0.0 {
+        return Some(format!(
+            "k_p/k_i = {:.6}, k_d/k_i = {:.6}: the PID zeros lie in the right half plane, so the \
+             set-point filter of Eqs. (35)/(37)/(38), which cancels them, would be unstable",
+            d.kp / d.ki,
+            d.kd / d.ki
+        ));
+    }
+    None
+}
+
+/// The design for `family` and `λ`, validated: a stable controller filter, integral action,
+/// PID zeros in the left half plane (the set-point filter cancels them). Errors name
+/// `params.lambda` and say which way λ should move when a nearby λ works.
+pub fn design(family: &Family, lambda: f64) -> Result<Design> {
+    check_family(family)?;
+    if !(lambda.is_finite() && lambda > 0.0) {
+        return Err(Error::new(
+            "params.lambda",
+            format!("must be finite and > 0 (got {lambda})"),
+        ));
+    }
+    let d = solve(family, lambda)?;
+    if let Some(why) = defect(&d) {
+        let ok = |l: f64| {
+            solve(family, l)
+                .map(|d| defect(&d).is_none())
+                .unwrap_or(false)
+        };
+        let hint = if ok(2.0 * lambda) || ok(4.0 * lambda) {
+            "λ too small: "
+        } else if ok(0.5 * lambda) || ok(0.25 * lambda) {
+            "λ too large: "
+        } else {
+            ""
+        };
+        return Err(Error::new(
+            "params.lambda",
+            format!("{hint}{why} (λ = {lambda})"),
+        ));
+    }
+    Ok(d)
+}
+
+/// Eq. (14), the printed PIPTD closed form `(k_p, k_i, k_d, b₁)` (a cross-check of the
+/// solve; the paper's a₁ = θ/4).
+pub fn piptd_closed_form(k: f64, theta: f64, lambda: f64) -> (f64, f64, f64, f64) {
+    let q = k * (4.0 * lambda + 3.0 * theta).powi(2);
+    (
+        (32.0 * lambda + 16.0 * theta) / q,
+        16.0 / q,
+        theta * (8.0 * lambda - theta) / q,
+        theta * (4.0 * lambda - theta) / (16.0 * lambda + 12.0 * theta),
+    )
+}
+
+/// Eq. (22), the printed DIPTD closed form `(k_p, k_i, k_d, b₁, b₂)`.
+pub fn diptd_closed_form(k: f64, theta: f64, lambda: f64) -> (f64, f64, f64, f64, f64) {
+    let (l, t) = (lambda, theta);
+    let q = 16.0 * l.powi(3) + 48.0 * l * l * t + 24.0 * t * t * l + 3.0 * t.powi(3);
+    (
+        (48.0 * l + 16.0 * t) / (k * q),
+        16.0 / (k * q),
+        8.0 * (6.0 * l * l + 6.0 * l * t + t * t) / (k * q),
+        (16.0 * l.powi(3) * t - 6.0 * t.powi(3) * l - t.powi(4)) / (2.0 * q),
+        l.powi(3) * t * t / q,
+    )
+}
+
+/// Eq. (30), the printed closed form for IFOPTD with a zero (`upper = true`, the ± upper
+/// sign) and the integrating process with a zero and an unstable pole (`upper = false`):
+/// `(k_p, k_i, k_d, b₁, b₂)`.
+pub fn zero_closed_form(
+    k: f64,
+    tau: f64,
+    z: f64,
+    theta: f64,
+    lambda: f64,
+    upper: bool,
+) -> (f64, f64, f64, f64, f64) {
+    let sg = if upper { 1.0 } else { -1.0 };
+    let (l, t, th) = (lambda, tau, theta);
+    let q = k * (4.0 * l + th).powi(3) * (16.0 * t - sg * 4.0 * l + sg * 3.0 * th);
+    let kp = 8.0 * (8.0 * l + th) * (4.0 * t + sg * th).powi(2) / q;
+    let ki = 16.0 * (4.0 * t + sg * th).powi(2) / q;
+    let kd = 8.0
+        * (32.0 * l.powi(4) - sg * 128.0 * l.powi(3) * t
+            + 192.0 * l * l * t * t
+            + 64.0 * l * t * t * th
+            + sg * 8.0 * l * t * th * th
+            + 6.0 * th * th * t * t
+            + sg * th.powi(3) * t)
+        / q;
+    let den = 32.0 * t - sg * 8.0 * l + sg * 6.0 * th;
+    let b1 = (8.0 * l * t + sg * 4.0 * l * th - sg * 8.0 * l * z - 6.0 * t * th
+        + 32.0 * t * z
+        + sg * 6.0 * th * z
+        - sg * th * th)
+        / den;
+    let b2 = z * (8.0 * l * t + sg * 4.0 * l * th - 6.0 * t * th - sg * th * th) / den;
+    (kp, ki, kd, b1, b2)
+}
+
+// ---------------------------------------------------------------------------------------
+// λ selection: Table 1 fits
+// ---------------------------------------------------------------------------------------
+
+/// λ from the Table 1 fits for a required Ms, with warnings when the fit is used outside the
+/// ranges it was made for (or, for IFOPTD with a zero, always: the fit has no z argument).
+/// Errors name `params.fit_ms` (no fit for the family, or a non-positive result).
+pub fn lambda_fit(family: &Family, ms: f64) -> Result<(f64, Vec<String>)> {
+    if !(ms.is_finite() && ms > 1.0) {
+        return Err(Error::new(
+            "params.fit_ms",
+            format!("must be finite and > 1 (got {ms})"),
+        ));
+    }
+    let th = family.theta();
+    let mut w = Vec::new();
+    let mut range = |name: &str, x: f64, lo: f64, hi: f64| {
+        if x < lo || x > hi {
+            w.push(format!(
+                "Table 1 fit used outside its range: {name} = {x:.4} not in [{lo}, {hi}]"
+            ));
+        }
+    };
+    let lam = match *family {
+        Family::Piptd { .. } => {
+            // Table 1, first row (labelled DIPTD in the extraction; it is the PIPTD fit)
+            range("Ms", ms, 1.3, 2.5);
+            (0.4192 * ms * ms - 1.401 * ms + 2.48) / (ms - 0.9904) * th
+        }
+        Family::Diptd { .. } => {
+            // Table 1, second row, R² = 1
+            range("Ms", ms, 1.3, 2.5);
+            2.438 / (ms - 1.016) * th
+        }
+        Family::Ifoptd { tau, .. } => {
+            let r = th / tau;
+            let m = ms;
+            if r <= 0.5 {
+                range("θ/τ", r, 0.1, 0.5);
+                range("Ms", m, 1.3, 2.5);
+                th * (117.3 - 122.6 * r - 198.7 * m + 91.08 * r * r + 143.9 * r * m + 131.7 * m * m
+                    - 86.77 * r * r * m
+                    - 55.14 * r * m * m
+                    - 39.61 * m.powi(3)
+                    + 20.75 * m * m * r * r
+                    + 6.68 * r * m.powi(3)
+                    + 4.532 * m.powi(4))
+            } else {
+                range("θ/τ", r, 0.5, 1.2);
+                range("Ms", m, 1.5, 3.0);
+                th * (27.7 - 10.62 * r - 34.5 * m + 11.12 * r * r + 3.332 * r * m + 18.64 * m * m
+                    - 9.092 * r * r * m
+                    + 2.157 * r * m * m
+                    - 4.991 * m.powi(3)
+                    + 1.895 * m * m * r * r
+                    - 0.7633 * r * m.powi(3)
+                    + 0.5505 * m.powi(4))
+            }
+        }
+        Family::IfoptdZero { tau, z, .. } => {
+            let r = th / tau;
+            let m = ms;
+            range("θ/τ", r, 0.1, 0.5);
+            range("Ms", m, 1.5, 2.5);
+            if z < 0.0 {
+                w.push(
+                    "Table 1's IFOPTD-with-zero fit was made for a positive zero; z < 0 here"
+                        .into(),
+                );
+            }
+            w.push(format!(
+                "Table 1's IFOPTD-with-zero fit has no z argument (made for one unstated z/τ; here z/τ = {:.4}); check the true Ms (details.ms)",
+                z / tau
+            ));
+            th * (202.8 - 192.8 * r - 351.5 * m + 145.6 * r * r + 227.2 * r * m + 233.0 * m * m
+                - 136.9 * r * r * m
+                - 86.81 * r * m * m
+                - 69.38 * m.powi(3)
+                + 32.21 * m * m * r * r
+                + 10.52 * r * m.powi(3)
+                + 7.817 * m.powi(4))
+        }
+        _ => {
+            return Err(Error::new(
+                "params.fit_ms",
+                format!(
+                    "Table 1 has no fit for family '{}'; use target_ms",
+                    family.id()
+                ),
+            ))
+        }
+    };
+    if !(lam.is_finite() && lam > 0.0) {
+        return Err(Error::new(
+            "params.fit_ms",
+            format!("the Table 1 fit gives λ = {lam} (not > 0) for Ms = {ms}"),
+        ));
+    }
+    Ok((lam, w))
+}
+
+// ---------------------------------------------------------------------------------------
+// Registry interface
+// ---------------------------------------------------------------------------------------
 
 /// Methods of this paper.
 pub fn methods() -> Vec<MethodInfo> {
-    vec![]
+    vec![MethodInfo {
+        id: ID.into(),
+        title: "Medarametla & Manimozhi 2018: PID × second-order filter by pole placement, set-point filter".into(),
+        citation: CITATION.into(),
+        families: FAMILIES.iter().map(|f| f.to_string()).collect(),
+        structure: "1-DOF PID × (a₁s+1)²/(b₂s²+b₁s+1) (PIPTD: /(b₁s+1)²) on the error, set-point filter F (Eqs. 35, 37, 38)".into(),
+        params: vec![
+            ParamInfo::number("lambda", "λ (closed-loop time constant)", None, 0.01, 100.0)
+                .help("required unless target_ms or fit_ms is given"),
+            ParamInfo::number("p", "p (set-point filter time constant)", None, 0.01, 100.0)
+                .help("default θ; the paper tunes p between 0.5θ and 3θ"),
+            ParamInfo::number("p_order", "n in F₂ = 1/(ps+1)ⁿ", Some(2.0), 2.0, 3.0).help(
+                "2 as printed (Eqs. 34-38); 3 reproduces the paper's simulated Examples 2, 3, 5",
+            ),
+            ParamInfo::number("target_ms", "target Ms (λ solved exactly)", None, 1.05, 10.0)
+                .help("λ is solved so that the true Ms (exact delay) equals this value"),
+            ParamInfo::number("fit_ms", "Ms for the Table 1 fit", None, 1.05, 10.0)
+                .help("λ from the paper's Table 1 fit for this Ms (warns outside its ranges)"),
+        ],
+    }]
 }
 
-/// Presets of this paper.
-pub fn presets() -> Vec<Preset> {
-    vec![]
+fn named_and_details(d: &Design, p: f64, order: u32) -> (Map<String, Value>, Map<String, Value>) {
+    let mut named = Map::new();
+    named.insert("kp".into(), json!(d.kp));
+    named.insert("ki".into(), json!(d.ki));
+    named.insert("kd".into(), json!(d.kd));
+    named.insert("a1".into(), json!(d.a1));
+    named.insert("b1".into(), json!(d.b1));
+    if !d.square_filter {
+        named.insert("b2".into(), json!(d.b2));
+    }
+    named.insert("p".into(), json!(p));
+    named.insert("lambda".into(), json!(d.lambda));
+    let mut det = Map::new();
+    det.insert("lambda".into(), json!(d.lambda));
+    det.insert("target".into(), json!(d.target_kind.label()));
+    det.insert("target_desc".into(), json!(d.target.to_desc()));
+    det.insert("laguerre_ce_desc".into(), json!(d.laguerre_ce().to_desc()));
+    det.insert(
+        "filter".into(),
+        json!(if d.square_filter {
+            "(a1 s + 1)^2 / (b1 s + 1)^2 (Eq. 4a)"
+        } else {
+            "(a1 s + 1)^2 / (b2 s^2 + b1 s + 1) (Eq. 5a)"
+        }),
+    );
+    let sp = d.setpoint_filter_order(p, order);
+    det.insert("p_order".into(), json!(order));
+    det.insert(
+        "setpoint_filter".into(),
+        json!({"num": sp.num.to_desc(), "den": sp.den.to_desc()}),
+    );
+    det.insert(
+        "approximation".into(),
+        json!(
+            "design only: e^{-θs} ≈ (1 − θs/4)²/(1 + θs/4)² (Eq. 10, second-order Laguerre shift)"
+        ),
+    );
+    (named, det)
+}
+
+/// The full tuning for a family (λ given, or from `target_ms`/`fit_ms`).
+pub fn tune_family(family: &Family, params: &Params) -> Result<Tuning> {
+    check_family(family)?;
+    let th = family.theta();
+    let p = match params.opt_f64("p")? {
+        Some(p) if p > 0.0 => p,
+        Some(p) => return Err(Error::new("params.p", format!("must be > 0 (got {p})"))),
+        None => th,
+    };
+    let mut warnings: Vec<String> = Vec::new();
+    let mut source = "given";
+    let given = params.opt_f64("lambda")?;
+    let fit = params.opt_f64("fit_ms")?;
+    let target_ms = params.opt_f64("target_ms")?;
+    let mut fit_lambda = None;
+    if let Some(ms) = fit {
+        let (l, w) = lambda_fit(family, ms)?;
+        warnings.extend(w);
+        fit_lambda = Some(l);
+    }
+    let lambda = if let Some(ms) = target_ms {
+        source = "target_ms";
+        lambda_for_ms(family, ms)?
+    } else if let Some(l) = given {
+        if fit.is_some() {
+            warnings.push("both lambda and fit_ms given: lambda used".into());
+        }
+        l
+    } else if let Some(l) = fit_lambda {
+        source = "fit_ms";
+        l
+    } else {
+        return Err(Error::new(
+            "params.lambda",
+            "is required (or give target_ms or fit_ms)",
+        ));
+    };
+    let order = match params.opt_f64("p_order")? {
+        None => 2,
+        Some(x) if x == 2.0 || x == 3.0 => x as u32,
+        Some(x) => {
+            return Err(Error::new(
+                "params.p_order",
+                format!("must be 2 or 3 (got {x})"),
+            ))
+        }
+    };
+    let d = design(family, lambda)?;
+    let controller = d.controller_order(p, order)?;
+    let (named, mut details) = named_and_details(&d, p, order);
+    details.insert("lambda_source".into(), json!(source));
+    if let Some(l) = fit_lambda {
+        details.insert("lambda_fit".into(), json!(l));
+    }
+    if let Some(ms) = target_ms {
+        details.insert("target_ms".into(), json!(ms));
+    }
+    if let Family::Piptd { k, theta } = *family {
+        let (kp, ki, kd, b1) = piptd_closed_form(k, theta, lambda);
+        details.insert(
+            "eq14_closed_form".into(),
+            json!({"kp": kp, "ki": ki, "kd": kd, "b1": b1}),
+        );
+    }
+    let plant = family.plant();
+    add_analysis(&plant, &controller, &mut details);
+    details.insert("warnings".into(), json!(warnings));
+    Ok(Tuning {
+        method: ID.into(),
+        controller,
+        named,
+        details,
+    })
 }
 
 /// Tunes method `id` if it belongs to this paper.
-pub fn tune(_id: &str, _plant: &Plant, _params: &Params) -> Option<Result<Tuning>> {
-    None
+pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> {
+    if id != ID {
+        return None;
+    }
+    Some(match plant.family {
+        Some(f) => tune_family(&f, params),
+        None => Err(Error::new(
+            "plant.family",
+            format!(
+                "method '{ID}' needs the plant given by family ({})",
+                FAMILIES.join(", ")
+            ),
+        )),
+    })
+}
+
+/// λ such that the true Ms (exact delay; the set-point filter does not enter Ms) equals
+/// `ms`, by [`crate::freq::solve_for_ms`] over λ ∈ [0.02θ, 100θ] (the smallest such λ:
+/// Ms falls as λ grows from the smallest admissible λ). Errors name `params.target_ms`.
+pub fn lambda_for_ms(family: &Family, ms: f64) -> Result<f64> {
+    check_family(family)?;
+    let th = family.theta();
+    let plant = family.plant();
+    crate::freq::solve_for_ms(ms, 0.02 * th, 100.0 * th, |l| {
+        let d = design(family, l)?;
+        Ok((plant.clone(), d.pid().to_controller()?))
+    })
+}
+
+/// The true Ms (exact delay) of a design, `None` when the loop is unstable.
+pub fn true_ms(d: &Design) -> Result<Option<f64>> {
+    let c = d.pid().to_controller()?;
+    let a = crate::freq::analyze(&d.family.plant(), &c)?;
+    Ok(if a.stable { a.ms } else { None })
+}
+
+/// Fig. 2: the true Ms (exact delay) against λ for a family; `None` where the design is
+/// invalid (e.g. b₁ < 0) or the loop unstable.
+pub fn ms_curve(family: &Family, lambdas: &[f64]) -> Vec<Option<f64>> {
+    lambdas
+        .iter()
+        .map(|&l| {
+            design(family, l)
+                .ok()
+                .and_then(|d| true_ms(&d).ok().flatten())
+        })
+        .collect()
+}
+
+fn add_analysis(plant: &Plant, c: &Controller, details: &mut Map<String, Value>) {
+    match crate::freq::analyze(plant, c) {
+        Ok(a) => {
+            details.insert("stable".into(), json!(a.stable));
+            details.insert("verdict".into(), json!(a.verdict));
+            details.insert("ms".into(), json!(a.ms));
+            details.insert("w_ms".into(), json!(a.w_ms));
+            details.insert("gm".into(), json!(a.gm));
+            details.insert("pm".into(), json!(a.pm));
+            details.insert("delay_margin".into(), json!(a.delay_margin));
+        }
+        Err(e) => {
+            details.insert("analysis_error".into(), json!(e.to_string()));
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Presets: Examples 1-6 and the comparison settings of Table 2
+// ---------------------------------------------------------------------------------------
+
+/// One worked example of the paper: id, title, plant family, λ, p, scenario
+/// `(t_end, sp_time, sp_size, d_time, d_size)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Example {
+    /// Short id.
+    pub id: &'static str,
+    /// Title.
+    pub title: &'static str,
+    /// Design model.
+    pub family: Family,
+    /// λ of the paper.
+    pub lambda: f64,
+    /// p used in the paper's simulation (Example 5: 1.0, the text says 0.9; see `p_text`).
+    pub p: f64,
+    /// p as stated in the text.
+    pub p_text: f64,
+    /// n of `F₂ = 1/(ps+1)ⁿ` in the paper's simulation: 2 as printed for Eqs. (35), (38);
+    /// 3 for the Eq. (37) examples (2, 3, 5), the only value that reproduces Tables 4-5.
+    pub p_order: u32,
+    /// Ms the paper states for its λ.
+    pub ms_printed: f64,
+    /// Scenario end time.
+    pub t_end: f64,
+    /// Disturbance time (the set-point step is at 0).
+    pub d_time: f64,
+    /// Set-point step size.
+    pub sp_size: f64,
+    /// Disturbance step size (at the plant input).
+    pub d_size: f64,
+}
+
+/// Examples 1-6 (Eqs. 45-50, 53; λ and p from the text).
+pub fn examples() -> Vec<Example> {
+    vec![
+        Example {
+            id: "ex1",
+            title: "Example 1: PIPTD 0.05e^{-5s}/s (Eq. 45)",
+            family: Family::Piptd {
+                k: 0.05,
+                theta: 5.0,
+            },
+            lambda: 6.71,
+            p: 3.3,
+            p_text: 3.3,
+            p_order: 2,
+            ms_printed: 2.0,
+            t_end: 200.0,
+            d_time: 100.0,
+            sp_size: 1.0,
+            d_size: 1.0,
+        },
+        Example {
+            id: "ex2",
+            title: "Example 2: DIPTD e^{-s}/s² (Eq. 46)",
+            family: Family::Diptd { k: 1.0, theta: 1.0 },
+            lambda: 2.4776,
+            p: 1.7,
+            p_text: 1.7,
+            p_order: 3,
+            ms_printed: 2.0,
+            t_end: 100.0,
+            d_time: 50.0,
+            sp_size: 1.0,
+            d_size: 1.0,
+        },
+        Example {
+            id: "ex3",
+            title: "Example 3: IFOPTD 0.2e^{-s}/(s(4s+1)) (Eq. 47)",
+            family: Family::Ifoptd {
+                k: 0.2,
+                tau: 4.0,
+                theta: 1.0,
+            },
+            lambda: 1.8857,
+            p: 1.0,
+            p_text: 1.0,
+            p_order: 3,
+            ms_printed: 2.0,
+            t_end: 60.0,
+            d_time: 30.0,
+            sp_size: 1.0,
+            d_size: 1.0,
+        },
+        Example {
+            id: "ex4",
+            title: "Example 4: IFOPTD with zero (10s+1)e^{-s}/(s(2s+1)) (Eq. 48)",
+            family: Family::IfoptdZero {
+                k: 1.0,
+                tau: 2.0,
+                z: 10.0,
+                theta: 1.0,
+            },
+            lambda: 1.07,
+            p: 0.8,
+            p_text: 0.8,
+            p_order: 2,
+            ms_printed: 2.35,
+            t_end: 50.0,
+            d_time: 25.0,
+            sp_size: 1.0,
+            d_size: 1.0,
+        },
+        Example {
+            id: "ex5",
+            title:
+                "Example 5: reduced model 0.5183e^{-1.2799s}/(s(1.1609s+1)) (Eq. 50) of Eq. (49)",
+            family: Family::Ifoptd {
+                k: 0.5183,
+                tau: 1.1609,
+                theta: 1.2799,
+            },
+            lambda: 1.895,
+            p: 1.0,
+            p_text: 0.9,
+            p_order: 3,
+            ms_printed: 2.81,
+            t_end: 80.0,
+            d_time: 40.0,
+            sp_size: 1.0,
+            d_size: 1.0,
+        },
+        Example {
+            id: "ex6",
+            title: "Example 6: jacketed CSTR, 6.83e-4(766.0752s+1)e^{-s}/(s(1112.099s−1)) (Eq. 53)",
+            family: Family::IfoptdZeroUnstable {
+                k: 6.83e-4,
+                tau: 1112.099,
+                z: 766.0752,
+                theta: 1.0,
+            },
+            lambda: 1.0925,
+            p: 1.0,
+            p_text: 1.0,
+            p_order: 2,
+            ms_printed: 3.52,
+            t_end: 100.0,
+            d_time: 50.0,
+            sp_size: 2.0,
+            d_size: -7.4,
+        },
+    ]
+}
+
+/// Eq. (49), Example 5's higher-order process: `0.5(1−0.5s)e^{−0.7s}/(s(0.4s+1)(0.1s+1)(0.5s+1))`.
+pub fn example5_process() -> Plant {
+    let den = Poly::s()
+        .mul(&Poly::linear(0.4, 1.0))
+        .mul(&Poly::linear(0.1, 1.0))
+        .mul(&Poly::linear(0.5, 1.0));
+    Plant {
+        tf: Tf {
+            num: Poly::linear(-0.25, 0.5),
+            den,
+        },
+        delay: 0.7,
+        family: None,
+    }
+}
+
+/// A comparison setting of Table 2 (Anil & Padma Sree 2015): parallel PID × filter.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Comparison {
+    /// Example id it belongs to.
+    pub example: &'static str,
+    /// `k_p, k_i, k_d` as printed.
+    pub kp: f64,
+    /// Integral gain.
+    pub ki: f64,
+    /// Derivative gain.
+    pub kd: f64,
+    /// The PID filter: lead-lag `(αs+1)/(βs+1)` or the footnoted second-order filter,
+    /// descending `(num, den)`.
+    pub filter: (Vec<f64>, Vec<f64>),
+    /// Ms printed in Table 2.
+    pub ms_printed: f64,
+}
+
+impl Comparison {
+    /// The controller: `(k_p + k_i/s + k_d s)·filter` on the error (1-DOF; the set-point
+    /// treatment of the original paper is not given in Medarametla & Manimozhi).
+    pub fn controller(&self) -> Result<Controller> {
+        let f = Tf::parse_desc(&self.filter.0, &self.filter.1)?;
+        Pid::parallel(self.kp, self.ki, self.kd)
+            .series_filter(f)
+            .to_controller()
+    }
+}
+
+/// Table 2's Anil & Padma Sree settings (the Ajmeri & Ali parallel control structure is not
+/// a (Cr, Cy) pair — it runs an internal process model with its dead time — and is left out).
+pub fn comparisons() -> Vec<Comparison> {
+    let ll = |a: f64, b: f64| (vec![a, 1.0], vec![b, 1.0]);
+    vec![
+        Comparison {
+            example: "ex1",
+            kp: 3.727,
+            ki: 0.1968,
+            kd: 7.0440,
+            filter: (vec![1.0], vec![1.0]),
+            ms_printed: 2.0,
+        },
+        Comparison {
+            example: "ex2",
+            kp: 0.1378,
+            ki: 0.0142,
+            kd: 0.5265,
+            filter: ll(1.0761, 1.0392),
+            ms_printed: 2.0,
+        },
+        Comparison {
+            example: "ex3",
+            kp: 5.7422,
+            ki: 0.9724,
+            kd: 11.2082,
+            filter: ll(0.6320, 0.4915),
+            ms_printed: 2.0,
+        },
+        Comparison {
+            example: "ex4",
+            kp: 1.1601,
+            ki: 0.2251,
+            kd: 1.4452,
+            filter: (vec![0.5214, 1.0], vec![2.674, 10.2674, 1.0]),
+            ms_printed: 2.35,
+        },
+        Comparison {
+            example: "ex5",
+            kp: 1.003,
+            ki: 0.1572,
+            kd: 0.6592,
+            filter: ll(1.1608, 0.5490),
+            ms_printed: 2.81,
+        },
+        Comparison {
+            example: "ex6",
+            kp: 695_400.0,
+            ki: 135_940.0,
+            kd: 1_457_697.0,
+            filter: (vec![0.5095, 1.0], vec![144.7116, 766.2641, 1.0]),
+            ms_printed: 3.52,
+        },
+    ]
+}
+
+fn family_json(f: &Family) -> Value {
+    let mut m = Map::new();
+    m.insert("family".into(), json!(f.id()));
+    if let Some(names) = Family::param_names(f.id()) {
+        for (n, v) in names.iter().zip(f.values()) {
+            m.insert((*n).into(), json!(v));
+        }
+    }
+    Value::Object(m)
+}
+
+fn plant_json(p: &Plant) -> Value {
+    json!({"num": p.tf.num.to_desc(), "den": p.tf.den.to_desc(), "delay": p.delay})
+}
+
+fn controller_json(c: &Controller) -> Value {
+    json!({"cr": {"num": c.cr.num.to_desc(), "den": c.cr.den.to_desc()},
+           "cy": {"num": c.cy.num.to_desc(), "den": c.cy.den.to_desc()}})
+}
+
+fn scenario_json(e: &Example) -> Value {
+    json!({"t_end": e.t_end, "dt": 0.1,
+           "setpoint": {"time": 0.0, "size": e.sp_size},
+           "disturbance": {"time": e.d_time, "size": e.d_size}})
+}
+
+/// Presets of this paper: Examples 1-6 (the proposed design), Example 5's design applied to
+/// the higher-order process of Eq. (49), and the Anil & Padma Sree settings of Table 2.
+pub fn presets() -> Vec<Preset> {
+    let mut v = Vec::new();
+    for e in examples() {
+        let order_note = if e.p_order == 3 {
+            " The set-point filter uses 1/(ps+1)³ (p_order = 3): the printed Eq. (37) has (ps+1)², but only the \
+             cube reproduces the paper's simulated servo rows (Tables 4-5)."
+        } else {
+            ""
+        };
+        let p_note = if e.p != e.p_text {
+            format!(
+                " The text says p = {}; the simulated Tables 4-5 rows are reproduced with p = {}.",
+                e.p_text, e.p
+            )
+        } else {
+            String::new()
+        };
+        v.push(Preset {
+            id: format!("medarametla2018/{}/proposed", e.id),
+            title: format!("{} — proposed (λ = {}, p = {})", e.title, e.lambda, e.p),
+            description: format!(
+                "Medarametla & Manimozhi design with λ = {} (Ms {} in the paper) and set-point filter p = {}; \
+                 unit set-point step at 0 and input load step at {} as in the paper's simulation{}.{}{}",
+                e.lambda,
+                e.ms_printed,
+                e.p,
+                e.d_time,
+                if e.id == "ex6" {
+                    " (linearized CSTR, Eq. 53: 2 K set-point step, jacket-temperature drop 317.4 → 310 K; the nonlinear runs are in the reproduction report)"
+                } else if e.id == "ex5" {
+                    " on the reduced model of Eq. (50) (the next preset applies it to the process of Eq. 49)"
+                } else {
+                    ""
+                },
+                order_note,
+                p_note
+            ),
+            citation: CITATION.into(),
+            plant: family_json(&e.family),
+            tune: json!({"method": ID, "params": {"lambda": e.lambda, "p": e.p, "p_order": e.p_order}}),
+            controller: Value::Null,
+            scenario: scenario_json(&e),
+        });
+        if e.id == "ex5" {
+            if let Ok(c) =
+                design(&e.family, e.lambda).and_then(|d| d.controller_order(e.p, e.p_order))
+            {
+                v.push(Preset {
+                    id: "medarametla2018/ex5/proposed-on-eq49".into(),
+                    title: "Example 5: the proposed design (on the reduced model Eq. 50) controlling the process of Eq. (49)".into(),
+                    description: "Controller designed on 0.5183e^{-1.2799s}/(s(1.1609s+1)) with λ = 1.895, p = 1 and 1/(ps+1)³ \
+                                  (what reproduces Tables 4-5; the text says p = 0.9), applied to \
+                                  0.5(1−0.5s)e^{−0.7s}/(s(0.4s+1)(0.1s+1)(0.5s+1)) as in Figs. 11-12."
+                        .into(),
+                    citation: CITATION.into(),
+                    plant: plant_json(&example5_process()),
+                    tune: Value::Null,
+                    controller: controller_json(&c),
+                    scenario: scenario_json(&e),
+                });
+            }
+        }
+    }
+    for c in comparisons() {
+        let Some(e) = examples().into_iter().find(|e| e.id == c.example) else {
+            continue;
+        };
+        let Ok(ctrl) = c.controller() else { continue };
+        let improper = ctrl.cr.relative_degree() < 0;
+        let mut scenario = scenario_json(&e);
+        if improper {
+            scenario["setpoint"]["size"] = json!(0.0);
+        }
+        let plant = if e.id == "ex5" {
+            plant_json(&example5_process())
+        } else {
+            family_json(&e.family)
+        };
+        v.push(Preset {
+            id: format!("medarametla2018/{}/anil-padma-sree", e.id),
+            title: format!("{} — Anil & Padma Sree 2015 (Table 2)", e.title),
+            description: format!(
+                "Anil & Padma Sree (ISA Trans. 57, 2015) as quoted in Table 2: k_p = {}, k_i = {}, k_d = {}, PID filter {:?}/{:?} \
+                 (Ms {} printed). Mapped as a one-degree-of-freedom PID × filter on the error: the set-point treatment \
+                 of the original is not given in this paper, so only the regulatory response is comparable with Tables 4-5.{}",
+                c.kp, c.ki, c.kd, c.filter.0, c.filter.1, c.ms_printed,
+                if improper { " With this filter the derivative on the error is ideal, so a set-point step would be an impulse: \
+                              the scenario has the load step only." } else { "" }
+            ),
+            citation: "C. Anil, R. Padma Sree, Tuning of PID controllers for integrating systems using direct synthesis method, \
+                       ISA Transactions 57 (2015) 211-219; settings as quoted in Medarametla & Manimozhi 2018, Table 2"
+                .into(),
+            plant,
+            tune: Value::Null,
+            controller: controller_json(&ctrl),
+            scenario,
+        });
+    }
+    v
 }

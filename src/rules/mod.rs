@@ -165,7 +165,10 @@ impl Params {
             None | Some(Value::Null) => Ok(None),
             Some(Value::Number(n)) => match n.as_f64() {
                 Some(x) if x.is_finite() => Ok(Some(x)),
-                _ => Err(Error::new(format!("params.{name}"), "must be a finite number")),
+                _ => Err(Error::new(
+                    format!("params.{name}"),
+                    "must be a finite number",
+                )),
             },
             Some(_) => Err(Error::new(format!("params.{name}"), "must be a number")),
         }
@@ -227,13 +230,13 @@ pub fn presets() -> Vec<Preset> {
 /// Runs method `id` on `plant`. Errors: `method` (unknown id), `plant.family` (a family the
 /// method does not support), `params.*` (bad parameters), or the rule's own errors.
 pub fn tune(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
-    let info = methods()
-        .into_iter()
-        .find(|m| m.id == id)
-        .ok_or_else(|| {
-            let ids: Vec<String> = methods().into_iter().map(|m| m.id).collect();
-            Error::new("method", format!("unknown method '{id}' (implemented: {})", ids.join(", ")))
-        })?;
+    let info = methods().into_iter().find(|m| m.id == id).ok_or_else(|| {
+        let ids: Vec<String> = methods().into_iter().map(|m| m.id).collect();
+        Error::new(
+            "method",
+            format!("unknown method '{id}' (implemented: {})", ids.join(", ")),
+        )
+    })?;
     let fam = plant.family.map(|f| f.id()).unwrap_or("custom");
     if !info.families.iter().any(|f| f == fam) {
         return Err(Error::new(
@@ -249,5 +252,10 @@ pub fn tune(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
         .or_else(|| kaya2020::tune(id, plant, params))
         .or_else(|| medarametla_manimozhi2018::tune(id, plant, params))
         .or_else(|| praveen_kumar_narayana::tune(id, plant, params));
-    r.unwrap_or_else(|| Err(Error::new("method", format!("method '{id}' has no implementation"))))
+    r.unwrap_or_else(|| {
+        Err(Error::new(
+            "method",
+            format!("method '{id}' has no implementation"),
+        ))
+    })
 }

@@ -1,0 +1,451 @@
+//! Praveen Kumar & Narayana: PID × lead-lag by pole placement (seed 004_e7142b8c2f5ed265.txt).
+
+use pidlab::freq::analyze;
+use pidlab::plant::Family;
+use pidlab::poly::Poly;
+use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
+use pidlab::rules::{self, Params};
+use pidlab::sim::{simulate, Scenario};
+use wasm_bindgen_test::wasm_bindgen_test;
+
+fn plant_of(p: &IpdtIr) -> pidlab::plant::Plant {
+    Family::IpdtIr {
+        k: p.k,
+        tau: p.tau,
+        tau_z: p.z,
+        theta: p.theta,
+    }
+    .plant()
+}
+
+fn num(v: &serde_json::Map<String, serde_json::Value>, k: &str) -> f64 {
+    v.get(k).and_then(|x| x.as_f64()).unwrap_or(f64::NAN)
+}
+
+/// Table 1, "Proposed" rows: (plant, λ, k_p, k_i, k_d, α, β). λ from the text of each example
+/// (Example 1: λ = 1.9; Example 2: λ = 0.8 on the reduced model of Eq. 22).
+const TABLE1: [(IpdtIr, f64, [f64; 5]); 2] = [
+    (pk::EX1, 1.9, [3.9468, 1.5338, 2.5361, 0.05, 0.0334]),
+    (
+        pk::EX2_REDUCED,
+        0.8,
+        [1.2805, 0.2180, 1.1928, 0.4050, 0.1362],
+    ),
+];
+
+#[wasm_bindgen_test(unsupported = test)]
+fn table1_parameters_to_printed_digits() {
+    for (p, lambda, printed) in TABLE1 {
+        let t = rules::tune(
+            pk::ID,
+            &plant_of(&p),
+            &Params::default().with("lambda", lambda),
+        )
+        .unwrap();
+        let ours = [
+            num(&t.named, "kp"),
+            num(&t.named, "ki"),
+            num(&t.named, "kd"),
+            num(&t.named, "alpha"),
+            num(&t.named, "beta"),
+        ];
+        // Every entry of Table 1 is printed with 4 decimals (α = 0.05 exactly): half a unit
+        // of the last printed digit.
+        for (name, (o, q)) in ["kp", "ki", "kd", "alpha", "beta"]
+            .iter()
+            .zip(ours.iter().zip(printed))
+        {
+            assert!(
+                (o - q).abs() <= 0.5e-4,
+                "λ = {lambda}, {name}: ours {o}, printed {q}"
+            );
+        }
+    }
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn eqs_13_14_closed_forms_agree_with_the_solve() {
+    // Eqs. (13)-(14) are printed intact; the linear solve must agree with them everywhere
+    // in the admissible range (independent reference for k_p, k_i).
+    for (p, _, _) in TABLE1 {
+        let (lo, hi) = pk::lambda_range(&p, true).unwrap();
+        let hi = hi.unwrap_or(lo * 100.0);
+        for i in 1..20 {
+            let l = lo + (hi - lo) * i as f64 / 20.0;
+            let d = pk::design(&p, l).unwrap();
+            assert!(
+                (d.kp - pk::eq13_kp(&p, l)).abs() <= 1e-9 * d.kp.abs(),
+                "λ = {l}"
+            );
+            assert!(
+                (d.ki - pk::eq14_ki(&p, l)).abs() <= 1e-9 * d.ki.abs(),
+                "λ = {l}"
+            );
+        }
+    }
+}
+
+/// The characteristic polynomial of the returned controller with the plant's dead time
+/// replaced by the first-order Padé of Eq. (9): `den·p_c·(1 + θs/2) + num·q_c·(1 − θs/2)`,
+/// with `Cy = q_c/p_c`. The design promises `A·(s + λ)⁴·(1 + θs/2)` (the lead α = θ/2 cancels
+/// the Padé denominator). Returns the relative coefficient residual.
+fn char_residual(p: &IpdtIr, c: &pidlab::controller::Controller, lambda: f64) -> f64 {
+    let pl = plant_of(p);
+    let pade_num = Poly::linear(-p.theta / 2.0, 1.0);
+    let pade_den = Poly::linear(p.theta / 2.0, 1.0);
+    let ch = pl
+        .tf
+        .den
+        .mul(&c.cy.den)
+        .mul(&pade_den)
+        .add(&pl.tf.num.mul(&c.cy.num).mul(&pade_num));
+    let target = Poly::linear(1.0, lambda).pow(4).mul(&pade_den);
+    assert_eq!(ch.degree(), target.degree());
+    let a = ch.leading() / target.leading();
+    let target = target.scale(a);
+    let scale = ch.max_abs();
+    (0..=ch.degree())
+        .map(|i| (ch.coef(i) - target.coef(i)).abs())
+        .fold(0.0, f64::max)
+        / scale
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn characteristic_equation_has_the_designed_roots() {
+    for (p, lambda, _) in TABLE1 {
+        let t = rules::tune(
+            pk::ID,
+            &plant_of(&p),
+            &Params::default().with("lambda", lambda),
+        )
+        .unwrap();
+        let r = char_residual(&p, &t.controller, lambda);
+        assert!(r <= 1e-9, "λ = {lambda}: residual {r}");
+    }
+}
+
+/// Small deterministic generator (no dependency): xorshift64*.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo * (hi / lo).powf(self.next())
+    }
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn random_plants_give_a_stable_filter_or_a_named_error() {
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let (mut ok, mut small, mut large, mut none) = (0, 0, 0, 0);
+    for _ in 0..300 {
+        let sign = if rng.next() < 0.2 { -1.0 } else { 1.0 };
+        let p = IpdtIr {
+            k: sign * rng.log_uniform(0.05, 20.0),
+            tau: rng.log_uniform(0.05, 20.0),
+            z: if rng.next() < 0.1 {
+                0.0
+            } else {
+                rng.log_uniform(0.01, 10.0)
+            },
+            theta: if rng.next() < 0.1 {
+                0.0
+            } else {
+                rng.log_uniform(0.01, 10.0)
+            },
+        };
+        let lambda = rng.log_uniform(1e-3, 1e2) / p.tau.max(p.theta).max(p.z);
+        match rules::tune(
+            pk::ID,
+            &plant_of(&p),
+            &Params::default().with("lambda", lambda),
+        ) {
+            Ok(t) => {
+                ok += 1;
+                let beta = num(&t.named, "beta");
+                assert!(
+                    beta > 0.0 && beta.is_finite(),
+                    "{p:?} λ = {lambda}: β = {beta}"
+                );
+                let linf = num(&t.details, "l_inf");
+                assert!(linf < 1.0, "{p:?} λ = {lambda}: |L(j∞)| = {linf}");
+                let r = char_residual(&p, &t.controller, lambda);
+                assert!(r <= 1e-9, "{p:?} λ = {lambda}: residual {r}");
+                // The lead-lag's pole is the controller's only pole besides the integrator.
+                for root in t.controller.cy.den.roots() {
+                    assert!(root.re <= 0.0, "{p:?} λ = {lambda}: controller pole {root}");
+                }
+            }
+            Err(e) if e.path == "plant" => {
+                // No admissible λ at all for this plant: the message must say why.
+                assert!(e.message.starts_with("no λ"), "{p:?}: {e}");
+                none += 1;
+            }
+            Err(e) => {
+                assert_eq!(e.path, "params.lambda", "{p:?} λ = {lambda}: {e}");
+                if e.message.starts_with("λ too small") {
+                    small += 1;
+                } else if e.message.starts_with("λ too large") {
+                    large += 1;
+                } else {
+                    panic!("{p:?} λ = {lambda}: unexpected error {e}");
+                }
+                assert!(e.message.contains("admissible λ ∈"), "{e}");
+            }
+        }
+    }
+    // The sample must exercise all three outcomes (else the test proves little).
+    eprintln!("random plants: ok {ok}, λ too small {small}, λ too large {large}, no λ {none}");
+    assert!(
+        ok > 20 && small > 20 && large > 20 && none < 100,
+        "ok {ok}, small {small}, large {large}, none {none}"
+    );
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn bad_inputs_name_the_field() {
+    let pl = plant_of(&pk::EX1);
+    let e = rules::tune(pk::ID, &pl, &Params::default()).unwrap_err();
+    assert_eq!(e.path, "params.lambda");
+    let e = rules::tune(pk::ID, &pl, &Params::default().with("lambda", -1.0)).unwrap_err();
+    assert_eq!(e.path, "params.lambda");
+    let e = rules::tune(
+        pk::ID,
+        &pl,
+        &Params::default().with("lambda", 1.9).with("epsilon", 2.0),
+    )
+    .unwrap_err();
+    assert_eq!(e.path, "params.epsilon");
+    let e = rules::tune(
+        pk::ID,
+        &pl,
+        &Params::default()
+            .with("lambda", 1.9)
+            .with("derivative", "both"),
+    )
+    .unwrap_err();
+    assert_eq!(e.path, "params.derivative");
+    // Ms below the smallest Ms the design reaches on the boiler (1.432 at λ ≈ 0.276)
+    let e = rules::tune(pk::ID, &pl, &Params::default().with("target_ms", 1.3)).unwrap_err();
+    assert_eq!(e.path, "params.target_ms");
+    assert!(e.message.contains("below the smallest Ms"), "{e}");
+    let other = Family::Ifoptd {
+        k: 1.0,
+        tau: 1.0,
+        theta: 0.5,
+    }
+    .plant();
+    let e = rules::tune(pk::ID, &other, &Params::default().with("lambda", 1.0)).unwrap_err();
+    assert_eq!(e.path, "plant.family");
+}
+
+/// Servo (r: 0.2 step at t = 0) metrics of the λ design on `plant`, exact dead time, dt = 0.01.
+fn servo(
+    p: &IpdtIr,
+    lambda: f64,
+    plant: &pidlab::plant::Plant,
+    t_end: f64,
+) -> pidlab::metrics::Metrics {
+    let d = pk::design(p, lambda).unwrap();
+    let c = pk::controller(&d, 0.2, pk::Derivative::Measurement).unwrap();
+    let sc = Scenario::steps(t_end, 0.01, 0.0, 0.2, 0.0, 0.0);
+    let r = simulate(plant, &c, &sc).unwrap();
+    assert!(!r.diverged);
+    r.metrics.servo.unwrap()
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn boiler_servo_iae_ise_match_errata() {
+    // ERRATA.md: derivative on the measurement, ε = 0.2, λ = 1.9, 0.2 step: IAE 0.412,
+    // ISE 0.0650 (an independent computation). Tolerance: half a unit of the last digit given.
+    let m = servo(&pk::EX1, 1.9, &pk::EX1.plant(), 30.0);
+    assert!((m.iae - 0.412).abs() <= 0.0005, "IAE {}", m.iae);
+    assert!((m.ise - 0.0650).abs() <= 0.00005, "ISE {}", m.ise);
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn proposed_servo_ise_matches_tables_2_and_4() {
+    // Tables 2 and 4, "Proposed" rows, servo ISE. Example 2 is simulated on the true process,
+    // Eq. (21), with the controller designed on the reduced model, Eq. (22) (the printed servo
+    // rows match this, not the reduced model). The paper's simulation set-up is not given
+    // (solver, sampling); the measured differences are ≤ 0.06 %, asserted within 0.1 %.
+    let full = pk::ex2_process();
+    let mut full40 = full.clone();
+    full40.delay *= 1.4;
+    let rows: [(&str, IpdtIr, f64, pidlab::plant::Plant, f64); 4] = [
+        ("Table 2, Ex. 1", pk::EX1, 1.9, pk::EX1.plant(), 0.06497),
+        ("Table 2, Ex. 2", pk::EX2_REDUCED, 0.8, full.clone(), 0.1423),
+        (
+            "Table 4, Ex. 1",
+            pk::EX1,
+            1.9,
+            pk::EX1.plant().with_gain_delay(1.0, 1.4),
+            0.06588,
+        ),
+        ("Table 4, Ex. 2", pk::EX2_REDUCED, 0.8, full40, 0.1487),
+    ];
+    for (name, p, l, plant, printed) in rows {
+        let m = servo(&p, l, &plant, 60.0);
+        assert!(
+            (m.ise - printed).abs() <= 1e-3 * printed,
+            "{name}: ISE {} vs {printed}",
+            m.ise
+        );
+    }
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn proposed_regulatory_ise_matches_tables_2_and_4_example_1() {
+    // Tables 2 and 4, Example 1, "Proposed", regulatory ISE (0.2 load step at the plant
+    // input). The paper's simulation settings are not stated, so the printed digits (±0.01 %)
+    // cannot be the tolerance; the measured differences are 0.04 % (Table 2) and 0.14 %
+    // (Table 4), asserted within 0.2 %. (Example 2's nominal regulatory IAE/ISE are 12-17 %
+    // off print and are only reported; see the reproduction report.)
+    let d = pk::design(&pk::EX1, 1.9).unwrap();
+    let c = pk::controller(&d, 0.2, pk::Derivative::Measurement).unwrap();
+    for (name, plant, printed) in [
+        ("Table 2", pk::EX1.plant(), 0.005695),
+        (
+            "Table 4",
+            pk::EX1.plant().with_gain_delay(1.0, 1.4),
+            0.006135,
+        ),
+    ] {
+        let sc = Scenario::steps(30.0, 0.01, 0.0, 0.0, 0.0, 0.2);
+        let r = simulate(&plant, &c, &sc).unwrap();
+        let m = r.metrics.regulatory.unwrap();
+        assert!(
+            (m.ise - printed).abs() <= 2e-3 * printed,
+            "{name}: ISE {} vs {printed}",
+            m.ise
+        );
+    }
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn design_ms_and_lambda_for_ms_2() {
+    // Example 2 (reduced model, λ = 0.8): printed Ms 3.9051. Our Ms is the supremum (the
+    // ω → ∞ limit of this neutral loop); a value read on a frequency grid can only be below
+    // it. Measured 3.90535: asserted within 5e-4 above the printed value.
+    let t = rules::tune(
+        pk::ID,
+        &pk::EX2_REDUCED.plant(),
+        &Params::default().with("lambda", 0.8),
+    )
+    .unwrap();
+    let ms = num(&t.details, "ms");
+    assert!(ms >= 3.9051 - 0.00005 && ms - 3.9051 <= 5e-4, "Ms {ms}");
+    // Example 1 (λ = 1.9): the supremum is the high-frequency limit 1/(1 − |L(j∞)|), with
+    // |L(j∞)| = |k z k_d α/(τ β)| ≈ 0.8194; printed 5.53 (ERRATA: 5.52 near 8,700 rad/s).
+    let t = rules::tune(
+        pk::ID,
+        &pk::EX1.plant(),
+        &Params::default().with("lambda", 1.9),
+    )
+    .unwrap();
+    let (ms, linf) = (num(&t.details, "ms"), num(&t.details, "l_inf"));
+    assert!(
+        (ms - 1.0 / (1.0 - linf)).abs() <= 1e-6 * ms,
+        "Ms {ms}, |L∞| {linf}"
+    );
+    assert!((5.525..5.55).contains(&ms), "Ms {ms}");
+    // λ for Ms = 2 (Fig. 2; text of Examples 1 and 2): printed 1.1474 and 0.6914.
+    for (p, printed, tol) in [
+        // Example 1: we find 1.147451, which the printed 1.1474 truncates (rounding would
+        // print 1.1475): asserted within one unit of the 4th decimal.
+        (pk::EX1, 1.1474, 1e-4),
+        // Example 2: we find 0.69084, 0.08 % below the printed value; asserted at 0.1 %
+        // (the paper's Ms read on a grid is below the supremum, which shifts its λ up).
+        (pk::EX2_REDUCED, 0.6914, 1e-3 * 0.6914),
+    ] {
+        let t = rules::tune(
+            pk::ID,
+            &p.plant(),
+            &Params::default().with("target_ms", 2.0),
+        )
+        .unwrap();
+        let l = num(&t.details, "lambda");
+        assert!((l - printed).abs() <= tol, "λ(Ms = 2) {l} vs {printed}");
+        // and the returned design has Ms = 2 on the exact-delay loop
+        let a = analyze(&p.plant(), &t.controller).unwrap();
+        assert!(a.stable);
+        assert!((a.ms.unwrap() - 2.0).abs() <= 1e-6, "Ms {:?}", a.ms);
+    }
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn derivative_on_error_is_filtered_and_simulates() {
+    let params = Params::default()
+        .with("lambda", 1.9)
+        .with("derivative", "error")
+        .with("n", 10.0);
+    let t = rules::tune(pk::ID, &pk::EX1.plant(), &params).unwrap();
+    // Both paths proper (no impulse on a set-point step), filter T_f = k_d/(k_p N).
+    assert!(t.controller.cr.relative_degree() >= 0 && t.controller.cy.relative_degree() >= 0);
+    let (kp, kd) = (num(&t.named, "kp"), num(&t.named, "kd"));
+    assert!((num(&t.details, "tf") - kd / kp / 10.0).abs() <= 1e-15);
+    // Cr at s = 1 equals (ε k_p + k_i + k_d/(T_f + 1))·(α + 1)/(β + 1)
+    let (ki, a, b) = (
+        num(&t.named, "ki"),
+        num(&t.named, "alpha"),
+        num(&t.named, "beta"),
+    );
+    let tf = kd / kp / 10.0;
+    let want = (0.2 * kp + ki + kd / (tf + 1.0)) * (a + 1.0) / (b + 1.0);
+    assert!((t.controller.cr.eval(1.0) - want).abs() <= 1e-12 * want);
+    let sc = Scenario::steps(30.0, 0.01, 0.0, 0.2, 15.0, 0.2);
+    let r = simulate(&pk::EX1.plant(), &t.controller, &sc).unwrap();
+    assert!(!r.diverged);
+    assert!(num(&t.details, "l_inf") == 0.0);
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn presets_load_and_tune_through_the_api() {
+    let ps = pk::presets();
+    assert!(ps.len() >= 8);
+    for p in &ps {
+        assert!(p.id.starts_with("praveen_kumar_narayana/"));
+        assert!(p.tune.is_null() != p.controller.is_null(), "{}", p.id);
+        pidlab::api::parse_plant(&p.plant, "plant").unwrap();
+        pidlab::api::parse_scenario(&p.scenario, "scenario").unwrap();
+        if p.controller.is_null() {
+            // λ given directly only (the target_ms presets are covered above)
+            if p.tune["params"].get("lambda").is_some() {
+                let mut input = p.tune.clone();
+                input["plant"] = p.plant.clone();
+                let out = pidlab::api::tune(&input).unwrap();
+                assert!(
+                    out["controller"]["beta"].as_f64().unwrap() > 0.0,
+                    "{}",
+                    p.id
+                );
+                assert!(out["details"]["ms"].as_f64().unwrap() > 1.0, "{}", p.id);
+            }
+        } else {
+            pidlab::api::parse_controller(&p.controller, "controller").unwrap();
+        }
+    }
+    // Table 1 through the JSON API: named parameters beside cr and cy.
+    let out = pidlab::api::tune(&serde_json::json!({
+        "method": "praveen_kumar",
+        "plant": { "family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1 },
+        "params": { "lambda": 1.9 }
+    }))
+    .unwrap();
+    assert!((out["controller"]["kp"].as_f64().unwrap() - 3.9468).abs() <= 0.5e-4);
+    assert!(out["controller"]["cy"]["num"].is_array());
+    let e = pidlab::api::tune(&serde_json::json!({
+        "method": "praveen_kumar",
+        "plant": { "family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1 },
+        "params": { "lambda": 5.0 }
+    }))
+    .unwrap_err();
+    assert!(
+        e.to_string().starts_with("params.lambda: λ too large"),
+        "{e}"
+    );
+}

@@ -1,0 +1,637 @@
+//! Shamsuzzoha & Lee (2008), Korean J. Chem. Eng. 25(4) 637-645: IMC-PID for integrating
+//! processes (method `shamsuzzoha_lee`). Printed values, closed forms, defining equations,
+//! simulated Table 1, robustness of the routine over random plants.
+
+use pidlab::controller::Pid;
+use pidlab::freq::analyze;
+use pidlab::plant::{Family, Plant};
+use pidlab::poly::Poly;
+use pidlab::rules::shamsuzzoha_lee2008::{
+    design, design_model, imc_pid, setpoint_filter, studies, weighting_filter, ImcModel,
+};
+use pidlab::rules::{self, Params};
+use pidlab::sim::{simulate, Scenario};
+use wasm_bindgen_test::wasm_bindgen_test;
+
+/// Half a unit of the last printed digit: the printed value is our value rounded.
+fn half_ulp(printed: &str) -> f64 {
+    let dec = printed.split('.').nth(1).map_or(0, |d| d.len());
+    0.5 * 10f64.powi(-(dec as i32))
+}
+
+fn check_printed(what: &str, ours: f64, printed: &str) {
+    let p: f64 = printed.parse().unwrap();
+    let tol = half_ulp(printed) * (1.0 + 1e-9);
+    assert!(
+        (ours - p).abs() <= tol,
+        "{what}: ours {ours} vs printed {printed} (tolerance {tol})"
+    );
+}
+
+struct Row {
+    cite: &'static str,
+    family: Family,
+    lambda: f64,
+    zeta: f64,
+    gamma: f64,
+    /// K_c, τ_I, τ_D as printed.
+    pid: [&'static str; 3],
+    /// Set-point filter as printed: γβ₁ (lead), β₂ (or "" for the DIP), β₁.
+    filter: [&'static str; 3],
+}
+
+fn rows() -> Vec<Row> {
+    vec![
+        Row {
+            cite: "Table 1, proposed (Example 1)",
+            family: Family::Ifoptd {
+                k: 1.0,
+                tau: 1.0,
+                theta: 0.2,
+            },
+            lambda: 0.433,
+            zeta: 1.0,
+            gamma: 0.3,
+            pid: ["3.997", "1.893", "0.499"],
+            filter: ["0.5782", "1.0119", "1.9273"],
+        },
+        Row {
+            cite: "Table 2, proposed (Example 2, double pole at -1/φ)",
+            family: Family::Diptd { k: 1.0, theta: 0.8 },
+            lambda: 1.25,
+            zeta: 1.0,
+            gamma: 0.4,
+            pid: ["0.351", "5.880", "2.343"],
+            filter: ["2.3193", "13.3587", "5.7983"],
+        },
+        Row {
+            cite: "Table 3, proposed (Example 3, θ = 0.1 + 0.418)",
+            family: Family::IpdtIr {
+                k: 0.547,
+                tau: 1.06,
+                tau_z: 0.418,
+                theta: 0.1,
+            },
+            lambda: 0.7909,
+            zeta: 1.0,
+            gamma: 0.3,
+            pid: ["2.437", "3.638", "0.735"],
+            filter: ["1.0963", "2.7528", "3.6543"],
+        },
+        Row {
+            cite: "Table 4, proposed (Example 4, ζ = 2, F_t = 1/(300s+1))",
+            family: Family::IfoptdZero {
+                k: 0.005,
+                tau: 20.0,
+                z: 300.0,
+                theta: 5.0,
+            },
+            lambda: 7.47,
+            zeta: 2.0,
+            gamma: 0.6,
+            pid: ["33.87", "62.11", "14.84"],
+            filter: ["36.6554", "860.9971", "61.0924"],
+        },
+        Row {
+            cite: "Table 5, proposed (Example 5, f_R = 1/(12.186s+1))",
+            family: Family::Piptd {
+                k: 0.0506,
+                theta: 6.0,
+            },
+            lambda: 3.437,
+            zeta: 1.0,
+            gamma: 0.0,
+            pid: ["4.282", "14.91", "2.34"],
+            filter: ["0", "", "12.186"],
+        },
+    ]
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn printed_parameters_and_filters() {
+    for r in rows() {
+        let d = design(&r.family, r.lambda, r.zeta, r.gamma, 100.0).unwrap();
+        check_printed(&format!("{} K_c", r.cite), d.pid.kc, r.pid[0]);
+        check_printed(&format!("{} τ_I", r.cite), d.pid.ti, r.pid[1]);
+        check_printed(&format!("{} τ_D", r.cite), d.pid.td, r.pid[2]);
+        // f_R = (γβ₁s + 1)/(β₂s² + β₁s + 1), Eq. (26)
+        let f = &d.setpoint_filter;
+        // The printed lead is γ × the printed (rounded) β₁ (Table 4: 0.6 × 61.0924 = 36.65544,
+        // ours 36.65546): allow the rounding of β₁ carried through γ, plus the lead's own.
+        let lead: f64 = r.filter[0].parse().unwrap();
+        let tol = r.gamma * half_ulp(r.filter[2]) + half_ulp(r.filter[0]);
+        assert!(
+            (f.num.coef(1) - lead).abs() <= tol * (1.0 + 1e-9),
+            "{} γβ₁: ours {} vs printed {lead}",
+            r.cite,
+            f.num.coef(1)
+        );
+        if !r.filter[1].is_empty() {
+            check_printed(&format!("{} β₂", r.cite), f.den.coef(2), r.filter[1]);
+        } else {
+            assert_eq!(f.den.degree(), 1, "{}: DIP filter is first order", r.cite);
+        }
+        check_printed(&format!("{} β₁", r.cite), f.den.coef(1), r.filter[2]);
+        // the same through the registry (family plant, JSON params)
+        let params = Params::default()
+            .with("lambda", r.lambda)
+            .with("zeta", r.zeta)
+            .with("gamma", r.gamma);
+        let t = rules::tune("shamsuzzoha_lee", &r.family.plant(), &params).unwrap();
+        assert_eq!(t.named["kc"].as_f64(), Some(d.pid.kc), "{}", r.cite);
+    }
+}
+
+/// ERRATA: the Example 4 ERRATA values β₁ = 61.09, β₂ = 861.0 and Example 2 β₁ = 5.7983,
+/// β₂ = 13.3587 come out of the linear solve; Example 4's printed Ms = 1.92 and Example 1's
+/// Ms = 1.65 (printed to 3 digits) for the PID on the plant as given.
+#[wasm_bindgen_test(unsupported = test)]
+fn printed_ms() {
+    let d1 = design(
+        &Family::Ifoptd {
+            k: 1.0,
+            tau: 1.0,
+            theta: 0.2,
+        },
+        0.433,
+        1.0,
+        0.3,
+        100.0,
+    )
+    .unwrap();
+    let a1 = analyze(
+        &Family::Ifoptd {
+            k: 1.0,
+            tau: 1.0,
+            theta: 0.2,
+        }
+        .plant(),
+        &d1.controller,
+    )
+    .unwrap();
+    assert!(a1.stable);
+    check_printed("Table 1 Ms", a1.ms.unwrap(), "1.65");
+    let f4 = Family::IfoptdZero {
+        k: 0.005,
+        tau: 20.0,
+        z: 300.0,
+        theta: 5.0,
+    };
+    let d4 = design(&f4, 7.47, 2.0, 0.6, 100.0).unwrap();
+    let a4 = analyze(&f4.plant(), &d4.controller).unwrap();
+    assert!(a4.stable);
+    check_printed("Example 4 Ms (text)", a4.ms.unwrap(), "1.92");
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs().max(1e-300)
+}
+
+/// Eqs. (23a), (23b), (24), (25) (FODIP) and (30a), (30b), (30d) (DIP) against the generic
+/// routine, to 1e-10 relative. Eqs. (23c)/(30c) are garbled in print (ERRATA); the
+/// corrected forms (θ³/6 and the sign of β₁θ²/2, derived from the same series) are checked
+/// too, and the printed ones are shown not to reproduce Tables 1 and 5.
+#[wasm_bindgen_test(unsupported = test)]
+fn generic_routine_matches_closed_forms() {
+    let fodip = [
+        (1.0, 1.0, 0.2, 0.433, 1.0, 100.0),
+        (0.547, 1.06, 0.518, 0.7909, 1.0, 100.0),
+        (0.005, 20.0, 5.0, 7.47, 2.0, 100.0),
+        (2.0, 3.0, 1.0, 1.5, 0.8, 100.0),
+        (1.0, 0.5, 0.5, 0.9, 1.3, 1000.0),
+    ];
+    for (k, tau, th, l, z, phi) in fodip {
+        let m = ImcModel {
+            gain: phi * k,
+            lags: vec![tau, phi],
+            theta: th,
+        };
+        let p = imc_pid(&m, l, z).unwrap();
+        let q = |t: f64| (l * l / (t * t) - 2.0 * l * z / t + 1.0).powi(2) * (-th / t).exp();
+        // Eq. (24), (25)
+        let b1 = (tau * tau * q(tau) - phi * phi * q(phi) + (phi * phi - tau * tau)) / (phi - tau);
+        let b2 = tau * tau * (q(tau) - 1.0) + b1 * tau;
+        assert!(rel(p.beta[0], b1) < 1e-10, "Eq. 24: {} vs {b1}", p.beta[0]);
+        assert!(rel(p.beta[1], b2) < 1e-10, "Eq. 25: {} vs {b2}", p.beta[1]);
+        let (b1, b2) = (p.beta[0], p.beta[1]);
+        let e0 = 4.0 * l * z + th - b1;
+        let e1 = -th * th / 2.0 + th * b1 - b2 + 2.0 * l * l + 4.0 * l * l * z * z;
+        // Eq. (23b), (23a)
+        let ti = (phi + tau + b1) - e1 / e0;
+        let kc = ti / (phi * k * e0);
+        assert!(rel(p.ti, ti) < 1e-10, "Eq. 23b: {} vs {ti}", p.ti);
+        assert!(rel(p.kc, kc) < 1e-10, "Eq. 23a: {} vs {kc}", p.kc);
+        // Eq. (23c) corrected: e2 = θ³/6 − β₁θ²/2 + θβ₂ + 4λ³ζ
+        let e2 = th.powi(3) / 6.0 - b1 * th * th / 2.0 + th * b2 + 4.0 * l.powi(3) * z;
+        let t1 = ((b2 + (tau + phi) * b1 + phi * tau) - e2 / e0) / ti;
+        let td = t1 - e1 / e0;
+        // τ_D is the difference of two terms of size ~φ (e1/e0 with e0 ~ 1/φ): 1e-10 relative
+        // to the terms cancelled (the closed form's own rounding), not to the small result.
+        let scale = t1.abs().max((e1 / e0).abs());
+        assert!(
+            (p.td - td).abs() < 1e-10 * scale,
+            "Eq. 23c corrected ({k}, {tau}, {th}, {l}, {z}, {phi}): {} vs {td}",
+            p.td
+        );
+    }
+    let dip = [
+        (1.0, 1.0, 2.0, 1.0, 100.0),
+        (0.0506, 6.0, 3.437, 1.0, 100.0),
+        (3.0, 0.3, 0.5, 1.5, 500.0),
+    ];
+    for (k, th, l, z, phi) in dip {
+        let m = ImcModel {
+            gain: phi * k,
+            lags: vec![phi],
+            theta: th,
+        };
+        let p = imc_pid(&m, l, z).unwrap();
+        // Eq. (30d) with e^{−θ/φ} (printed e^{−θφ})
+        let b =
+            phi * (1.0 - (l * l - 2.0 * l * z * phi + phi * phi) * (-th / phi).exp() / (phi * phi));
+        assert!(rel(p.beta[0], b) < 1e-10, "Eq. 30d: {} vs {b}", p.beta[0]);
+        let b = p.beta[0];
+        let e0 = th - b + 2.0 * l * z;
+        let e1 = l * l - th * th / 2.0 + b * th;
+        let ti = (phi + b) - e1 / e0;
+        let kc = ti / (phi * k * e0);
+        assert!(rel(p.ti, ti) < 1e-10, "Eq. 30b: {} vs {ti}", p.ti);
+        assert!(rel(p.kc, kc) < 1e-10, "Eq. 30a: {} vs {kc}", p.kc);
+        let t1 = (phi * b - (th.powi(3) / 6.0 - b * th * th / 2.0) / e0) / ti;
+        let td_ok = t1 - e1 / e0;
+        let scale = t1.abs().max((e1 / e0).abs());
+        assert!(
+            (p.td - td_ok).abs() < 1e-10 * scale,
+            "Eq. 30c corrected: {} vs {td_ok}",
+            p.td
+        );
+    }
+    // The printed Eq. (30c) (θ²/6 in place of θ³/6) misses Table 5's τ_D = 2.34.
+    let (k, th, l, z, phi) = (0.0506, 6.0, 3.437, 1.0, 100.0);
+    let m = ImcModel {
+        gain: phi * k,
+        lags: vec![phi],
+        theta: th,
+    };
+    let p = imc_pid(&m, l, z).unwrap();
+    let b = p.beta[0];
+    let e0 = th - b + 2.0 * l * z;
+    let e1 = l * l - th * th / 2.0 + b * th;
+    let td_printed = (phi * b - (th * th / 6.0 - b * th * th / 2.0) / e0) / p.ti - e1 / e0;
+    assert!(
+        (td_printed - 2.34).abs() > 0.05,
+        "printed 30c gives {td_printed}"
+    );
+    // The printed Eq. (23c) (−θ³/2 + β₁θ²/2) misses Table 1's τ_D = 0.499.
+    let (tau, th, l, z) = (1.0, 0.2, 0.433, 1.0);
+    let m = ImcModel {
+        gain: phi,
+        lags: vec![tau, phi],
+        theta: th,
+    };
+    let p = imc_pid(&m, l, z).unwrap();
+    let (b1, b2) = (p.beta[0], p.beta[1]);
+    let e0 = 4.0 * l * z + th - b1;
+    let e1 = -th * th / 2.0 + th * b1 - b2 + 2.0 * l * l + 4.0 * l * l * z * z;
+    let e2p = -th.powi(3) / 2.0 + b1 * th * th / 2.0 + th * b2 + 4.0 * l.powi(3) * z;
+    let td_printed = ((b2 + (tau + phi) * b1 + phi * tau) - e2p / e0) / p.ti - e1 / e0;
+    assert!(
+        (td_printed - 0.499).abs() > 0.005,
+        "printed 23c gives {td_printed}"
+    );
+}
+
+/// Eq. (8) itself: 1 − G̃Q = 1 − e^{−θs}N_f/D_f vanishes at every model pole, to second order
+/// at the double pole of the double integrator (Example 2).
+#[wasm_bindgen_test(unsupported = test)]
+fn cancellation_conditions_hold() {
+    let cases = [
+        (
+            Family::Ifoptd {
+                k: 1.0,
+                tau: 1.0,
+                theta: 0.2,
+            },
+            0.433,
+            1.0,
+        ),
+        (Family::Diptd { k: 1.0, theta: 0.8 }, 1.25, 1.0),
+        (
+            Family::Piptd {
+                k: 0.0506,
+                theta: 6.0,
+            },
+            3.437,
+            1.0,
+        ),
+    ];
+    for (f, l, z) in cases {
+        let dm = design_model(&f, 100.0).unwrap();
+        let p = imc_pid(&dm.model, l, z).unwrap();
+        let mut nf = vec![1.0];
+        nf.extend(p.beta.iter());
+        let nf = Poly::from_asc(&nf);
+        let df = Poly::from_asc(&[1.0, 2.0 * l * z, l * l]).pow(p.r);
+        let th = dm.model.theta;
+        let g = |s: f64| 1.0 - (-th * s).exp() * nf.eval(s) / df.eval(s);
+        for t in &dm.model.lags {
+            let s = -1.0 / t;
+            assert!(g(s).abs() < 1e-10, "{}: 1 − G̃Q = {} at {s}", f.id(), g(s));
+        }
+        if let Family::Diptd { .. } = f {
+            // derivative at the double pole by a central difference
+            let s = -0.01;
+            let h = 1e-5;
+            let dg = (g(s + h) - g(s - h)) / (2.0 * h);
+            assert!(dg.abs() < 1e-6, "double pole: d(1 − G̃Q)/ds = {dg}");
+        }
+    }
+}
+
+fn sim_metrics(
+    p: &Plant,
+    c: &pidlab::controller::Controller,
+    sc: &Scenario,
+) -> (f64, f64, f64, f64) {
+    let r = simulate(p, c, sc).unwrap();
+    assert!(!r.diverged);
+    let s = r.metrics.servo.unwrap();
+    let g = r.metrics.regulatory.unwrap();
+    (s.iae, 1.0 + s.overshoot.unwrap_or(0.0), g.iae, g.peak_error)
+}
+
+/// Table 1, proposed row: simulated IAE within 2 % of the printed values (CLARIFICATIONS), on
+/// the loop u = G_c(f_R r − y) of Fig. 1a with the ideal PID; the printed overshoot (peak of
+/// y, 1.0) and load peak (0.24, 0.25) to their printed digits.
+#[wasm_bindgen_test(unsupported = test)]
+fn table1_simulated_iae() {
+    let st = studies();
+    let ex1 = st.iter().find(|s| s.id == "ex1").unwrap();
+    let row = ex1.rows.iter().find(|r| r.key == "proposed").unwrap();
+    let c = row.controller.as_ref().unwrap();
+    let pr = row.printed;
+    let (sp, os, ld, pk) = sim_metrics(&ex1.plant.plant(), c, &ex1.scenario);
+    let (sp_m, os_m, ld_m, pk_m) = sim_metrics(&ex1.mismatch, c, &ex1.scenario);
+    for (what, ours, printed) in [
+        ("set-point IAE nominal", sp, pr[0]),
+        ("set-point IAE 20% mismatch", sp_m, pr[3]),
+        ("load IAE nominal", ld, pr[5]),
+        ("load IAE 20% mismatch", ld_m, pr[8]),
+    ] {
+        assert!(
+            rel(ours, printed) < 0.02,
+            "Table 1 {what}: ours {ours} vs printed {printed}"
+        );
+    }
+    check_printed("Table 1 set-point overshoot", os, "1.0");
+    check_printed("Table 1 set-point overshoot mismatch", os_m, "1.0");
+    check_printed("Table 1 load peak", pk, "0.24");
+    check_printed("Table 1 load peak mismatch", pk_m, "0.25");
+    // The other structure (set-point filter with the derivative on y) does not reproduce it.
+    let d = design(&ex1.plant, 0.433, 1.0, 0.3, 100.0).unwrap();
+    let b = Pid::ideal(d.pid.kc, d.pid.ti, d.pid.td)
+        .weights(1.0, 0.0)
+        .setpoint_filter(d.setpoint_filter.clone())
+        .to_controller()
+        .unwrap();
+    let (sp_b, _, _, _) = sim_metrics(&ex1.plant.plant(), &b, &ex1.scenario);
+    assert!(rel(sp_b, pr[0]) > 0.2, "derivative-on-y loop gives {sp_b}");
+}
+
+/// λ for a target Ms: the paper tuned Example 1 to Ms = 1.65 (λ = 0.433 gives 1.652).
+#[wasm_bindgen_test(unsupported = test)]
+fn target_ms_solves_lambda() {
+    let f = Family::Ifoptd {
+        k: 1.0,
+        tau: 1.0,
+        theta: 0.2,
+    };
+    let t = rules::tune(
+        "shamsuzzoha_lee",
+        &f.plant(),
+        &Params::default().with("target_ms", 1.65),
+    )
+    .unwrap();
+    let l = t.details["lambda"].as_f64().unwrap();
+    let a = analyze(&f.plant(), &t.controller).unwrap();
+    assert!(
+        (a.ms.unwrap() - 1.65).abs() < 1e-4,
+        "Ms {:?} at λ = {l}",
+        a.ms
+    );
+    // λ = 0.433 (printed, 3 digits) gives Ms 1.6523; the exact λ for 1.65 is a little larger
+    assert!(l > 0.433 && l < 0.4345, "λ = {l}");
+}
+
+/// Random plants of every family: either a finite PID with a stable set-point filter and
+/// positive τ_I, K_c·K > 0, or an error naming `params.lambda` that says which way to go.
+#[wasm_bindgen_test(unsupported = test)]
+fn random_plants_give_valid_controllers_or_clear_errors() {
+    let mut seed: u64 = 0x5eed_1234_abcd;
+    let mut rnd = move || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut ok = 0;
+    let mut err = 0;
+    for i in 0..400 {
+        let k = 10f64.powf(rnd() * 4.0 - 2.0) * if rnd() < 0.2 { -1.0 } else { 1.0 };
+        let tau = 10f64.powf(rnd() * 2.0 - 1.0);
+        let theta = 10f64.powf(rnd() * 2.0 - 1.5);
+        let fam = match i % 6 {
+            0 => Family::Ifoptd { k, tau, theta },
+            1 => Family::Piptd { k, theta },
+            2 => Family::Diptd { k, theta },
+            3 => Family::IfoptdZero {
+                k,
+                tau,
+                z: tau * (0.5 + 20.0 * rnd()),
+                theta,
+            },
+            4 => Family::IfoptdZero {
+                k,
+                tau,
+                z: -tau * rnd(),
+                theta,
+            },
+            _ => Family::IpdtIr {
+                k,
+                tau,
+                tau_z: tau * rnd(),
+                theta,
+            },
+        };
+        let lambda = theta * 10f64.powf(rnd() * 2.5 - 1.0);
+        let zeta = 0.5 + 2.0 * rnd();
+        match design(&fam, lambda, zeta, 0.3, 100.0) {
+            Ok(d) => {
+                ok += 1;
+                let p = &d.pid;
+                assert!(
+                    p.kc.is_finite() && p.ti.is_finite() && p.td.is_finite(),
+                    "{fam:?}"
+                );
+                assert!(p.ti > 0.0 && p.kc * k > 0.0, "{fam:?} λ {lambda}: {p:?}");
+                let den = &d.setpoint_filter.den;
+                assert!(
+                    den.asc().iter().all(|c| *c > 0.0),
+                    "{fam:?} λ {lambda}: unstable filter {:?}",
+                    den.to_desc()
+                );
+                assert!(d.controller.cy.num.is_finite() && d.controller.cr.num.is_finite());
+            }
+            Err(e) => {
+                err += 1;
+                assert_eq!(e.path, "params.lambda", "{fam:?} λ {lambda}: {e}");
+                assert!(
+                    e.message.contains("too large")
+                        || e.message.contains("too small")
+                        || e.message.contains("no λ"),
+                    "{fam:?} λ {lambda}: unclear error {e}"
+                );
+            }
+        }
+    }
+    assert!(ok > 200, "only {ok} valid designs ({err} errors)");
+    assert!(
+        err > 0,
+        "the sample should reach the edge of the valid λ range"
+    );
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn input_errors_name_the_field() {
+    let p = Family::Ifoptd {
+        k: 1.0,
+        tau: 1.0,
+        theta: 0.2,
+    }
+    .plant();
+    let e = rules::tune("shamsuzzoha_lee", &p, &Params::default()).unwrap_err();
+    assert_eq!(e.path, "params.lambda");
+    let e = rules::tune(
+        "shamsuzzoha_lee",
+        &p,
+        &Params::default().with("lambda", 0.4).with("gamma", 1.5),
+    )
+    .unwrap_err();
+    assert_eq!(e.path, "params.gamma");
+    let e = rules::tune(
+        "shamsuzzoha_lee",
+        &p,
+        &Params::default().with("lambda", -1.0),
+    )
+    .unwrap_err();
+    assert_eq!(e.path, "params.lambda");
+    let fo = Family::FopdtIr {
+        k: 1.0,
+        tau: 1.0,
+        tau_z: 0.1,
+        theta: 0.2,
+    }
+    .plant();
+    let e = rules::tune(
+        "shamsuzzoha_lee",
+        &fo,
+        &Params::default().with("lambda", 0.4),
+    )
+    .unwrap_err();
+    assert_eq!(e.path, "plant.family");
+    // the set-point filters of Eqs. (26) and (27)
+    assert!(setpoint_filter(0.3, &[-1.0, 2.0]).is_err());
+    let w = weighting_filter(0.3, 2.991, 0.665).unwrap();
+    assert_eq!(w.num.to_desc(), vec![0.3 * 2.991, 1.0]);
+    assert_eq!(w.den.to_desc(), vec![2.991 * 0.665, 2.991, 1.0]);
+}
+
+/// Tables 2-5, proposed rows: simulated IAE (set point and load, nominal and mismatch) within
+/// 2 % of print (CLARIFICATIONS). Three cells differ by a little more; for them the measured
+/// relative difference is asserted to ±0.5 % and explained in the reproduction report: the
+/// lightly damped mismatch loops of Example 2 (Ms 6.8 on the mismatch plant) and Example 3's
+/// set-point IAE on the mismatch plant.
+#[wasm_bindgen_test(unsupported = test)]
+fn tables2to5_proposed_rows_simulated_iae() {
+    // (example, column index into PrintedPerf, measured relative difference)
+    let exceptions = [("ex2", 3, -0.026), ("ex2", 8, -0.024), ("ex3", 3, 0.029)];
+    for st in studies().iter().filter(|s| s.id != "ex1") {
+        let row = st.rows.iter().find(|r| r.key == "proposed").unwrap();
+        let c = row.controller.as_ref().unwrap();
+        let (sp, _, ld, _) = sim_metrics(&st.plant.plant(), c, &st.scenario);
+        let (sp_m, _, ld_m, _) = sim_metrics(&st.mismatch, c, &st.scenario);
+        for (col, ours) in [(0, sp), (3, sp_m), (5, ld), (8, ld_m)] {
+            let printed = row.printed[col];
+            let d = (ours - printed) / printed;
+            match exceptions.iter().find(|(id, c, _)| *id == st.id && *c == col) {
+                Some((_, _, m)) => assert!(
+                    (d - m).abs() < 0.005,
+                    "Table {} column {col}: ours {ours} vs printed {printed} ({d:+.4}, expected {m:+.3})",
+                    st.table
+                ),
+                None => assert!(
+                    d.abs() < 0.02,
+                    "Table {} column {col}: ours {ours} vs printed {printed} ({d:+.4})",
+                    st.table
+                ),
+            }
+        }
+    }
+}
+
+/// Every preset loads and runs through the JSON API: a method call that tunes (or a literal
+/// (Cr, Cy)), then its scenario simulates without diverging.
+#[wasm_bindgen_test(unsupported = test)]
+fn presets_load_and_simulate() {
+    let ps = pidlab::rules::shamsuzzoha_lee2008::presets();
+    assert_eq!(
+        ps.len(),
+        2 * 14,
+        "14 mappable rows (all but Liu et al.), nominal and mismatch"
+    );
+    for p in ps {
+        let controller = if p.tune.is_null() {
+            p.controller.clone()
+        } else {
+            let mut q = p.tune.clone();
+            q["plant"] = p.plant.clone();
+            pidlab::api::tune(&q).unwrap_or_else(|e| panic!("{}: {e}", p.id))["controller"].clone()
+        };
+        let r = pidlab::api::simulate(&serde_json::json!({
+            "plant": p.plant, "controller": controller, "scenario": p.scenario
+        }))
+        .unwrap_or_else(|e| panic!("{}: {e}", p.id));
+        let iae = r["metrics"]["regulatory"]["iae"].as_f64();
+        assert_eq!(r["diverged"], serde_json::json!(false), "{}", p.id);
+        assert!(iae.is_some_and(|x| x.is_finite()), "{}: {r:?}", p.id);
+    }
+}
+
+/// The DIP λ guideline under Fig. 9, λ = αθ (α = 2.245, 1.5757, 1.221 for Ms = 1.6, 1.8, 2.0),
+/// against the exact λ for the target Ms on Example 5's plant (θ = 6). The printed α are a
+/// straight-line fit read off a plot; the exact λ/θ differs from them by −4.3 %, −1.3 % and
+/// +0.8 % (reported in the reproduction section); asserted to ±0.5 % of those measured values.
+#[wasm_bindgen_test(unsupported = test)]
+fn dip_lambda_guideline() {
+    let f = Family::Piptd {
+        k: 0.0506,
+        theta: 6.0,
+    };
+    let measured = [-0.0431, -0.0130, 0.0083];
+    for ((ms, alpha), m) in pidlab::rules::shamsuzzoha_lee2008::DIP_ALPHA
+        .iter()
+        .zip(measured)
+    {
+        let l =
+            pidlab::rules::shamsuzzoha_lee2008::lambda_for_ms(&f, *ms, 1.0, 0.3, 100.0).unwrap();
+        let d = (l / 6.0 - alpha) / alpha;
+        assert!(
+            (d - m).abs() < 0.005,
+            "Ms {ms}: λ/θ = {} vs α = {alpha} ({d:+.4})",
+            l / 6.0
+        );
+        let des = design(&f, l, 1.0, 0.3, 100.0).unwrap();
+        let a = analyze(&f.plant(), &des.controller).unwrap();
+        assert!((a.ms.unwrap() - ms).abs() < 1e-4);
+    }
+}
