@@ -178,6 +178,19 @@ function applicableMethods() {
   return fam ? METHODS.filter((m) => (m.families || []).includes(fam)) : [];
 }
 
+/** True when the rule refuses to tune without this parameter (its error names it). */
+function requiredParam(info, name) {
+  const params = methodParams();
+  delete params[name];
+  if (name !== 'target_ms' && state.target !== null) params.target_ms = state.target;
+  try {
+    wasm.tune({ method: info.id, plant: state.plant, params });
+    return false;
+  } catch (e) {
+    return errText(e).startsWith('params.' + name);
+  }
+}
+
 /** A parameter without a default: the value a paper preset uses with this method, if any. */
 function presetValue(method, name) {
   const p = PRESETS.find((x) => x.tune && x.tune.method === method && x.tune.params && typeof x.tune.params[name] === 'number');
@@ -245,13 +258,30 @@ function buildMethod() {
     } else {
       const min = Number.isFinite(p.min) ? p.min : 0;
       const max = Number.isFinite(p.max) ? p.max : 10;
-      if (typeof v !== 'number') v = typeof p.default === 'number' ? p.default : presetValue(info.id, p.name) ?? Number(((min + max) / 2).toPrecision(3));
-      if (p.name !== 'lambda' || state.target === null) state.params[p.name] = v;
+      const fallback = () => presetValue(info.id, p.name) ?? Number(((min + max) / 2).toPrecision(3));
+      // A parameter without a default (other than λ) is the rule's own choice unless set:
+      // "auto" omits it from params; the slider then shows the value the rule reports.
+      const autoable = (p.default === null || p.default === undefined) && p.name !== 'lambda';
+      let auto = autoable && typeof v !== 'number';
+      if (auto && requiredParam(info, p.name)) auto = false;
+      if (typeof v !== 'number') v = typeof p.default === 'number' ? p.default : fallback();
+      if (!auto && (p.name !== 'lambda' || state.target === null)) state.params[p.name] = v;
       const row = slider({
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, min, max, value: v,
-        disabled: p.name === 'lambda' && state.target !== null,
+        disabled: (p.name === 'lambda' && state.target !== null) || auto,
         onInput: (x) => { state.params[p.name] = x; changed(); },
       });
+      if (autoable) {
+        const cb = el('input', { type: 'checkbox', id: 'mp-' + p.name + '-auto', checked: auto });
+        cb.addEventListener('change', () => {
+          if (cb.checked) delete state.params[p.name];
+          else state.params[p.name] = Number($('mp-' + p.name).value);
+          row.setDisabled(cb.checked);
+          changed();
+        });
+        row.append(el('div', { class: 'check' }, cb, el('label', { for: cb.id, class: 'inline', text: 'automatic (the rule chooses)' })));
+        row.autoParam = p.name;
+      }
       if (p.help) row.append(el('p', { class: 'help', text: p.help }));
       box.append(row);
     }
@@ -321,13 +351,20 @@ function loadPreset(id) {
   if (p.scenario) state.scenario = S.cleanState({ scenario: p.scenario }).scenario;
   state.pert = { k: 0, tau: 0, zero: 0, theta: 0 };
   state.target = null;
-  if (p.tune && p.tune.method) {
+  // A rule applied to a reduced model (tune.plant) and simulated on the process itself: the
+  // designed controller is loaded as a literal on the process (the paper's figure).
+  const model = p.tune && p.tune.plant ? S.cleanPlant(p.tune.plant) : null;
+  let literal = p.controller && p.controller.cr && p.controller.cy ? p.controller : null;
+  if (model && !literal) {
+    try { literal = wasm.tune({ method: p.tune.method, plant: model, params: p.tune.params || {} }).controller; } catch { literal = null; }
+  }
+  if (p.tune && p.tune.method && !model) {
     state.method = p.tune.method;
     state.params = { ...(p.tune.params || {}) };
     if (typeof state.params.target_ms === 'number') { state.target = state.params.target_ms; delete state.params.target_ms; }
     state.literal = null;
-  } else if (p.controller && p.controller.cr && p.controller.cy) {
-    state.literal = { cr: p.controller.cr, cy: p.controller.cy, title: p.title };
+  } else if (literal) {
+    state.literal = { cr: literal.cr, cy: literal.cy, title: p.title };
     state.method = '__literal';
     state.params = {};
   }
@@ -347,8 +384,8 @@ function pinExample() {
     if (!plant) continue;
     let controller = null;
     try {
-      if (p.tune && p.tune.method) controller = wasm.tune({ method: p.tune.method, plant, params: p.tune.params || {} }).controller;
-      else if (p.controller) controller = p.controller;
+      if (p.controller && p.controller.cr) controller = p.controller;
+      else if (p.tune && p.tune.method) controller = wasm.tune({ method: p.tune.method, plant: S.cleanPlant(p.tune.plant) || plant, params: p.tune.params || {} }).controller;
     } catch {
       controller = null;
     }
@@ -757,6 +794,13 @@ function showController(r) {
     for (const [k, v] of Object.entries(r.tune.details)) {
       if (k === 'warnings' && Array.isArray(v)) v.forEach((w) => warn.append(el('li', { text: String(w) })));
       else show(det, k, v);
+    }
+    // Automatic parameters: show the value the rule chose.
+    for (const row of document.querySelectorAll('#method-params .row')) {
+      const n = row.autoParam;
+      if (!n || typeof state.params[n] === 'number') continue;
+      const v = typeof r.ctl[n] === 'number' ? r.ctl[n] : r.tune.details[n];
+      if (typeof v === 'number' && Number.isFinite(v) && row.setValue) row.setValue(v);
     }
     // With a target Ms the rule reports the solved λ: show it on the (disabled) λ slider.
     const lam = r.tune.details.lambda ?? (r.ctl.lambda);

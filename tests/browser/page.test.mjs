@@ -142,9 +142,9 @@ test('loads from file:// with no console error and no network request', async ()
 });
 
 test('moving the λ slider sets the Ms readout to exactly what analyze returns', async () => {
-  const { page, log } = await open(S.encodeHash(boilerPk(2.0)));
+  const { page, log } = await open(S.encodeHash(boilerPk(1.0)));
   const seen = new Set();
-  for (const lam of [1.2, 1.9, 2.5, 3.7, 5.0]) {
+  for (const lam of [0.5, 0.8, 1.2, 1.6, 1.9]) {
     await setInput(page, '#mp-lambda', lam);
     // The slider's own value (a range input snaps to its step) is what the page tuned with.
     const l = Number(await page.inputValue('#mp-lambda'));
@@ -205,7 +205,7 @@ test('every method and every preset renders all plots', async () => {
 });
 
 test('a URL with state restores it', async () => {
-  const st = boilerPk(2.7);
+  const st = boilerPk(1.5);
   st.plant.k = 0.8;
   st.plant.theta = 0.3;
   st.scenario.t_end = 40;
@@ -216,13 +216,13 @@ test('a URL with state restores it', async () => {
   assert.equal(Number(await page.inputValue('#fp-k-n')), 0.8);
   assert.equal(Number(await page.inputValue('#fp-theta-n')), 0.3);
   assert.equal(await page.inputValue('#method'), LAM.id);
-  assert.equal(Number(await page.inputValue('#mp-lambda')), 2.7);
+  assert.equal(Number(await page.inputValue('#mp-lambda-n')), 1.5);
   assert.equal(Number(await page.inputValue('#sc-t_end')), 40);
   assert.equal(Number(await page.inputValue('#pt-theta')), 20);
   const back = await page.evaluate(() => window.__pidlab.state());
   assert.deepEqual(back.plant, st.plant);
   assert.deepEqual(back.scenario, st.scenario);
-  assert.equal(back.params.lambda, 2.7);
+  assert.equal(back.params.lambda, 1.5);
   // The hash the page writes back decodes to the same state.
   await page.waitForTimeout(600);
   const h = await page.evaluate(() => location.hash);
@@ -244,14 +244,14 @@ test('an unstable setting shows the banner', async () => {
 });
 
 test('robustness: the true-plant Ms is analyze on the perturbed plant; the nominal stays drawn', async () => {
-  const st = boilerPk(2.0);
+  const st = boilerPk(1.0);
   st.pert = { k: 30, tau: 0, zero: 0, theta: 40 };
   const { page, log } = await open(S.encodeHash(st));
   assert.equal(await page.isVisible('#ro-true-box'), true);
   const got = await page.evaluate((lam) => {
     const w = window.__pidlab.wasm;
     const p = window.__pidlab.state().plant;
-    const t = w.tune({ method: lam.id, plant: p, params: { ...lam.fixed, lambda: 2.0 } });
+    const t = w.tune({ method: lam.id, plant: p, params: { ...lam.fixed, lambda: 1.0 } });
     const truePlant = { ...p, k: p.k * 1.3, theta: p.theta * 1.4 };
     const a = w.analyze({ plant: truePlant, controller: { cr: t.controller.cr, cy: t.controller.cy } });
     return { ms: a.ms, value: document.getElementById('ro-ms-true').getAttribute('data-value') };
@@ -265,7 +265,7 @@ test('robustness: the true-plant Ms is analyze on the perturbed plant; the nomin
 });
 
 test('embed mode shows the plots and only the chosen sliders', async () => {
-  const st = boilerPk(2.0);
+  const st = boilerPk(1.0);
   st.show = ['mp-lambda', 'fp-theta'];
   const { page, log } = await open(S.encodeHash(st, true), { width: 640, height: 700 });
   assert.equal(await page.isVisible('#mp-lambda'), true);
@@ -280,7 +280,7 @@ test('embed mode shows the plots and only the chosen sliders', async () => {
 });
 
 test('CSV export of the responses and PNG export of a plot', async () => {
-  const { page } = await open(S.encodeHash(boilerPk(2.0)));
+  const { page } = await open(S.encodeHash(boilerPk(1.0)));
   const [csv] = await Promise.all([page.waitForEvent('download'), page.click('#export-csv')]);
   const text = readFileSync(await csv.path(), 'utf8').trim().split('\n');
   assert.equal(text[0], 't,r,d,y,u');
@@ -298,7 +298,7 @@ test('CSV export of the responses and PNG export of a plot', async () => {
 });
 
 test('a custom num/den plant keeps the last controller and renders', async () => {
-  const { page, log } = await open(S.encodeHash(boilerPk(2.0)));
+  const { page, log } = await open(S.encodeHash(boilerPk(1.0)));
   await setInput(page, '#family', 'custom', 'change');
   assert.match(await page.$eval('#method', (m) => m.options[m.selectedIndex].textContent), /held/);
   await page.fill('#custom-den', '2, 3, 1, 0');
@@ -318,7 +318,7 @@ test('no URL or user text is interpreted as HTML', async () => {
     const src = readFileSync(join(root, 'www', f), 'utf8');
     assert.doesNotMatch(src, /innerHTML|outerHTML|insertAdjacentHTML|document\.write|\beval\(|new Function/, f);
   }
-  const st = boilerPk(2.0);
+  const st = boilerPk(1.0);
   st.method = '__literal';
   st.literal = { cr: { num: [1], den: [1, 0] }, cy: { num: [1], den: [1, 0] }, title: '<img src=x onerror="window.__pwned=1">' };
   st.pins = [{ label: '<b id=pwn>x</b>', plant: st.plant, controller: st.literal, scenario: st.scenario }];
@@ -330,14 +330,14 @@ test('no URL or user text is interpreted as HTML', async () => {
 });
 
 test('input-to-paint latency of the λ slider', async () => {
-  const { page } = await open(S.encodeHash(boilerPk(2.0)));
+  const { page } = await open(S.encodeHash(boilerPk(1.0)));
   const n = 120;
   const r = await page.evaluate(async (count) => {
     const x = document.getElementById('mp-lambda');
     const perf = window.__pidlab.perf;
     const frame = [], painted = [], work = [], phases = {};
     for (let i = 0; i < count; i++) {
-      const v = 1.5 + 2.5 * ((i * 37) % count) / count;
+      const v = 0.5 + 1.4 * ((i * 37) % count) / count;
       const t0 = performance.now();
       x.value = String(v);
       x.dispatchEvent(new Event('input', { bubbles: true }));
@@ -370,7 +370,7 @@ test('screenshots (docs/screenshot.png; 360 px wide in /tmp)', async () => {
   const st = boilerPk(1.9);
   const { page } = await open(S.encodeHash(st));
   await page.click('#pin');
-  await setInput(page, '#mp-lambda', 3.0);
+  await setInput(page, '#mp-lambda', 1.2);
   await page.waitForTimeout(200);
   await page.screenshot({ path: join(root, 'docs', 'screenshot.png'), fullPage: true });
   await page.close();
