@@ -447,7 +447,12 @@ function methodParams() {
   const info = methodInfo(state.method);
   const params = {};
   if (!info) return params;
-  for (const p of info.params) if (state.params[p.name] !== undefined) params[p.name] = state.params[p.name];
+  // Values equal to the method's default are left out (the rule applies its default; some
+  // rules warn when an option that does not apply is given explicitly).
+  for (const p of info.params) {
+    const v = state.params[p.name];
+    if (v !== undefined && v !== p.default) params[p.name] = v;
+  }
   if (state.target !== null) {
     params.target_ms = state.target;
     delete params.lambda;
@@ -728,7 +733,8 @@ function showMetrics(r) {
     const m = sim ? sim.metrics || {} : {};
     const cells = METRIC_COLS.map(([w, k]) => {
       const v = m[w] ? m[w][k] : null;
-      return el('td', { text: v === null || v === undefined ? '–' : k === 'overshoot' ? S.fmt(100 * v, 3) + ' %' : S.fmt(v) });
+      // Round-off sized overshoot (|v| < 1e-9) is shown as 0.
+      return el('td', { text: v === null || v === undefined ? '–' : k === 'overshoot' ? (Math.abs(v) < 1e-9 ? '0' : S.fmt(100 * v, 3)) + ' %' : S.fmt(v) });
     });
     return el('tr', {}, el('th', { scope: 'row' }, el('span', { class: 'swatch', 'data-color': color }), label), ...cells, el('td', { text: S.fmt(ms) }));
   };
@@ -739,7 +745,7 @@ function showMetrics(r) {
   // Text equivalents of the plots for screen readers.
   const m = r.sim && r.sim.metrics ? r.sim.metrics : {};
   const sv = m.servo || {}, rg = m.regulatory || {};
-  $('plot-servo').setAttribute('aria-label', 'Set-point response of y to a step in r: overshoot ' + (typeof sv.overshoot === 'number' ? S.fmt(100 * sv.overshoot, 3) + ' %' : '–') + ', settling time ' + S.fmt(sv.settling_time) + ', IAE ' + S.fmt(sv.iae));
+  $('plot-servo').setAttribute('aria-label', 'Set-point response of y to a step in r: overshoot ' + (typeof sv.overshoot === 'number' ? (Math.abs(sv.overshoot) < 1e-9 ? '0' : S.fmt(100 * sv.overshoot, 3)) + ' %' : '–') + ', settling time ' + S.fmt(sv.settling_time) + ', IAE ' + S.fmt(sv.iae));
   $('plot-load').setAttribute('aria-label', 'Load response of y to a step at the plant input: peak error ' + S.fmt(rg.peak_error) + ', settling time ' + S.fmt(rg.settling_time) + ', IAE ' + S.fmt(rg.iae));
   $('plot-u').setAttribute('aria-label', 'Control signal u: total variation ' + S.fmt(sv.tv) + ' (servo), ' + S.fmt(rg.tv) + ' (load)');
   $('plot-nyquist').setAttribute('aria-label', 'Nyquist plot of L(jω) with the circle of radius 1/Ms around −1; Ms ' + (r.an ? S.fmt(r.an.ms) : '–') + (r.an && r.an.stable === false ? ', closed loop unstable' : ''));
@@ -812,8 +818,10 @@ function showController(r) {
 // ---------------------------------------------------------------- pins
 function pinLabel() {
   const info = methodInfo(state.method);
-  const base = info ? info.title : state.literal ? state.literal.title || 'literal' : 'design';
-  const ps = Object.entries(methodParams()).map(([k, v]) => k + '=' + (typeof v === 'number' ? S.fmt(v, 3) : v)).join(', ');
+  let base = info ? info.title : state.literal ? state.literal.title || 'literal' : 'design';
+  base = base.split(/[:(—]/)[0].trim();
+  if (base.length > 40) base = base.slice(0, 39) + '…';
+  const ps = Object.entries(methodParams()).map(([k, v]) => (SYMBOLS[k] || k) + '=' + (typeof v === 'number' ? S.fmt(v, 3) : v)).join(', ');
   return base + (ps ? ' (' + ps + ')' : '');
 }
 
