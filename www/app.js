@@ -655,7 +655,8 @@ function drawPlots(r) {
   const runs = []; // {sim, color, label, faint}
   pinCache.forEach((p, i) => { if (p.sim) runs.push({ sim: p.sim, color: p.color, label: p.label, faint: false }); });
   if (r.simNom) runs.push({ sim: r.simNom, color: C_CUR, label: 'y nominal plant', faint: true });
-  if (r.sim) runs.push({ sim: r.sim, color: C_CUR, label: S.isPerturbed(state.pert) ? 'y true plant' : 'y', faint: false });
+  const cur = pinCache.length ? ' (current design)' : '';
+  if (r.sim) runs.push({ sim: r.sim, color: C_CUR, label: (S.isPerturbed(state.pert) ? 'y true plant' : 'y') + cur, faint: false });
   const divLines = r.sim && r.sim.diverged && Number.isFinite(r.sim.diverged_at) ? [{ x: r.sim.diverged_at, label: 'diverged', color: '#D55E00' }] : [];
   for (const id of ['plot-servo', 'plot-load', 'plot-u', 'plot-nyquist']) sizeCanvas($(id));
 
@@ -697,7 +698,7 @@ function drawPlots(r) {
       ny.push({ label: 'L true plant', x: Lt.re, y: Lt.im, color: C_CUR });
     } else {
       ny.push({ label: '', x: L.re, y: L.im.map((v) => -v), color: C_CUR, dash: 'dot', faint: true, width: 1.5 });
-      ny.push({ label: 'L(jω)', x: L.re, y: L.im, color: C_CUR });
+      ny.push({ label: 'L(jω)' + (pinCache.length ? ' (current design)' : ''), x: L.re, y: L.im, color: C_CUR });
     }
     r.L = L;
     if (r.an && Number.isFinite(r.an.ms) && r.an.ms > 0) circle = { cx: -1, cy: 0, r: 1 / r.an.ms, label: 'Ms circle, r = 1/Ms', color: '#D55E00' };
