@@ -204,6 +204,27 @@ test('every method and every preset renders all plots', async () => {
   await page.close();
 });
 
+test('the target-Ms control solves λ so that the Ms readout equals the target', async () => {
+  const { page, log } = await open(S.encodeHash(boilerPk(1.0)));
+  await page.check('#target-on');
+  await frames(page);
+  assert.equal(await page.isDisabled('#mp-lambda'), true);
+  for (const target of [1.6, 1.9]) {
+    await setInput(page, '#mp-target_ms-n', target);
+    const ms = Number(await page.getAttribute('#ro-ms', 'data-value'));
+    // solve_for_ms stops at a tolerance well below the readout's 4 digits
+    const b = await page.$$eval('#banners .banner', (x) => x.map((e) => e.textContent));
+    assert.ok(Math.abs(ms - target) < 1e-3, `target ${target}: Ms ${ms} ${b.join(' | ')}`);
+  }
+  const lam = Number(await page.inputValue('#mp-lambda-n'));
+  await page.uncheck('#target-on');
+  await frames(page);
+  assert.ok(Math.abs(Number(await page.inputValue('#mp-lambda-n')) - lam) < 1e-5, 'λ continues from the solved value');
+  assert.ok(Math.abs(Number(await page.getAttribute('#ro-ms', 'data-value')) - 1.9) < 1e-3);
+  assert.deepEqual(log.errors, []);
+  await page.close();
+});
+
 test('a URL with state restores it', async () => {
   const st = boilerPk(1.5);
   st.plant.k = 0.8;
