@@ -634,6 +634,7 @@ function thin(x, y, buckets) {
   return { x: ox, y: oy };
 }
 
+let plotAsObject = false;
 function plot(spec) {
   try {
     const sz = cssSize.get(spec.canvas);
@@ -641,7 +642,19 @@ function plot(spec) {
     if (spec.kind === 'time') {
       for (const s of spec.series) { const t = thin(s.x, s.y, buckets); s.x = t.x; s.y = t.y; }
     }
-    wasm.plot(JSON.stringify(spec));
+    if (plotAsObject) {
+      wasm.plot(spec);
+    } else {
+      try {
+        wasm.plot(JSON.stringify(spec));
+      } catch (e) {
+        // A boundary that only takes objects: send the object from now on. (A spec field
+        // error, "spec.<field>: ...", is a real error and is reported.)
+        if (/^spec\./.test(errText(e))) throw e;
+        plotAsObject = true;
+        wasm.plot(spec);
+      }
+    }
   } catch (e) {
     showBanners([...(last ? last.banners : []), { kind: 'warn', title: 'Plot ' + spec.canvas, text: errText(e) }]);
   }
