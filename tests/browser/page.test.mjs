@@ -264,6 +264,20 @@ test('an unstable setting shows the banner', async () => {
   await page.close();
 });
 
+test('a neutral-type loop (|L(j∞)| ≥ 1 through an ideal derivative) shows its banner', async () => {
+  // Boiler P(s) has relative degree one (k τz/τ = 0.2157 at high frequency); an ideal
+  // derivative K_D = 10 makes |L(j∞)| = 2.16 ≥ 1.
+  const st = S.defaultState();
+  st.method = '__literal';
+  const c = { num: [10, 1, 0.1], den: [1, 0] };
+  st.literal = { cr: { num: [1, 0.1], den: [1, 0] }, cy: c, title: 'PID with K_D = 10, ideal derivative' };
+  const { page, log } = await open(S.encodeHash(st));
+  const banners = await page.$$eval('#banners .banner', (b) => b.map((x) => x.textContent));
+  assert.ok(banners.some((b) => /neutral/i.test(b)), 'banner: ' + banners.join(' | '));
+  assert.deepEqual(log.errors, []);
+  await page.close();
+});
+
 test('robustness: the true-plant Ms is analyze on the perturbed plant; the nominal stays drawn', async () => {
   const st = boilerPk(1.0);
   st.pert = { k: 30, tau: 0, zero: 0, theta: 40 };
