@@ -526,9 +526,10 @@ function render() {
     showReadouts(r);
     const t1 = performance.now();
     drawPlots(r);
-    lap('plots', t1);
+    const t2 = lap('plots', t1);
     showMetrics(r);
     showController(r);
+    lap('tables', t2);
   } catch (e) {
     showBanners([{ kind: 'error', title: 'Internal error', text: errText(e) }]);
   }
