@@ -302,6 +302,26 @@ pub fn tune(input: &Value) -> Result<Value> {
     }))
 }
 
+/// `reduce({plant, rule})`: Kaya 2020's model reduction of a higher-order plant with one RHP
+/// zero to FOPDT-IR (`rule`: "paper" (default), "taylor", "half_rule").
+pub fn reduce(input: &Value) -> Result<Value> {
+    use crate::rules::kaya2020::{reduce_to_fopdt_ir_with, Reduction};
+    let plant = parse_plant(field(input, "plant", "")?, "plant")?;
+    let rule = match opt_field(input, "rule") {
+        None => Reduction::Paper,
+        Some(v) => v.as_str().and_then(Reduction::from_id).ok_or_else(|| {
+            Error::new(
+                "rule",
+                format!("must be one of {}", Reduction::IDS.join(", ")),
+            )
+        })?,
+    };
+    let (fam, details) = reduce_to_fopdt_ir_with(&plant, rule)?;
+    Ok(
+        json!({ "model": plant_json(&fam.plant()), "rule": rule.id(), "details": Value::Object(details) }),
+    )
+}
+
 /// `simulate({plant, controller, scenario})` of API.md.
 pub fn simulate(input: &Value) -> Result<Value> {
     let plant = parse_plant(field(input, "plant", "")?, "plant")?;

@@ -25,7 +25,7 @@
 //! - `y_final`, `u_final`: the loop's steady state for the window's r and d (solved
 //!   exactly from the loop equations; the last sample when the loop has no steady state).
 
-use crate::sim::{lagrange, lagrange_deriv, LoopModel, Scenario, SimResult, Trajectory, DEG};
+use crate::sim::{monomial_coeffs, LoopModel, Scenario, SimResult, Trajectory, DEG, NODES};
 use nalgebra::{DMatrix, DVector};
 
 /// Metrics of one window (see the module docs for definitions).
@@ -201,7 +201,10 @@ fn window(
         let d = traj.step_at(&traj.disturbance, t0);
         let yv = traj.y_nodes(k);
         let vv = traj.v_nodes(k);
-        let uv: Vec<f64> = vv.iter().map(|v| v - d).collect();
+        let mut uv = [0.0; NODES];
+        for (u, v) in uv.iter_mut().zip(vv) {
+            *u = v - d;
+        }
         if let Some(pu) = prev_u_end {
             if (uv[0] - pu).abs() > 1e-9 * scale_u {
                 u_jumps = true;
@@ -216,22 +219,31 @@ fn window(
                 dense.push((t0 + s * len, *y));
             }
         }
-        let e_at = |s: f64| r - lagrange(yv, s);
-        // split [s0, s1] at sign changes of e
-        let mut cuts = vec![s0];
-        let mut probe: Vec<f64> = vec![s0];
-        for j in 1..DEG {
-            let s = j as f64 / DEG as f64;
-            if s > s0 && s < s1 {
-                probe.push(s);
+        // monomial forms once per piece, Horner at the quadrature points
+        let yc = monomial_coeffs(yv);
+        let uc = monomial_coeffs(&uv);
+        let horner = |c: &[f64; NODES], s: f64| c.iter().rev().fold(0.0, |acc, a| acc * s + a);
+        let horner_d = |c: &[f64; NODES], s: f64| {
+            (1..NODES)
+                .rev()
+                .fold(0.0, |acc, k| acc * s + k as f64 * c[k])
+        };
+        let e_at = |s: f64| r - horner(&yc, s);
+        // split [s0, s1] at sign changes of e (probed at the nodes inside)
+        let mut cuts = [0.0; NODES + 2];
+        let mut nc = 0;
+        cuts[nc] = s0;
+        nc += 1;
+        let mut prev_s = s0;
+        let mut prev_e = e_at(s0);
+        for j in 1..=DEG {
+            let s = if j == DEG { s1 } else { j as f64 / DEG as f64 };
+            if s <= s0 || s > s1 || (j < DEG && s >= s1) {
+                continue;
             }
-        }
-        probe.push(s1);
-        for w in probe.windows(2) {
-            let (mut lo, mut hi) = (w[0], w[1]);
-            let (flo, fhi) = (e_at(lo), e_at(hi));
-            if flo * fhi < 0.0 {
-                let mut fl = flo;
+            let fe = e_at(s);
+            if prev_e * fe < 0.0 {
+                let (mut lo, mut hi, mut fl) = (prev_s, s, prev_e);
                 for _ in 0..60 {
                     let mid = 0.5 * (lo + hi);
                     let fm = e_at(mid);
@@ -242,11 +254,15 @@ fn window(
                         fl = fm;
                     }
                 }
-                cuts.push(0.5 * (lo + hi));
+                cuts[nc] = 0.5 * (lo + hi);
+                nc += 1;
             }
+            prev_s = s;
+            prev_e = fe;
         }
-        cuts.push(s1);
-        for w in cuts.windows(2) {
+        cuts[nc] = s1;
+        nc += 1;
+        for w in cuts[..nc].windows(2) {
             let (sa, sb) = (w[0], w[1]);
             let half = 0.5 * (sb - sa) * len;
             for (x, wt) in GL_X.iter().zip(GL_W.iter()) {
@@ -262,9 +278,9 @@ fn window(
                 acc.iste += wq * t2 * e2;
                 acc.ist2e += wq * t2 * t2 * e2;
                 acc.ist3e += wq * t2 * t2 * t2 * e2;
-                let u = lagrange(&uv, s);
+                let u = horner(&uc, s);
                 acc.cod += wq * (e2 + kk * kk * (u - u_inf).powi(2));
-                let du = lagrange_deriv(&uv, s) / len;
+                let du = horner_d(&uc, s) / len;
                 acc.dco += wq * (e2 + kk * kk * tt * tt * du * du);
             }
         }

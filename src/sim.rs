@@ -36,7 +36,8 @@ use nalgebra::{DMatrix, DVector};
 
 /// Interpolation degree on each piece (nodes per piece = DEG + 1).
 pub const DEG: usize = 5;
-const NODES: usize = DEG + 1;
+/// Nodes per piece.
+pub const NODES: usize = DEG + 1;
 /// Hard cap on the number of pieces of one simulation.
 const MAX_PIECES: usize = 1_000_000;
 
@@ -278,13 +279,17 @@ impl LoopModel {
     }
 }
 
-/// Propagators of one piece length ℓ: for node i = 1..=DEG (τ_i = iℓ/DEG),
-/// `x_i = Φ_i x_0 + K_i w + R_i r + D_i d` with `w` the delayed input at the 6 nodes.
+/// Propagators of one piece length ℓ, flattened for the hot loop. With the stacked input
+/// `z = [x₀ (n); w (6 node values); r; d]` (length `n + 8`), node i = 1..=DEG (τ_i = iℓ/DEG):
+/// `x_i = M_i z`, `v_i = vrow_i·z + E w_i`, `y_i = yrow_i·z + Y_w w_i` (the constant r, d terms
+/// are inside the rows). Only `M_DEG` (the end state) is kept as a matrix.
 struct Prop {
-    phi: Vec<DMatrix<f64>>,
-    kw: Vec<DMatrix<f64>>,
-    rr: Vec<DVector<f64>>,
-    rd: Vec<DVector<f64>>,
+    /// `M_DEG`, row-major n × (n + 8).
+    m_end: Vec<f64>,
+    /// `vrow_i`, i = 1..=DEG, each of length n + 8.
+    vrows: Vec<Vec<f64>>,
+    /// `yrow_i`, i = 1..=DEG.
+    yrows: Vec<Vec<f64>>,
 }
 
 fn propagators(m: &LoopModel, len: f64) -> Result<Prop> {
@@ -314,21 +319,44 @@ fn propagators(m: &LoopModel, len: f64) -> Result<Prop> {
     let vinv = v
         .try_inverse()
         .ok_or_else(|| Error::new("", "internal: interpolation matrix singular"))?;
+    let width = n + NODES + 2;
     let mut p = Prop {
-        phi: vec![],
-        kw: vec![],
-        rr: vec![],
-        rd: vec![],
+        m_end: vec![],
+        vrows: vec![],
+        yrows: vec![],
     };
     let mut ei = e1.clone();
     for i in 1..=DEG {
         if i > 1 {
             ei = &ei * &e1;
         }
-        p.phi.push(ei.view((0, 0), (n, n)).into_owned());
-        p.kw.push(ei.view((0, n), (n, NODES)).into_owned() * &vinv);
-        p.rr.push(ei.view((0, ir), (n, 1)).column(0).into_owned());
-        p.rd.push(ei.view((0, id), (n, 1)).column(0).into_owned());
+        // M_i = [Φ_i | K_i V⁻¹ | R_i | D_i]
+        let mut mi = DMatrix::zeros(n, width);
+        mi.view_mut((0, 0), (n, n))
+            .copy_from(&ei.view((0, 0), (n, n)));
+        mi.view_mut((0, n), (n, NODES))
+            .copy_from(&(ei.view((0, n), (n, NODES)) * &vinv));
+        mi.view_mut((0, ir), (n, 1))
+            .copy_from(&ei.view((0, ir), (n, 1)));
+        mi.view_mut((0, id), (n, 1))
+            .copy_from(&ei.view((0, id), (n, 1)));
+        let mut vrow: Vec<f64> = (0..width).map(|j| m.g.dot(&mi.column(j))).collect();
+        let mut yrow: Vec<f64> = (0..width).map(|j| m.yx.dot(&mi.column(j))).collect();
+        // direct terms: E w_i, Y_w w_i (node i of w), H r, H_d d, Y_r r, Y_d d
+        vrow[n + i] += m.e;
+        yrow[n + i] += m.yw;
+        vrow[ir] += m.h;
+        vrow[id] += m.hd;
+        yrow[ir] += m.yr;
+        yrow[id] += m.yd;
+        p.vrows.push(vrow);
+        p.yrows.push(yrow);
+        if i == DEG {
+            p.m_end = (0..n)
+                .flat_map(|r| (0..width).map(move |c| (r, c)))
+                .map(|(r, c)| mi[(r, c)])
+                .collect();
+        }
     }
     Ok(p)
 }
@@ -451,7 +479,8 @@ pub fn lagrange_deriv(vals: &[f64], s: f64) -> f64 {
     d
 }
 
-fn monomial_coeffs(vals: &[f64]) -> [f64; NODES] {
+/// Monomial coefficients (ascending in σ) of the interpolant through the 6 equispaced nodes.
+pub fn monomial_coeffs(vals: &[f64]) -> [f64; NODES] {
     // Newton forward differences → monomial coefficients
     let mut a = [0.0; NODES];
     a.copy_from_slice(vals);
@@ -552,44 +581,49 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
     };
     let scale = sc.setpoint.size.abs().max(sc.disturbance.size.abs());
     let limit = 1e8 * scale.max(f64::MIN_POSITIVE);
-    let mut x = DVector::zeros(n);
-    let mut xi = DVector::zeros(n);
-    let mut w = [0.0; NODES];
+    let width = n + NODES + 2;
+    let gx: Vec<f64> = m.g.iter().copied().collect();
+    let yxv: Vec<f64> = m.yx.iter().copied().collect();
+    // z = [x; w; r; d]
+    let mut z = vec![0.0; width];
+    let mut xn = vec![0.0; n];
     let lag = n_delay * pps;
     let mut diverged_at = None;
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).fold(0.0, |s, (x, y)| s + x * y);
     for k in 0..total {
         let (t0, _) = traj.piece(k);
         let r = traj.step_at(&sc.setpoint, t0);
         let d = traj.step_at(&sc.disturbance, t0);
         if m.delay > 0.0 && k >= lag {
-            w.copy_from_slice(traj.v_nodes(k - lag));
+            let base = (k - lag) * NODES;
+            z[n..n + NODES].copy_from_slice(&traj.v[base..base + NODES]);
         } else {
-            w = [0.0; NODES];
+            z[n..n + NODES].fill(0.0);
         }
+        z[n + NODES] = r;
+        z[n + NODES + 1] = d;
         let p = &props[k % pps];
-        let wv = DVector::from_column_slice(&w);
-        let mut bad = false;
-        for (i, wi) in w.iter().enumerate() {
-            if i > 0 {
-                xi.copy_from(&p.rr[i - 1]);
-                xi *= r;
-                xi.axpy(d, &p.rd[i - 1], 1.0);
-                xi.gemv(1.0, &p.phi[i - 1], &x, 1.0);
-                xi.gemv(1.0, &p.kw[i - 1], &wv, 1.0);
-            } else {
-                xi.copy_from(&x);
-            }
-            let v = m.g.dot(&xi) + m.h * r + m.hd * d + m.e * wi;
-            let y = m.yx.dot(&xi) + m.yw * wi + m.yr * r + m.yd * d;
+        let w0 = z[n];
+        let v0 = dot(&gx, &z[..n]) + m.h * r + m.hd * d + m.e * w0;
+        let y0 = dot(&yxv, &z[..n]) + m.yw * w0 + m.yr * r + m.yd * d;
+        let mut bad = !(v0.abs() <= limit && y0.abs() <= limit);
+        traj.v.push(v0);
+        traj.y.push(y0);
+        for i in 0..DEG {
+            let v = dot(&p.vrows[i], &z);
+            let y = dot(&p.yrows[i], &z);
             if !(v.abs() <= limit && y.abs() <= limit) {
                 bad = true;
             }
             traj.v.push(v);
             traj.y.push(y);
         }
-        std::mem::swap(&mut x, &mut xi);
+        for (row, xr) in xn.iter_mut().enumerate() {
+            *xr = dot(&p.m_end[row * width..(row + 1) * width], &z);
+        }
+        z[..n].copy_from_slice(&xn);
         traj.n_pieces = k + 1;
-        if bad || !x.iter().all(|z| z.is_finite()) {
+        if bad || !xn.iter().all(|q| q.is_finite()) {
             diverged_at = Some(t0);
             // keep only the pieces before this one
             traj.n_pieces = k;

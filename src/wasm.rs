@@ -60,3 +60,9 @@ pub fn simulate(input: JsValue) -> Result<JsValue, JsError> {
 pub fn analyze(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::analyze)
 }
+
+/// `reduce({plant, rule})`: reduce a higher-order plant with one RHP zero to FOPDT-IR (Kaya 2020).
+#[wasm_bindgen]
+pub fn reduce(input: JsValue) -> Result<JsValue, JsError> {
+    call(input, api::reduce)
+}

@@ -587,7 +587,9 @@ pub fn methods() -> Vec<MethodInfo> {
         id: "kaya".into(),
         title: "Kaya 2020: optimal I-PD rules for stable inverse-response processes".into(),
         citation: CITATION.into(),
-        families: vec!["fopdt_ir".into()],
+        // "custom": any rational plant with real stable poles and one RHP zero is first reduced
+        // to FOPDT-IR by `reduce_to_fopdt_ir` (as the paper does for Examples 2 and 3).
+        families: vec!["fopdt_ir".into(), "custom".into()],
         structure: "I-PD: G_c1 = K_c/(T_i s) on the error, G_c2 = K_c(1 + T_d s) on the \
                     measurement (derivative filtered, T_f = T_d/N)"
             .into(),
