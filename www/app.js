@@ -143,6 +143,7 @@ function setFamily(id) {
     const tf = old.family ? S.familyTf(old) : old;
     if (last && last.ctl && state.method !== '__literal') {
       state.literal = { cr: last.ctl.cr, cy: last.ctl.cy, title: 'last design (held)' };
+      state.method = '__literal';
     }
     state.plant = { num: tf.num, den: tf.den, delay: tf.delay };
   } else {
@@ -174,8 +175,9 @@ function methodInfo(id) {
 }
 
 function applicableMethods() {
-  const fam = state.plant.family;
-  return fam ? METHODS.filter((m) => (m.families || []).includes(fam)) : [];
+  // A num/den plant is family "custom" (methods that accept any plant list it).
+  const fam = state.plant.family || 'custom';
+  return METHODS.filter((m) => (m.families || []).includes(fam));
 }
 
 /** True when the rule refuses to tune without this parameter (its error names it). */
@@ -210,7 +212,7 @@ function buildMethod() {
   if (state.method === '__literal' && !state.literal) state.method = list.length ? list[0].id : null;
   sel.value = state.method || '';
   sel.disabled = sel.options.length === 0;
-  if (sel.options.length === 0) sel.append(el('option', { value: '', text: 'no method applies to a custom plant: load a preset' }));
+  if (sel.options.length === 0) sel.append(el('option', { value: '', text: 'no method applies to this plant: load a preset' }));
 
   const info = methodInfo(state.method);
   $('method-structure').textContent = info ? info.structure : state.method === '__literal' ? 'Literal (Cr, Cy) of a comparison setting' : '';
