@@ -36,6 +36,7 @@ pub mod error;
 pub mod freq;
 pub mod metrics;
 pub mod plant;
+pub mod plot;
 pub mod poly;
 pub mod rules;
 pub mod sim;

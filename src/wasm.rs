@@ -66,3 +66,11 @@ pub fn analyze(input: JsValue) -> Result<JsValue, JsError> {
 pub fn reduce(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::reduce)
 }
+
+/// `plot(spec)`: draws a plot on a canvas (spec format in [`crate::plot`]; `spec` may be the
+/// JSON text of the spec, which crosses the boundary much faster than an object).
+#[wasm_bindgen]
+pub fn plot(spec: JsValue) -> Result<(), JsError> {
+    let v = from_js(spec)?;
+    crate::plot::draw(&v).map_err(err)
+}

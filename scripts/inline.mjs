@@ -1,0 +1,140 @@
+#!/usr/bin/env node
+// Builds the single self-contained offline page dist/pidlab.html from www/:
+// the stylesheet, the ES modules (app.js, state.js, the wasm-pack `--target web` glue
+// www/pkg/pidlab.js) and the wasm binary (base64) are inlined, so the file works opened from
+// file:// with no network at all (module imports and fetch do not work from file://).
+//
+// How the modules are combined: each module `M` becomes a scope
+//   const __m_M = (() => { <source without `export` keywords>; return Object.freeze({ ...exports }); })();
+// and `import * as X from './M.js'` becomes `const X = __m_M;`. Only that import form is
+// accepted (the build fails on any other), so the transformation is exact for our sources.
+// The page's Content-Security-Policy is rewritten to allow exactly the inlined script and
+// style (by SHA-256 hash) and wasm compilation ('wasm-unsafe-eval'); everything else,
+// including every network fetch, is denied (default-src 'none').
+//
+// Usage: node scripts/inline.mjs [www-dir] [out-file]
+import { readFileSync, writeFileSync, mkdirSync, existsSync } from 'node:fs';
+import { createHash } from 'node:crypto';
+import { dirname, join, resolve, relative } from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const root = resolve(dirname(new URL(import.meta.url).pathname), '..');
+const www = resolve(process.argv[2] || join(root, 'www'));
+const out = resolve(process.argv[3] || join(root, 'dist', 'pidlab.html'));
+
+function fail(msg) {
+  console.error('inline.mjs: ' + msg);
+  process.exit(1);
+}
+
+const read = (p) => {
+  if (!existsSync(p)) fail(`missing ${relative(root, p)} (run wasm-pack build --release --target web --out-dir www/pkg first)`);
+  return readFileSync(p);
+};
+
+const modules = new Map(); // absolute path -> { name, code }
+const order = [];
+
+function modName(p) {
+  return '__m_' + relative(www, p).replace(/\.js$/, '').replace(/[^A-Za-z0-9]/g, '_');
+}
+
+/** Converts one ES module into a scoped namespace object (recursively inlining its imports). */
+function inlineModule(path) {
+  if (modules.has(path)) return modules.get(path).name;
+  const name = modName(path);
+  modules.set(path, { name, code: null });
+  let src = read(path).toString('utf8');
+  const exportsList = [];
+  // Imports: only `import * as X from './rel.js';`
+  src = src.replace(/^\s*import\s+\*\s+as\s+([A-Za-z_$][\w$]*)\s+from\s+['"](\.{1,2}\/[^'"]+)['"];?\s*$/gm, (_, local, rel) => {
+    const dep = resolve(dirname(path), rel);
+    return `const ${local} = ${inlineModule(dep)};`;
+  });
+  if (/^\s*import[\s{*'"]/m.test(src)) fail(`${relative(root, path)}: only "import * as X from './file.js'" can be inlined`);
+  // export function/class/const/let/var/async function
+  src = src.replace(/^export\s+((?:async\s+)?function\*?|class|const|let|var)\s+([A-Za-z_$][\w$]*)/gm, (_, kw, id) => {
+    exportsList.push([id, id]);
+    return `${kw} ${id}`;
+  });
+  // export { a, b as c };
+  src = src.replace(/^export\s*\{([^}]*)\};?\s*$/gm, (_, list) => {
+    for (const item of list.split(',').map((x) => x.trim()).filter(Boolean)) {
+      const m = item.match(/^([A-Za-z_$][\w$]*)(?:\s+as\s+([A-Za-z_$][\w$]*))?$/);
+      if (!m) fail(`${relative(root, path)}: cannot parse export item "${item}"`);
+      exportsList.push([m[2] || m[1], m[1]]);
+    }
+    return '';
+  });
+  // export default <identifier>;
+  src = src.replace(/^export\s+default\s+([A-Za-z_$][\w$]*);?\s*$/gm, (_, id) => {
+    exportsList.push(['default', id]);
+    return '';
+  });
+  if (/^\s*export\s/m.test(src)) fail(`${relative(root, path)}: an export form the inliner does not handle`);
+  const obj = exportsList.map(([k, v]) => (k === v ? k : `${JSON.stringify(k)}: ${v}`)).join(', ');
+  const code = `const ${name} = (() => {\n${src}\nreturn Object.freeze({ ${obj} });\n})();\n`;
+  modules.get(path).code = code;
+  order.push(path);
+  return name;
+}
+
+const html = read(join(www, 'index.html')).toString('utf8');
+
+// Smoke test: the wasm must instantiate with its glue and answer methods(). A module damaged by
+// an optimizer (Debian's wasm-opt 108 breaks wasm-bindgen 0.2.130's externref table:
+// "WebAssembly.Table.set(): Argument 1 is invalid") would otherwise ship a dead page.
+try {
+  const glue = await import(pathToFileURL(join(www, 'pkg', 'pidlab.js')).href);
+  glue.initSync({ module: readFileSync(join(www, 'pkg', 'pidlab_bg.wasm')) });
+  const m = glue.methods();
+  if (!m || !Array.isArray(m.methods)) throw new Error('methods() did not return { methods: [...] }');
+  for (const f of ['tune', 'simulate', 'analyze', 'presets', 'plot']) {
+    if (typeof glue[f] !== 'function') console.warn(`inline.mjs: warning: the wasm module exports no ${f}()`);
+  }
+} catch (e) {
+  console.error(`inline.mjs: www/pkg does not work: ${e && e.message ? e.message : e}`);
+  console.error('  (if wasm-opt ran on it, rebuild with: wasm-pack build --release --no-opt --target web --out-dir www/pkg)');
+  process.exit(3);
+}
+const css = read(join(www, 'style.css')).toString('utf8');
+const wasmBytes = read(join(www, 'pkg', 'pidlab_bg.wasm'));
+
+// The entry module: its own code runs at top level (it has no exports).
+let entry = read(join(www, 'app.js')).toString('utf8');
+entry = entry.replace(/^\s*import\s+\*\s+as\s+([A-Za-z_$][\w$]*)\s+from\s+['"](\.{1,2}\/[^'"]+)['"];?\s*$/gm, (_, local, rel) => {
+  return `const ${local} = ${inlineModule(resolve(www, rel))};`;
+});
+if (/^\s*(import|export)[\s{*'"]/m.test(entry)) fail('app.js: unsupported import/export form');
+
+const script = [
+  '// pidlab, single-file build (generated by scripts/inline.mjs; do not edit)',
+  `globalThis.PIDLAB_WASM_B64 = "${wasmBytes.toString('base64')}";`,
+  ...order.map((p) => modules.get(p).code),
+  entry,
+].join('\n');
+if (/<\/script/i.test(script) || /<!--/.test(script)) fail('a script contains "</script" or "<!--"; cannot inline safely');
+if (/<\/style/i.test(css)) fail('style.css contains "</style"');
+
+const sha = (s) => "'sha256-" + createHash('sha256').update(s, 'utf8').digest('base64') + "'";
+const csp = [
+  "default-src 'none'",
+  `script-src ${sha(script)} 'wasm-unsafe-eval'`,
+  `style-src ${sha(css)}`,
+  'img-src data: blob:',
+  "base-uri 'none'",
+  "form-action 'none'",
+].join('; ');
+
+let page = html;
+const rep = (re, val, what) => {
+  if (!re.test(page)) fail(`index.html: cannot find ${what}`);
+  page = page.replace(re, () => val);
+};
+rep(/<meta http-equiv="Content-Security-Policy" content="[^"]*">/, `<meta http-equiv="Content-Security-Policy" content="${csp}">`, 'the CSP meta');
+rep(/<link rel="stylesheet" href="style.css">/, `<style>${css}</style>`, 'the stylesheet link');
+rep(/<script type="module" src="app.js"><\/script>/, `<script type="module">${script}</script>`, 'the app.js script tag');
+
+mkdirSync(dirname(out), { recursive: true });
+writeFileSync(out, page);
+console.log(`wrote ${relative(process.cwd(), out)} (${(page.length / 1024).toFixed(0)} KiB; wasm ${(wasmBytes.length / 1024).toFixed(0)} KiB)`);

@@ -1,0 +1,270 @@
+// Page state <-> URL hash, plant families, number formatting. Pure functions only (no DOM),
+// so the browser test can check them in the page context.
+
+/** Plant families of API.md with their parameters (names fixed by the API). */
+export const FAMILIES = {
+  ipdt_ir: { title: 'Integrating, inverse response (IPDT-IR)', formula: 'P(s) = k(1 − τ_z s)e^(−θs) / (s(τs + 1))', params: ['k', 'tau', 'tau_z', 'theta'], integ: 1 },
+  fopdt_ir: { title: 'First order, inverse response (FOPDT-IR)', formula: 'P(s) = k(1 − τ_z s)e^(−θs) / (τs + 1)', params: ['k', 'tau', 'tau_z', 'theta'], integ: 0 },
+  piptd: { title: 'Pure integrator with dead time', formula: 'P(s) = k e^(−θs) / s', params: ['k', 'theta'], integ: 1 },
+  diptd: { title: 'Double integrator with dead time', formula: 'P(s) = k e^(−θs) / s²', params: ['k', 'theta'], integ: 2 },
+  ifoptd: { title: 'Integrator + first-order lag with dead time', formula: 'P(s) = k e^(−θs) / (s(τs + 1))', params: ['k', 'tau', 'theta'], integ: 1 },
+  ifoptd_zero: { title: 'Integrator + lag + zero with dead time', formula: 'P(s) = k(1 + z s)e^(−θs) / (s(τs + 1)),  z < 0: inverse response', params: ['k', 'tau', 'z', 'theta'], integ: 1 },
+  ifoptd_zero_unstable: { title: 'Integrator + unstable pole + zero with dead time', formula: 'P(s) = k(1 + z s)e^(−θs) / (s(τs − 1))', params: ['k', 'tau', 'z', 'theta'], integ: 1 },
+};
+
+/** Slider metadata of the family parameters. */
+export const FAMILY_PARAMS = {
+  k: { label: 'Gain k', min: 0.01, max: 10, def: 1 },
+  tau: { label: 'Time constant τ', unit: 'time units', min: 0.01, max: 20, def: 1 },
+  tau_z: { label: 'Inverse-response zero τ_z', unit: 'time units', min: 0, max: 10, def: 0.5 },
+  z: { label: 'Zero z (z < 0: inverse response)', unit: 'time units', min: -10, max: 10, def: -0.5 },
+  theta: { label: 'Dead time θ', unit: 'time units', min: 0, max: 10, def: 0.5 },
+};
+
+/** Unit of the gain k for a family (output per input, per time unit for each integrator). */
+export function gainUnit(family) {
+  const f = FAMILIES[family];
+  const n = f ? f.integ : 0;
+  return n === 0 ? 'out/in' : n === 1 ? 'out/(in·time)' : 'out/(in·time²)';
+}
+
+/** Perturbation sliders: relative change of the true plant, in %. */
+export const PERTURB = {
+  k: { label: 'Gain k', min: -50, max: 50 },
+  tau: { label: 'Time constant τ', min: -50, max: 50 },
+  zero: { label: 'Zero (τ_z or z)', min: -50, max: 50 },
+  theta: { label: 'Dead time θ', min: -50, max: 50 },
+};
+
+export const DEFAULT_SCENARIO = { t_end: 60, dt: 0.02, setpoint: { time: 0, size: 1 }, disturbance: { time: 30, size: 1 } };
+
+export function defaultState() {
+  return {
+    plant: { family: 'ipdt_ir', k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 },
+    method: 'praveen_kumar',
+    params: {},
+    target: null, // target Ms, or null when λ is set directly
+    literal: null, // literal controller {cr, cy} of a comparison preset (when method is null)
+    preset: '',
+    scenario: structuredClone(DEFAULT_SCENARIO),
+    pert: { k: 0, tau: 0, zero: 0, theta: 0 },
+    pins: [],
+    show: [],
+  };
+}
+
+const isNum = (x) => typeof x === 'number' && Number.isFinite(x);
+const isId = (x) => typeof x === 'string' && /^[A-Za-z0-9_./:-]{0,120}$/.test(x);
+const numArray = (a, max = 64) => Array.isArray(a) && a.length > 0 && a.length <= max && a.every(isNum);
+const isTf = (t) => t && typeof t === 'object' && numArray(t.num) && numArray(t.den);
+
+/** A plant object as the API takes it, or null when malformed. */
+export function cleanPlant(p) {
+  if (!p || typeof p !== 'object') return null;
+  if (typeof p.family === 'string') {
+    const f = FAMILIES[p.family];
+    if (!f) return null;
+    const out = { family: p.family };
+    for (const n of f.params) {
+      if (!isNum(p[n])) return null;
+      out[n] = p[n];
+    }
+    return out;
+  }
+  if (numArray(p.num) && numArray(p.den) && isNum(p.delay)) return { num: p.num.slice(), den: p.den.slice(), delay: p.delay };
+  return null;
+}
+
+function cleanScenario(s) {
+  const d = structuredClone(DEFAULT_SCENARIO);
+  if (!s || typeof s !== 'object') return d;
+  // Further numeric scenario options (e.g. settling_band) pass through unchanged.
+  for (const [k, v] of Object.entries(s).slice(0, 16)) if (/^[a-z_]{1,30}$/.test(k) && isNum(v)) d[k] = v;
+  if (isNum(s.t_end)) d.t_end = s.t_end;
+  if (isNum(s.dt)) d.dt = s.dt;
+  for (const ev of ['setpoint', 'disturbance']) {
+    if (s[ev] && typeof s[ev] === 'object') {
+      if (isNum(s[ev].time)) d[ev].time = s[ev].time;
+      if (isNum(s[ev].size)) d[ev].size = s[ev].size;
+    }
+  }
+  return d;
+}
+
+function cleanParams(p) {
+  const out = {};
+  if (!p || typeof p !== 'object') return out;
+  for (const [k, v] of Object.entries(p).slice(0, 32)) {
+    if (!/^[a-z_][a-z0-9_]{0,40}$/.test(k)) continue;
+    if (isNum(v) || (typeof v === 'string' && /^[A-Za-z0-9_.-]{0,40}$/.test(v))) out[k] = v;
+  }
+  return out;
+}
+
+/** Validates a decoded state object field by field; anything malformed falls back to the default. */
+export function cleanState(raw) {
+  const s = defaultState();
+  if (!raw || typeof raw !== 'object') return s;
+  const pl = cleanPlant(raw.plant);
+  if (pl) s.plant = pl;
+  if (raw.method === null || isId(raw.method)) s.method = raw.method;
+  s.params = cleanParams(raw.params);
+  if (isNum(raw.target) && raw.target > 1 && raw.target < 10) s.target = raw.target;
+  if (raw.literal && isTf(raw.literal.cr) && isTf(raw.literal.cy)) {
+    s.literal = { cr: { num: raw.literal.cr.num, den: raw.literal.cr.den }, cy: { num: raw.literal.cy.num, den: raw.literal.cy.den } };
+    if (typeof raw.literal.title === 'string') s.literal.title = raw.literal.title.slice(0, 200);
+  }
+  if (isId(raw.preset)) s.preset = raw.preset;
+  s.scenario = cleanScenario(raw.scenario);
+  if (raw.pert && typeof raw.pert === 'object') {
+    for (const k of Object.keys(s.pert)) if (isNum(raw.pert[k])) s.pert[k] = Math.max(-50, Math.min(50, raw.pert[k]));
+  }
+  if (Array.isArray(raw.pins)) {
+    for (const p of raw.pins.slice(0, 6)) {
+      const plant = cleanPlant(p && p.plant);
+      if (plant && p.controller && isTf(p.controller.cr) && isTf(p.controller.cy)) {
+        s.pins.push({
+          label: typeof p.label === 'string' ? p.label.slice(0, 120) : 'pinned',
+          plant,
+          controller: { cr: p.controller.cr, cy: p.controller.cy },
+          scenario: cleanScenario(p.scenario),
+        });
+      }
+    }
+  }
+  if (Array.isArray(raw.show)) s.show = raw.show.filter((x) => isId(x)).slice(0, 32);
+  return s;
+}
+
+/** Encodes the state as a URL hash (`#s=<json>`, optionally with `embed=1`). */
+export function encodeHash(state, embed = false) {
+  const s = { ...state };
+  if (!s.show || s.show.length === 0) delete s.show;
+  if (!s.pins || s.pins.length === 0) delete s.pins;
+  const q = new URLSearchParams();
+  if (embed) q.set('embed', '1');
+  q.set('s', JSON.stringify(s));
+  return '#' + q.toString();
+}
+
+/** Decodes a URL hash; returns { state, embed } (state null when absent or unreadable). */
+export function decodeHash(hash) {
+  const q = new URLSearchParams(String(hash || '').replace(/^#/, ''));
+  const embed = q.get('embed') === '1';
+  const raw = q.get('s');
+  if (!raw) return { state: null, embed };
+  try {
+    return { state: cleanState(JSON.parse(raw)), embed };
+  } catch {
+    return { state: null, embed };
+  }
+}
+
+/** Number for a readout: 4 significant digits, no exponent for ordinary magnitudes. */
+export function fmt(x, digits = 4) {
+  if (x === null || x === undefined) return '–';
+  if (typeof x !== 'number') return String(x);
+  if (!Number.isFinite(x)) return x > 0 ? '∞' : x < 0 ? '−∞' : '–';
+  if (x === 0) return '0';
+  const a = Math.abs(x);
+  let s = a >= 1e-3 && a < 1e6 ? Number(x.toPrecision(digits)).toString() : x.toExponential(digits - 1);
+  return s.replace(/-/g, '−');
+}
+
+/** A polynomial (descending powers of s) as text, e.g. "1.2 s² + 0.5 s + 3". */
+export function polyText(c) {
+  const n = c.length - 1;
+  const terms = [];
+  c.forEach((a, i) => {
+    if (a === 0) return;
+    const p = n - i;
+    const mag = Math.abs(a);
+    const coef = p > 0 && Math.abs(mag - 1) < 1e-12 ? '' : fmt(mag);
+    const sp = p === 0 ? '' : p === 1 ? 's' : 's' + String(p).replace(/\d/g, (d) => '⁰¹²³⁴⁵⁶⁷⁸⁹'[d]);
+    const body = coef && sp ? coef + ' ' + sp : coef || sp || fmt(mag);
+    terms.push({ neg: a < 0, body });
+  });
+  if (terms.length === 0) return '0';
+  return terms.map((t, i) => (i === 0 ? (t.neg ? '−' : '') + t.body : (t.neg ? ' − ' : ' + ') + t.body)).join('');
+}
+
+/** Parses a comma/space separated coefficient list; returns null when malformed. */
+export function parseCoeffs(text) {
+  const parts = String(text).trim().split(/[\s,;]+/).filter((x) => x.length > 0);
+  if (parts.length === 0 || parts.length > 32) return null;
+  const v = parts.map((x) => Number(x.replace('−', '-')));
+  return v.every((x) => Number.isFinite(x)) ? v : null;
+}
+
+/** Numerator, denominator (descending) and delay of a family plant (API.md table). */
+export function familyTf(p) {
+  const { k, tau, theta } = p;
+  switch (p.family) {
+    case 'ipdt_ir': return { num: [-k * p.tau_z, k], den: [tau, 1, 0], delay: theta };
+    case 'fopdt_ir': return { num: [-k * p.tau_z, k], den: [tau, 1], delay: theta };
+    case 'piptd': return { num: [k], den: [1, 0], delay: theta };
+    case 'diptd': return { num: [k], den: [1, 0, 0], delay: theta };
+    case 'ifoptd': return { num: [k], den: [tau, 1, 0], delay: theta };
+    case 'ifoptd_zero': return { num: [k * p.z, k], den: [tau, 1, 0], delay: theta };
+    case 'ifoptd_zero_unstable': return { num: [k * p.z, k], den: [tau, -1, 0], delay: theta };
+    default: return null;
+  }
+}
+
+/** The true plant: the model with its gain, time constant, zero and dead time scaled by (1 + %/100). */
+export function perturbPlant(p, pert) {
+  const f = (x) => 1 + (pert[x] || 0) / 100;
+  if (p.family) {
+    const q = { ...p };
+    if ('k' in q) q.k *= f('k');
+    if ('tau' in q) q.tau *= f('tau');
+    if ('tau_z' in q) q.tau_z *= f('zero');
+    if ('z' in q) q.z *= f('zero');
+    if ('theta' in q) q.theta *= f('theta');
+    return q;
+  }
+  // Custom num/den: gain scales the numerator, the time-constant factor stretches the
+  // denominator's time scale (s -> a·s) keeping its static gain, dead time scales.
+  const a = f('tau');
+  const n = p.den.length - 1;
+  let den = p.den.map((c, i) => c * Math.pow(a, n - i));
+  return { num: p.num.map((c) => c * f('k')), den, delay: p.delay * f('theta') };
+}
+
+export function isPerturbed(pert) {
+  return Object.values(pert).some((v) => v !== 0);
+}
+
+function polyAt(c, wr, wi) {
+  // Horner in complex arithmetic at s = wr + j wi.
+  let re = 0, im = 0;
+  for (const a of c) {
+    const r2 = re * wr - im * wi + a;
+    im = re * wi + im * wr;
+    re = r2;
+  }
+  return [re, im];
+}
+
+/** Frequency samples of L(jω) = Cy(jω)·P(jω)·e^{−jωθ} (used when analyze() gives no curve). */
+export function nyquistCurve(plantTf, cy, n = 800) {
+  const re = [], im = [];
+  // The frequency grid spans the loop's time scales: 1e-4 … 1e4 rad per time unit, log spaced.
+  for (let i = 0; i < n; i++) {
+    const w = Math.pow(10, -4 + (8 * i) / (n - 1));
+    const [a, b] = polyAt(plantTf.num, 0, w);
+    const [c, d] = polyAt(plantTf.den, 0, w);
+    const [e, f] = polyAt(cy.num, 0, w);
+    const [g, h] = polyAt(cy.den, 0, w);
+    const nr = a * e - b * f, ni = a * f + b * e;
+    const dr = c * g - d * h, di = c * h + d * g;
+    const m = dr * dr + di * di;
+    if (!(m > 0)) continue;
+    let lr = (nr * dr + ni * di) / m, li = (ni * dr - nr * di) / m;
+    const ph = -w * plantTf.delay;
+    const cr = Math.cos(ph), ci = Math.sin(ph);
+    const xr = lr * cr - li * ci, xi = lr * ci + li * cr;
+    if (Number.isFinite(xr) && Number.isFinite(xi)) { re.push(xr); im.push(xi); }
+  }
+  return { re, im };
+}
