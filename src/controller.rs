@@ -264,7 +264,7 @@ pub fn lag(tau: f64) -> Tf {
 mod tests {
     use super::*;
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn ipd_mapping() {
         let c = Pid::ipd(2.0, 0.5, 1.5).to_controller().unwrap();
         // Cr = 0.5/s written over s; Cy = (1.5 s^2 + 2 s + 0.5)/s
@@ -273,7 +273,7 @@ mod tests {
         assert_eq!(c.cy.relative_degree(), -1);
     }
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn filtered_and_weighted() {
         let c = Pid::parallel(2.0, 1.0, 0.5)
             .weights(0.3, 0.0)

@@ -305,7 +305,7 @@ impl Plant {
 mod tests {
     use super::*;
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn boiler_family() {
         let f = Family::from_params("ipdt_ir", |n| match n {
             "k" => Some(0.547),

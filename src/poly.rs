@@ -264,7 +264,7 @@ impl Poly {
 mod tests {
     use super::*;
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn desc_asc_roundtrip_and_trim() {
         let p = Poly::from_desc(&[0.0, 2.0, 3.0, 4.0]);
         assert_eq!(p.asc(), &[4.0, 3.0, 2.0]);
@@ -272,7 +272,7 @@ mod tests {
         assert_eq!(p.degree(), 2);
     }
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn division_and_roots() {
         // (s+1)(s+2)(s-3) = s^3 - 7 s - 6
         let p = Poly::from_desc(&[1.0, 0.0, -7.0, -6.0]);

@@ -696,7 +696,7 @@ pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResul
 mod tests {
     use super::*;
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn lagrange_is_exact_on_quintics() {
         let f = |s: f64| 1.0 - 2.0 * s + 3.0 * s.powi(3) - s.powi(5);
         let vals: Vec<f64> = (0..NODES).map(|j| f(j as f64 / DEG as f64)).collect();

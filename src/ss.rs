@@ -239,7 +239,7 @@ mod tests {
         y
     }
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn ipd_shares_its_integrator() {
         let c = Pid::ipd(2.0, 0.5, 1.5).to_controller().unwrap();
         let r = c.realize().unwrap();
@@ -253,7 +253,7 @@ mod tests {
         assert!((cy - c.cy.eval_c(s)).norm() < 1e-13);
     }
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn setpoint_filter_realization() {
         let f = Tf::parse_desc(&[0.3, 1.0], &[1.0, 1.9, 1.0]).unwrap();
         let c = Pid::ideal(4.0, 1.9, 0.5)

@@ -158,7 +158,7 @@ impl Tf {
 mod tests {
     use super::*;
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn split_and_feedback() {
         // (2s^2 + 3s + 1)/s = 2s + 3 + 1/s
         let t = Tf::parse_desc(&[2.0, 3.0, 1.0], &[1.0, 0.0]).unwrap();

@@ -7,16 +7,50 @@ use crate::error::Error;
 use serde::Serialize;
 use serde_json::Value;
 use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
 
 fn to_js(v: &Value) -> Result<JsValue, JsError> {
     v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
         .map_err(|e| JsError::new(&format!("output: {e}")))
 }
 
+/// Deepest nesting accepted at the boundary (a cyclic object hits it too).
+const MAX_DEPTH: usize = 32;
+/// Most values accepted in one input.
+const MAX_VALUES: usize = 100_000;
+
+/// Refuses cyclic, very deep or huge inputs before `serde_wasm_bindgen` recurses into them
+/// (its recursion would overflow the wasm stack and leave the instance unusable).
+fn check_shape(v: &JsValue, depth: usize, budget: &mut usize) -> Result<(), JsError> {
+    if depth > MAX_DEPTH {
+        return Err(JsError::new(&format!(
+            "input: nested more than {MAX_DEPTH} levels deep (or cyclic)"
+        )));
+    }
+    if *budget == 0 {
+        return Err(JsError::new(&format!(
+            "input: more than {MAX_VALUES} values"
+        )));
+    }
+    *budget -= 1;
+    if js_sys::Array::is_array(v) {
+        for x in v.unchecked_ref::<js_sys::Array>().iter() {
+            check_shape(&x, depth + 1, budget)?;
+        }
+    } else if v.is_object() && !v.is_function() {
+        for x in js_sys::Object::values(v.unchecked_ref::<js_sys::Object>()).iter() {
+            check_shape(&x, depth + 1, budget)?;
+        }
+    }
+    Ok(())
+}
+
 fn from_js(v: JsValue) -> Result<Value, JsError> {
     if v.is_undefined() || v.is_null() {
         return Err(JsError::new("input: must be an object"));
     }
+    let mut budget = MAX_VALUES;
+    check_shape(&v, 0, &mut budget)?;
     serde_wasm_bindgen::from_value::<Value>(v)
         .map_err(|e| JsError::new(&format!("input: cannot be read as plain data ({e})")))
 }

@@ -367,7 +367,8 @@ fn presets_complete() {
     assert_eq!(m.len(), 1);
     assert_eq!(
         (m[0].id.as_str(), m[0].families.as_slice()),
-        ("kaya", &["fopdt_ir".to_string()][..])
+        // "custom": higher-order plants are reduced to FOPDT-IR first (Examples 2 and 3)
+        ("kaya", &["fopdt_ir".to_string(), "custom".to_string()][..])
     );
     assert_eq!(m[0].params[0].name, "criterion");
 }

@@ -1134,7 +1134,7 @@ pub fn presets() -> Vec<Preset> {
 mod tests {
     use super::*;
 
-    #[test]
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
     fn example1_iste() {
         let s = settings(0.5848, 0.6302, 0.3546, 0.3567, Criterion::Iste).unwrap();
         assert!((s.kc - 0.704).abs() < 5e-4);
