@@ -197,6 +197,18 @@ pub fn controller_json(c: &Controller) -> Value {
     json!({ "cr": tf_json(&c.cr), "cy": tf_json(&c.cy) })
 }
 
+/// `{family, …params}`: a family plant as an API.md plant object.
+pub fn family_json(f: &Family) -> Value {
+    let mut m = Map::new();
+    m.insert("family".into(), json!(f.id()));
+    if let Some(names) = Family::param_names(f.id()) {
+        for (n, x) in names.iter().zip(f.values()) {
+            m.insert((*n).into(), json!(x));
+        }
+    }
+    Value::Object(m)
+}
+
 /// `{num, den, delay}` (plus `family` and its parameters when the plant has one).
 pub fn plant_json(p: &Plant) -> Value {
     let mut m = Map::new();

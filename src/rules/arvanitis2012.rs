@@ -43,6 +43,7 @@
 //!   built on the normalized process, reproduce it within their printed errors.
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use crate::api::controller_json;
 use crate::controller::{lead_lag, Pid};
 use crate::error::{Error, Result};
 use crate::plant::{Family, Plant};
@@ -2474,12 +2475,6 @@ pub const PRINTED: [(&str, &str, f64, f64, f64); 6] = [
         2.2009,
     ),
 ];
-
-fn controller_json(c: &crate::controller::Controller) -> Value {
-    let (rn, rd) = c.cr.to_desc();
-    let (yn, yd) = c.cy.to_desc();
-    json!({"cr": {"num": rn, "den": rd}, "cy": {"num": yn, "den": yd}})
-}
 
 /// Presets of this paper: every Section 6 setting (rule calls), the printed settings as literal
 /// controllers, and the comparison controllers.

@@ -31,6 +31,7 @@
 //! Examples 2 and 3.
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use crate::api::{controller_json, family_json, plant_json};
 use crate::controller::Pid;
 use crate::error::{Error, Result};
 use crate::plant::{Family, Plant};
@@ -995,31 +996,6 @@ fn scenario_json(example: usize) -> Value {
         "dt": if example == 1 { 0.005 } else { 0.02 },
         "setpoint": {"time": 0.0, "size": sp},
         "disturbance": {"time": dt_, "size": dsize},
-    })
-}
-
-fn family_json(f: &Family) -> Value {
-    match *f {
-        Family::FopdtIr {
-            k,
-            tau,
-            tau_z,
-            theta,
-        } => {
-            json!({"family": "fopdt_ir", "k": k, "tau": tau, "tau_z": tau_z, "theta": theta})
-        }
-        _ => Value::Null,
-    }
-}
-
-fn plant_json(p: &Plant) -> Value {
-    json!({"num": p.tf.num.to_desc(), "den": p.tf.den.to_desc(), "delay": p.delay})
-}
-
-fn controller_json(c: &crate::controller::Controller) -> Value {
-    json!({
-        "cr": {"num": c.cr.num.to_desc(), "den": c.cr.den.to_desc()},
-        "cy": {"num": c.cy.num.to_desc(), "den": c.cy.den.to_desc()},
     })
 }
 

@@ -66,6 +66,7 @@
 //!   paper does not state, so its use always adds a warning.
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use crate::api::{controller_json, family_json, plant_json};
 use crate::controller::{Controller, Pid};
 use crate::error::{Error, Result};
 use crate::plant::{Family, Plant};
@@ -1132,26 +1133,6 @@ pub fn comparisons() -> Vec<Comparison> {
             ms_printed: 3.52,
         },
     ]
-}
-
-fn family_json(f: &Family) -> Value {
-    let mut m = Map::new();
-    m.insert("family".into(), json!(f.id()));
-    if let Some(names) = Family::param_names(f.id()) {
-        for (n, v) in names.iter().zip(f.values()) {
-            m.insert((*n).into(), json!(v));
-        }
-    }
-    Value::Object(m)
-}
-
-fn plant_json(p: &Plant) -> Value {
-    json!({"num": p.tf.num.to_desc(), "den": p.tf.den.to_desc(), "delay": p.delay})
-}
-
-fn controller_json(c: &Controller) -> Value {
-    json!({"cr": {"num": c.cr.num.to_desc(), "den": c.cr.den.to_desc()},
-           "cy": {"num": c.cy.num.to_desc(), "den": c.cy.den.to_desc()}})
 }
 
 fn scenario_json(e: &Example) -> Value {

@@ -38,6 +38,7 @@
 //! With this loop the nominal set-point response is exactly Eq. (10) for the IMC controller.
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use crate::api::{controller_json, family_json, plant_json, tf_json};
 use crate::controller::{lag, Controller, Pid};
 use crate::error::{Error, Result};
 use crate::plant::{Family, Plant};
@@ -650,15 +651,6 @@ pub fn design(family: &Family, lambda: f64, zeta: f64, gamma: f64, phi: f64) -> 
 /// responses).
 fn design_theta(family: &Family, phi: f64) -> Option<f64> {
     design_model(family, phi).ok().map(|d| d.model.theta)
-}
-
-fn tf_json(t: &Tf) -> Value {
-    let (n, d) = t.to_desc();
-    json!({ "num": n, "den": d })
-}
-
-fn controller_json(c: &Controller) -> Value {
-    json!({ "cr": tf_json(&c.cr), "cy": tf_json(&c.cy) })
 }
 
 /// Methods of this paper.
@@ -1313,22 +1305,6 @@ pub fn studies() -> Vec<Study> {
             ],
         },
     ]
-}
-
-fn family_json(f: &Family) -> Value {
-    let mut m = Map::new();
-    m.insert("family".into(), json!(f.id()));
-    if let Some(names) = Family::param_names(f.id()) {
-        for (n, v) in names.iter().zip(f.values()) {
-            m.insert((*n).into(), json!(v));
-        }
-    }
-    Value::Object(m)
-}
-
-fn plant_json(p: &Plant) -> Value {
-    let (n, d) = p.tf.to_desc();
-    json!({ "num": n, "den": d, "delay": p.delay })
 }
 
 fn scenario_json(s: &Scenario) -> Value {
