@@ -810,7 +810,7 @@ pub fn tune_family(family: &Family, params: &Params) -> Result<Tuning> {
         );
     }
     let plant = family.plant();
-    add_analysis(&plant, &controller, &mut details);
+    super::add_analysis(&plant, &controller, &mut details);
     details.insert("warnings".into(), json!(warnings));
     Ok(Tuning {
         method: ID.into(),
@@ -868,23 +868,6 @@ pub fn ms_curve(family: &Family, lambdas: &[f64]) -> Vec<Option<f64>> {
                 .and_then(|d| true_ms(&d).ok().flatten())
         })
         .collect()
-}
-
-fn add_analysis(plant: &Plant, c: &Controller, details: &mut Map<String, Value>) {
-    match crate::freq::analyze(plant, c) {
-        Ok(a) => {
-            details.insert("stable".into(), json!(a.stable));
-            details.insert("verdict".into(), json!(a.verdict));
-            details.insert("ms".into(), json!(a.ms));
-            details.insert("w_ms".into(), json!(a.w_ms));
-            details.insert("gm".into(), json!(a.gm));
-            details.insert("pm".into(), json!(a.pm));
-            details.insert("delay_margin".into(), json!(a.delay_margin));
-        }
-        Err(e) => {
-            details.insert("analysis_error".into(), json!(e.to_string()));
-        }
-    }
 }
 
 // ---------------------------------------------------------------------------------------

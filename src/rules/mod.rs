@@ -207,6 +207,35 @@ impl Params {
     }
 }
 
+/// Adds the exact-delay frequency analysis of a design to `details` (stable, verdict, ms, w_ms,
+/// ms_at_infinity, l_inf_analysis, gm, pm, w_gc, delay_margin) and returns it; an analysis error
+/// is recorded as `analysis_error`.
+pub fn add_analysis(
+    plant: &Plant,
+    c: &Controller,
+    details: &mut Map<String, Value>,
+) -> Option<crate::freq::Analysis> {
+    match crate::freq::analyze(plant, c) {
+        Ok(a) => {
+            details.insert("stable".into(), Value::from(a.stable));
+            details.insert("verdict".into(), Value::from(a.verdict.clone()));
+            details.insert("ms".into(), serde_json::json!(a.ms));
+            details.insert("w_ms".into(), serde_json::json!(a.w_ms));
+            details.insert("ms_at_infinity".into(), Value::from(a.ms_at_infinity));
+            details.insert("l_inf_analysis".into(), serde_json::json!(a.l_inf));
+            details.insert("gm".into(), serde_json::json!(a.gm));
+            details.insert("pm".into(), serde_json::json!(a.pm));
+            details.insert("w_gc".into(), serde_json::json!(a.w_gc));
+            details.insert("delay_margin".into(), serde_json::json!(a.delay_margin));
+            Some(a)
+        }
+        Err(e) => {
+            details.insert("analysis_error".into(), Value::from(e.to_string()));
+            None
+        }
+    }
+}
+
 /// Every implemented method.
 pub fn methods() -> Vec<MethodInfo> {
     let mut v = arvanitis2012::methods();

@@ -634,18 +634,8 @@ fn add_frequency_details(
     details: &mut Map<String, Value>,
     warnings: &mut Vec<String>,
 ) {
-    match crate::freq::analyze(plant, c) {
-        Ok(a) => {
-            details.insert("stable".into(), json!(a.stable));
-            details.insert("verdict".into(), json!(a.verdict));
-            details.insert("ms".into(), json!(a.ms));
-            details.insert("w_ms".into(), json!(a.w_ms));
-            details.insert("ms_at_infinity".into(), json!(a.ms_at_infinity));
-            details.insert("l_inf_analysis".into(), json!(a.l_inf));
-            details.insert("gm".into(), json!(a.gm));
-            details.insert("pm".into(), json!(a.pm));
-            details.insert("w_gc".into(), json!(a.w_gc));
-            details.insert("delay_margin".into(), json!(a.delay_margin));
+    match super::add_analysis(plant, c, details) {
+        Some(a) => {
             if !a.stable {
                 warnings.push(format!(
                     "the loop with the exact dead time is not stable ({}): the Padé design of \
@@ -666,7 +656,13 @@ fn add_frequency_details(
                 }
             }
         }
-        Err(e) => warnings.push(format!("frequency analysis failed: {e}")),
+        None => warnings.push(format!(
+            "frequency analysis failed: {}",
+            details
+                .get("analysis_error")
+                .and_then(|v| v.as_str())
+                .unwrap_or("")
+        )),
     }
 }
 
