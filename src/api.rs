@@ -3,7 +3,7 @@
 //! `crate::wasm` converts JavaScript values to and from these; native tests and fuzzing drive
 //! the very same functions.
 
-use crate::controller::Controller;
+use crate::controller::{Controller, ModelLoop};
 use crate::error::{Error, Result};
 use crate::freq::{analyze as analyze_loop, Analysis};
 use crate::metrics::Metrics;
@@ -134,10 +134,28 @@ pub fn parse_plant(v: &Value, path: &str) -> Result<Plant> {
 }
 
 /// Parses an API.md controller `{cr: {num, den}, cy: {num, den}}`.
+///
+/// An optional `model_loop: { plant, cr, cy }` adds a model-based set-point path (see
+/// [`crate::controller::ModelLoop`]): `u = Cr·r − Cy·y + u₁ + Cy·y_m`, `u₁ = cr·r − cy·y_m`,
+/// `y_m` = the model plant (dead time included) driven by `u₁`.
 pub fn parse_controller(v: &Value, path: &str) -> Result<Controller> {
     let cr = tf(field(v, "cr", path)?, &join(path, "cr"))?;
     let cy = tf(field(v, "cy", path)?, &join(path, "cy"))?;
-    Controller::new(cr, cy).map_err(|e| e.within(path))
+    let c = Controller::new(cr, cy).map_err(|e| e.within(path))?;
+    match opt_field(v, "model_loop") {
+        None | Some(Value::Null) => Ok(c),
+        Some(ml) => {
+            let mp = join(path, "model_loop");
+            if !ml.is_object() {
+                return Err(Error::new(mp, "must be an object {plant, cr, cy} or null"));
+            }
+            let model = parse_plant(field(ml, "plant", &mp)?, &join(&mp, "plant"))?;
+            let mcr = tf(field(ml, "cr", &mp)?, &join(&mp, "cr"))?;
+            let mcy = tf(field(ml, "cy", &mp)?, &join(&mp, "cy"))?;
+            let m = ModelLoop::new(model, mcr, mcy).map_err(|e| e.within(path))?;
+            Ok(c.with_model_loop(m))
+        }
+    }
 }
 
 fn step(v: Option<&Value>, path: &str) -> Result<Step> {
@@ -194,7 +212,15 @@ pub fn tf_json(t: &Tf) -> Value {
 
 /// `{cr, cy}`.
 pub fn controller_json(c: &Controller) -> Value {
-    json!({ "cr": tf_json(&c.cr), "cy": tf_json(&c.cy) })
+    let mut v = json!({ "cr": tf_json(&c.cr), "cy": tf_json(&c.cy) });
+    if let Some(ml) = &c.model_loop {
+        v["model_loop"] = json!({
+            "plant": plant_json(&ml.model),
+            "cr": tf_json(&ml.cr),
+            "cy": tf_json(&ml.cy),
+        });
+    }
+    v
 }
 
 /// `{family, …params}`: a family plant as an API.md plant object.
@@ -278,6 +304,8 @@ pub fn analysis_json(a: &Analysis) -> Value {
         "pm": num_or_null(a.pm), "w_gc": num_or_null(a.w_gc),
         "delay_margin": num_or_null(a.delay_margin),
         "nyquist": { "w": w, "re": re, "im": im },
+        "model_loop_stable": a.model_loop_stable,
+        "model_loop_ms": num_or_null(a.model_loop_ms),
     })
 }
 

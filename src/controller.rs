@@ -15,8 +15,23 @@
 //! An optional derivative filter replaces `K_d s` by `K_d s/(T_f s + 1)` with
 //! `T_f = T_d/N`, `T_d = K_d/K_p`. Without it the derivative stays ideal (Cy improper by one),
 //! which the simulator handles exactly on strictly proper plants.
+//!
+//! ## Model-based set-point paths ([`ModelLoop`])
+//! Structures that run an internal process model *with its dead time* in the set-point path
+//! (the parallel control structure of Ajmeri & Ali 2015) are not rational in `r`, so the pair
+//! carries an optional [`ModelLoop`]: a set-point loop `u₁ = C_r1·r − C_y1·y_m` closed around
+//! the model `y_m = M(s)e^{−θ_m s}·u₁`, whose output is added to `u` and whose model output is
+//! compared with the measurement through `Cy`:
+//!
+//! `u = Cr·r − Cy·y + u₁ + Cy·y_m`  (so the disturbance controller acts on `y_m − y`).
+//!
+//! The model is driven by `u₁` only, so from the plant's side this is still a feedforward
+//! from `r`: the feedback loop is `Cy·P·e^{−θs}` (what `freq::analyze` measures) and, with a
+//! perfect model, the servo response is the model loop's own, whatever `Cy` is. The
+//! simulator integrates both dead times exactly.
 
 use crate::error::{finite, positive, Error, Result};
+use crate::plant::Plant;
 use crate::poly::Poly;
 use crate::tf::Tf;
 
@@ -27,6 +42,42 @@ pub struct Controller {
     pub cr: Tf,
     /// Feedback path (may be improper by one: ideal derivative).
     pub cy: Tf,
+    /// Optional model-based set-point loop (see the module docs); `None` for the rational
+    /// pair every PID structure converts into.
+    pub model_loop: Option<Box<ModelLoop>>,
+}
+
+/// A set-point loop closed around an internal model with its dead time:
+/// `u₁ = cr·r − cy·y_m`, `y_m = model·u₁` (model dead time exact). See the module docs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelLoop {
+    /// The internal process model `M(s)e^{−θ_m s}`.
+    pub model: Plant,
+    /// Set-point path of the model loop.
+    pub cr: Tf,
+    /// Feedback path of the model loop (on `y_m`; may be improper by one).
+    pub cy: Tf,
+}
+
+impl ModelLoop {
+    /// A validated model loop; errors name `model_loop.cr.num`, ….
+    pub fn new(model: Plant, cr: Tf, cy: Tf) -> Result<ModelLoop> {
+        let c = Controller::new(cr, cy).map_err(|e| e.within("model_loop"))?;
+        Ok(ModelLoop {
+            model,
+            cr: c.cr,
+            cy: c.cy,
+        })
+    }
+
+    /// The model loop's own controller `(cr, cy)`.
+    pub fn controller(&self) -> Controller {
+        Controller {
+            cr: self.cr.clone(),
+            cy: self.cy.clone(),
+            model_loop: None,
+        }
+    }
 }
 
 impl Controller {
@@ -57,7 +108,17 @@ impl Controller {
                 ));
             }
         }
-        Ok(Controller { cr, cy })
+        Ok(Controller {
+            cr,
+            cy,
+            model_loop: None,
+        })
+    }
+
+    /// Adds a model-based set-point loop (see [`ModelLoop`]).
+    pub fn with_model_loop(mut self, m: ModelLoop) -> Controller {
+        self.model_loop = Some(Box::new(m));
+        self
     }
 
     /// From descending coefficient arrays (JS convention).
@@ -82,6 +143,7 @@ impl Controller {
         Controller {
             cr: self.cr.mul(f),
             cy: self.cy.clone(),
+            model_loop: self.model_loop.clone(),
         }
     }
 
@@ -90,6 +152,7 @@ impl Controller {
         Controller {
             cr: self.cr.mul(f),
             cy: self.cy.mul(f),
+            model_loop: self.model_loop.clone(),
         }
     }
 }

@@ -59,6 +59,11 @@ pub struct Analysis {
     pub delay_margin: Option<f64>,
     /// Nyquist samples `[ω, Re L, Im L]` for plotting (at most ~1500, ω ascending).
     pub nyquist: Vec<[f64; 3]>,
+    /// With a model-based set-point path ([`crate::controller::ModelLoop`]): whether that
+    /// model loop is stable (an unstable one makes `stable` false); `None` without one.
+    pub model_loop_stable: Option<bool>,
+    /// Ms of the model loop (its own sensitivity), `None` without one.
+    pub model_loop_ms: Option<f64>,
 }
 
 /// The loop transfer function, unreduced: numerator and denominator products.
@@ -276,8 +281,29 @@ pub fn max_sensitivity(plant: &Plant, c: &Controller) -> Result<(f64, Option<f64
     }
 }
 
-/// Full frequency analysis (see the module docs).
+/// Full frequency analysis (see the module docs). The loop is `L = Cy·P·e^{−θs}`; a
+/// model-based set-point path ([`crate::controller::ModelLoop`]) is a feedforward from `r`
+/// that does not enter `L`, but its own loop must be stable too, so it is analyzed as well
+/// (`model_loop_stable`, `model_loop_ms`) and an unstable one makes the verdict unstable.
 pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
+    let mut out = analyze_feedback(plant, c)?;
+    if let Some(ml) = &c.model_loop {
+        let inner = analyze_feedback(&ml.model, &ml.controller())
+            .map_err(|e| e.within("controller.model_loop"))?;
+        out.model_loop_stable = Some(inner.stable);
+        out.model_loop_ms = inner.ms;
+        if !inner.stable && out.stable {
+            out.stable = false;
+            out.verdict = format!(
+                "unstable: the feedback loop is stable but the set-point model loop is {}",
+                inner.verdict
+            );
+        }
+    }
+    Ok(out)
+}
+
+fn analyze_feedback(plant: &Plant, c: &Controller) -> Result<Analysis> {
     let l = LoopTf::new(plant, c);
     let mut out = Analysis {
         stable: false,
@@ -296,6 +322,8 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
         w_gc: None,
         delay_margin: None,
         nyquist: vec![],
+        model_loop_stable: None,
+        model_loop_ms: None,
     };
     if l.lr.num.is_zero() {
         // no feedback at all: the closed loop is the open-loop plant

@@ -40,6 +40,7 @@ pub mod plot;
 pub mod poly;
 pub mod rules;
 pub mod sim;
+mod sim_multi;
 pub mod ss;
 pub mod tf;
 

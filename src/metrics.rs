@@ -101,6 +101,9 @@ const GL_W: [f64; 8] = [
     0.101_228_536_290_376_26,
 ];
 
+/// The loop's steady state `(y∞, u∞)` for constant `(r, d)`, `None` when it has none.
+pub(crate) type SteadyFn<'a> = &'a dyn Fn(f64, f64) -> Option<(f64, f64)>;
+
 /// Steady state (y∞, u∞) of the loop for constant r, d; `None` when the loop has none.
 pub(crate) fn steady_state(m: &LoopModel, r: f64, d: f64) -> Option<(f64, f64)> {
     let n = m.a.nrows();
@@ -146,7 +149,7 @@ struct Acc {
 
 #[allow(clippy::too_many_arguments)]
 fn window(
-    m: &LoopModel,
+    steady: SteadyFn,
     traj: &Trajectory,
     res: &SimResult,
     sc: &Scenario,
@@ -159,7 +162,7 @@ fn window(
 ) -> Metrics {
     let r_w = traj.step_at(&traj.setpoint, a);
     let d_w = traj.step_at(&traj.disturbance, a);
-    let ss = steady_state(m, r_w, d_w);
+    let ss = steady(r_w, d_w);
     let (k0, _) = traj.locate(a);
     let mut acc = Acc {
         iae: 0.0,
@@ -379,7 +382,7 @@ fn window(
 
 /// Metrics of the servo and regulatory windows of a simulation.
 pub(crate) fn windows(
-    m: &LoopModel,
+    steady: SteadyFn,
     traj: &Trajectory,
     res: &SimResult,
     sc: &Scenario,
@@ -397,9 +400,15 @@ pub(crate) fn windows(
     } else {
         sc.t_end
     };
-    let servo = (s_on && servo_end > sp.time && servo_end <= stop)
-        .then(|| window(m, traj, res, sc, sp.time, servo_end, sp.size, true, ik, it));
-    let regulatory = (d_on && sc.t_end <= stop)
-        .then(|| window(m, traj, res, sc, ld.time, sc.t_end, ld.size, false, ik, it));
+    let servo = (s_on && servo_end > sp.time && servo_end <= stop).then(|| {
+        window(
+            steady, traj, res, sc, sp.time, servo_end, sp.size, true, ik, it,
+        )
+    });
+    let regulatory = (d_on && sc.t_end <= stop).then(|| {
+        window(
+            steady, traj, res, sc, ld.time, sc.t_end, ld.size, false, ik, it,
+        )
+    });
     Windows { servo, regulatory }
 }

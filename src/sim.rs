@@ -167,6 +167,12 @@ pub(crate) struct LoopModel {
 impl LoopModel {
     /// Builds the loop; the errors explain ill-posed and impulsive loops.
     pub(crate) fn new(plant: &Plant, c: &Controller, setpoint_step: bool) -> Result<LoopModel> {
+        if c.model_loop.is_some() {
+            return Err(Error::new(
+                "controller.model_loop",
+                "a model-based structure is simulated by sim::simulate, not this one-delay loop",
+            ));
+        }
         let cs = c.realize().map_err(|e| e.within("controller"))?;
         let ps = realize(&plant.tf).map_err(|e| e.within("plant"))?;
         let dp = ps.d[(0, 0)];
@@ -368,8 +374,11 @@ pub struct Trajectory {
     pub h: f64,
     /// Piece offsets within a step (first is 0) and lengths.
     pub offsets: Vec<f64>,
-    /// Lengths matching `offsets`.
+    /// Lengths matching `offsets` (or, with `starts`, one per piece).
     pub lens: Vec<f64>,
+    /// Explicit piece start times (a non-periodic piece list, the several-delay integrator);
+    /// `None`: pieces repeat `offsets` every `h`.
+    pub starts: Option<Vec<f64>>,
     /// Number of pieces computed.
     pub n_pieces: usize,
     /// Node values of the plant input `v = u + d`, `NODES` per piece.
@@ -387,6 +396,9 @@ pub struct Trajectory {
 impl Trajectory {
     /// Start time and length of piece `k`.
     pub fn piece(&self, k: usize) -> (f64, f64) {
+        if let Some(st) = &self.starts {
+            return (st[k], self.lens[k]);
+        }
         let p = self.offsets.len();
         (
             (k / p) as f64 * self.h + self.offsets[k % p],
@@ -405,6 +417,13 @@ impl Trajectory {
 
     /// Piece containing `t` (right-continuous) and the local coordinate σ ∈ [0, 1].
     pub fn locate(&self, t: f64) -> (usize, f64) {
+        if let Some(st) = &self.starts {
+            let k = st[..self.n_pieces.max(1).min(st.len())]
+                .partition_point(|s| *s <= t + self.tol)
+                .saturating_sub(1);
+            let (t0, len) = self.piece(k);
+            return (k, ((t - t0) / len).clamp(0.0, 1.0));
+        }
         let p = self.offsets.len();
         let ns = ((t + self.tol) / self.h).floor().max(0.0) as usize;
         let o = t - ns as f64 * self.h;
@@ -572,6 +591,7 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
         h,
         offsets: offs,
         lens,
+        starts: None,
         n_pieces: 0,
         v: Vec::with_capacity(total * NODES),
         y: Vec::with_capacity(total * NODES),
@@ -656,12 +676,27 @@ fn isens_weights(plant: &Plant, sc: &Scenario) -> (Option<f64>, Option<f64>) {
 /// Divergence is not an error: `diverged`/`diverged_at` are set and the samples stop there.
 pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResult> {
     sc.validate().map_err(|e| e.within("scenario"))?;
+    if c.model_loop.is_some() {
+        return crate::sim_multi::simulate(plant, c, sc);
+    }
     let m = LoopModel::new(
         plant,
         c,
         sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
     )?;
     let (traj, diverged_at) = integrate(&m, sc)?;
+    let steady = |r: f64, d: f64| metrics::steady_state(&m, r, d);
+    Ok(sample(plant, sc, &traj, diverged_at, &steady))
+}
+
+/// Output samples and metrics of a computed response (shared by both integrators).
+pub(crate) fn sample(
+    plant: &Plant,
+    sc: &Scenario,
+    traj: &Trajectory,
+    diverged_at: Option<f64>,
+    steady: metrics::SteadyFn,
+) -> SimResult {
     let kmax = (sc.t_end / sc.dt).round() as usize;
     let t_stop = diverged_at.unwrap_or(f64::INFINITY);
     let mut res = SimResult {
@@ -688,8 +723,8 @@ pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResul
         res.u.push(traj.u_at(t));
     }
     let (ik, it) = isens_weights(plant, sc);
-    res.metrics = metrics::windows(&m, &traj, &res, sc, diverged_at, ik, it);
-    Ok(res)
+    res.metrics = metrics::windows(steady, traj, &res, sc, diverged_at, ik, it);
+    res
 }
 
 #[cfg(test)]

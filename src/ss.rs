@@ -143,27 +143,40 @@ fn over(n: &Poly, d: &Poly, cd: &Poly) -> Result<Poly> {
 impl Controller {
     /// Joint realization of (Cr, −Cy) over a common denominator, ideal derivatives split off.
     pub fn realize(&self) -> Result<ControllerSs> {
-        let cd = common_denominator(&self.cr.den, &self.cy.den);
-        let nr = over(&self.cr.num, &self.cr.den, &cd).map_err(|e| e.within("cr"))?;
-        let ny = over(&self.cy.num, &self.cy.den, &cd).map_err(|e| e.within("cy"))?;
-        let split = |num: &Poly, path: &str| -> Result<(f64, Poly)> {
-            let (q, r) = num.div_rem(&cd)?;
-            if q.degree() > 1 {
-                return Err(Error::new(
-                    format!("{path}.num"),
-                    "improper by more than one: cannot be realized",
-                ));
-            }
-            // num = (q1 s + q0)·cd + r  →  proper part (q0·cd + r)/cd, derivative q1·s
-            let q1 = q.coef(1);
-            let q0 = q.coef(0);
-            Ok((q1, cd.scale(q0).add(&r)))
-        };
-        let (k_dr, pr) = split(&nr, "cr")?;
-        let (k_dy, py) = split(&ny, "cy")?;
-        let ss = realize_common(&[pr, py.scale(-1.0)], &cd)?;
-        Ok(ControllerSs { ss, k_dy, k_dr })
+        let (ss, kd) = realize_paths(&[(&self.cr, "cr", 1.0), (&self.cy, "cy", -1.0)])?;
+        Ok(ControllerSs {
+            ss,
+            k_dr: kd[0],
+            k_dy: -kd[1],
+        })
     }
+}
+
+/// Joint realization of several paths `sign_i·T_i` sharing one state (common denominator):
+/// output `Σ_i sign_i·T_i·in_i = C x + D·in + Σ_i k_i·d(in_i)/dt`, where `k_i` is the
+/// ideal-derivative coefficient split off path `i` (a path may be improper by one). Errors
+/// name `<path>.num`.
+pub fn realize_paths(paths: &[(&Tf, &str, f64)]) -> Result<(Ss, Vec<f64>)> {
+    let mut cd = paths[0].0.den.clone();
+    for (t, _, _) in &paths[1..] {
+        cd = common_denominator(&cd, &t.den);
+    }
+    let mut props = Vec::with_capacity(paths.len());
+    let mut kds = Vec::with_capacity(paths.len());
+    for (t, path, sign) in paths {
+        let num = over(&t.num, &t.den, &cd).map_err(|e| e.within(path))?;
+        let (q, r) = num.div_rem(&cd)?;
+        if q.degree() > 1 {
+            return Err(Error::new(
+                format!("{path}.num"),
+                "improper by more than one: cannot be realized",
+            ));
+        }
+        // num = (q1 s + q0)·cd + r  →  proper part (q0·cd + r)/cd, derivative q1·s
+        kds.push(sign * q.coef(1));
+        props.push(cd.scale(q.coef(0)).add(&r).scale(*sign));
+    }
+    Ok((realize_common(&props, &cd)?, kds))
 }
 
 /// Diagonal similarity that balances a matrix (Parlett–Reinsch, powers of 2), returned as

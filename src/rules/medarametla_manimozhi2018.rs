@@ -67,7 +67,7 @@
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
 use crate::api::{controller_json, family_json, plant_json};
-use crate::controller::{Controller, Pid};
+use crate::controller::{Controller, ModelLoop, Pid};
 use crate::error::{Error, Result};
 use crate::plant::{Family, Plant};
 use crate::poly::Poly;
@@ -1062,8 +1062,8 @@ impl Comparison {
     }
 }
 
-/// Table 2's Anil & Padma Sree settings (the Ajmeri & Ali parallel control structure is not
-/// a (Cr, Cy) pair — it runs an internal process model with its dead time — and is left out).
+/// Table 2's Anil & Padma Sree settings (Ajmeri & Ali's parallel control structure, which runs
+/// an internal process model with its dead time, is [`ajmeri_ali`]).
 pub fn comparisons() -> Vec<Comparison> {
     let ll = |a: f64, b: f64| (vec![a, 1.0], vec![b, 1.0]);
     vec![
@@ -1118,6 +1118,69 @@ pub fn comparisons() -> Vec<Comparison> {
     ]
 }
 
+/// A comparison setting of Table 2 by Ajmeri & Ali (2015): their parallel control structure
+/// (PCS) for integrating processes, a set-point PD and a disturbance PID.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AjmeriAli {
+    /// Example id (`ex1`..`ex3`).
+    pub example: &'static str,
+    /// Set-point tracking controller `k_p`, `k_d` (Table 2, `k_i` = 0).
+    pub sp: (f64, f64),
+    /// Disturbance rejection controller `k_p`, `k_i`, `k_d`.
+    pub dist: (f64, f64, f64),
+    /// Ms printed in Table 2.
+    pub ms_printed: f64,
+}
+
+impl AjmeriAli {
+    /// The PCS on the model `model` (dead time included), mapped onto (Cr, Cy) plus a
+    /// [`ModelLoop`]: `u = u₁ + C₂(y_m − y)`, `u₁ = k_p(r − y_m) − k_d·ẏ_m`,
+    /// `y_m = model·u₁`, `C₂ = k_p + k_i/s + k_d s` (ideal derivative).
+    ///
+    /// Table 2 gives only gains; the structure is inferred from Table 4 and is the one whose
+    /// nominal servo response reproduces it exactly: with the derivative on the model output
+    /// the integral of the servo error is `(1 + K k_d)/(K k_p)` for `K e^{−θs}/s` and
+    /// `k_d/k_p` for `K e^{−θs}/s²` (9.059, 10.68 and, for Example 3, `(1 + 0.2 k_d)/(0.2 k_p)`
+    /// = 4.594: printed 9.06, 10.67, 4.594, all without overshoot); the derivative on the error
+    /// would make `u₁` impulsive. The disturbance controller acts on `y_m − y`, so with a
+    /// perfect model the servo and regulatory responses decouple, as the PCS is designed to.
+    pub fn controller(&self, model: &Plant) -> Result<Controller> {
+        let (kp, kd) = self.sp;
+        let (dp, di, dd) = self.dist;
+        let cd = Pid::parallel(dp, di, dd).to_controller()?.cy;
+        let ml = ModelLoop::new(
+            model.clone(),
+            Tf::gain(kp),
+            Tf::parse_desc(&[kd, kp], &[1.0])?,
+        )?;
+        Ok(Controller::new(Tf::gain(0.0), cd)?.with_model_loop(ml))
+    }
+}
+
+/// Table 2's Ajmeri & Ali settings (Examples 1-3).
+pub fn ajmeri_ali() -> Vec<AjmeriAli> {
+    vec![
+        AjmeriAli {
+            example: "ex1",
+            sp: (2.9933, 7.1189),
+            dist: (3.3209, 0.1614, 5.8796),
+            ms_printed: 2.0,
+        },
+        AjmeriAli {
+            example: "ex2",
+            sp: (0.0293, 0.3129),
+            dist: (0.0414, 0.0018, 0.3246),
+            ms_printed: 2.0,
+        },
+        AjmeriAli {
+            example: "ex3",
+            sp: (3.1949, 9.6792),
+            dist: (3.67, 0.3521, 9.0902),
+            ms_printed: 2.0,
+        },
+    ]
+}
+
 fn scenario_json(e: &Example) -> Value {
     json!({"t_end": e.t_end, "dt": 0.1,
            "setpoint": {"time": 0.0, "size": e.sp_size},
@@ -1125,7 +1188,8 @@ fn scenario_json(e: &Example) -> Value {
 }
 
 /// Presets of this paper: Examples 1-6 (the proposed design), Example 5's design applied to
-/// the higher-order process of Eq. (49), and the Anil & Padma Sree settings of Table 2.
+/// the higher-order process of Eq. (49), and the Anil & Padma Sree and Ajmeri & Ali settings
+/// of Table 2.
 pub fn presets() -> Vec<Preset> {
     let mut v = Vec::new();
     for e in examples() {
@@ -1188,6 +1252,35 @@ pub fn presets() -> Vec<Preset> {
                 });
             }
         }
+    }
+    for a in ajmeri_ali() {
+        let Some(e) = examples().into_iter().find(|e| e.id == a.example) else {
+            continue;
+        };
+        let Ok(ctrl) = a.controller(&e.family.plant()) else {
+            continue;
+        };
+        v.push(Preset {
+            id: format!("medarametla2018/{}/ajmeri-ali", e.id),
+            title: format!("{} — Ajmeri & Ali 2015, parallel control structure (Table 2)", e.title),
+            description: format!(
+                "Ajmeri & Ali's parallel control structure as quoted in Table 2: a set-point PD (k_p = {}, k_d = {}, \
+                 derivative on the model output) closed around an internal model of the process with its dead time, \
+                 and a disturbance PID (k_p = {}, k_i = {}, k_d = {}) acting on y_m − y (Ms {} printed). Table 2 gives \
+                 the gains only; this structure is the one that reproduces Table 4's servo IAE exactly \
+                 ((1 + K k_d)/(K k_p) = 9.06 for Example 1). With a perfect model the servo and load responses are \
+                 decoupled; the controller carries the model as `model_loop`, simulated with both dead times exact.",
+                a.sp.0, a.sp.1, a.dist.0, a.dist.1, a.dist.2, a.ms_printed
+            ),
+            citation: "M. Ajmeri, A. Ali, Direct synthesis based tuning of the parallel control structure for integrating \
+                       processes, Int. J. Syst. Sci. 46(13) (2015) 2461-2473; settings as quoted in Medarametla & \
+                       Manimozhi 2018, Table 2"
+                .into(),
+            plant: family_json(&e.family),
+            tune: Value::Null,
+            controller: controller_json(&ctrl),
+            scenario: scenario_json(&e),
+        });
     }
     for c in comparisons() {
         let Some(e) = examples().into_iter().find(|e| e.id == c.example) else {
