@@ -26,6 +26,11 @@
 //! The only approximation is that interpolation of a smooth function on a short piece, so the
 //! error is `O(h⁶)`. Output samples `t_k = k·dt` are right-hand limits, interpolated within
 //! their piece; the metrics integrate the continuous piecewise-polynomial response.
+//!
+//! A controller with a model-based set-point path ([`crate::controller::ModelLoop`]: an
+//! internal model with its own dead time θ_m) has two delays; [`simulate`] hands it to the
+//! two-delay version of this method (`sim_multi.rs`: the same pieces, cut at every
+//! `t_e + iθ + jθ_m`).
 
 use crate::controller::Controller;
 use crate::error::{non_negative, positive, Error, Result};

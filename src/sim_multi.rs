@@ -432,37 +432,43 @@ fn propagators(mm: &MultiModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
     Ok(p)
 }
 
-/// Every point `t_e + Σ k_j τ_j ≤ t_end` reachable from the events through the delays.
+/// Every point `t_e + Σ k_j τ_j ≤ t_end` reachable from the events through the delays,
+/// sorted, points closer than `tol` merged. Errors beyond `MAX_BREAKS` points.
 fn breakpoints(events: &[f64], delays: &[f64], t_end: f64, tol: f64) -> Result<Vec<f64>> {
-    let mut pts: Vec<f64> = events.to_vec();
-    let mut frontier = pts.clone();
     let pos: Vec<f64> = delays.iter().copied().filter(|d| *d > 0.0).collect();
-    while !frontier.is_empty() {
-        let mut next = Vec::new();
-        for p in &frontier {
-            for d in &pos {
-                let q = p + d;
-                if q <= t_end + tol {
-                    next.push(q);
-                }
+    let too_many = || {
+        Error::new(
+            "scenario.t_end",
+            format!(
+                "the dead times create more than {MAX_BREAKS} breakpoints before t_end; \
+                 shorten t_end"
+            ),
+        )
+    };
+    // enumerate the multi-indices k with Σ k_j τ_j ≤ t_end − t_e (each delay used in order,
+    // so every combination is visited once)
+    fn walk(p: f64, j: usize, pos: &[f64], t_end: f64, tol: f64, out: &mut Vec<f64>) -> bool {
+        if j == pos.len() {
+            out.push(p);
+            return out.len() <= MAX_BREAKS;
+        }
+        let mut q = p;
+        while q <= t_end + tol {
+            if !walk(q, j + 1, pos, t_end, tol, out) {
+                return false;
             }
+            q += pos[j];
         }
-        next.sort_by(f64::total_cmp);
-        next.dedup_by(|a, b| (*a - *b).abs() <= tol);
-        next.retain(|q| !pts.iter().any(|p| (p - q).abs() <= tol));
-        pts.extend_from_slice(&next);
-        if pts.len() > MAX_BREAKS {
-            return Err(Error::new(
-                "scenario.t_end",
-                format!(
-                    "the two dead times create more than {MAX_BREAKS} breakpoints before \
-                     t_end; shorten t_end"
-                ),
-            ));
+        true
+    }
+    let mut pts = Vec::new();
+    for &e in events {
+        if !walk(e, 0, &pos, t_end, tol, &mut pts) {
+            return Err(too_many());
         }
-        frontier = next;
     }
     pts.sort_by(f64::total_cmp);
+    pts.dedup_by(|a, b| (*a - *b).abs() <= tol);
     Ok(pts)
 }
 
@@ -522,7 +528,7 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
         .collect();
     let brk = breakpoints(&events, &mm.delays, sc.t_end, tol)?;
     let n_steps = ((sc.t_end + tol) / h).ceil().max(1.0) as usize;
-    if n_steps + brk.len() > MAX_PIECES {
+    if n_steps.saturating_add(brk.len()) > MAX_PIECES {
         return Err(Error::new(
             "dt",
             format!(

@@ -246,3 +246,56 @@ fn the_json_api_carries_the_model_loop_both_ways() {
     let e = api::parse_controller(&bad, "controller").unwrap_err();
     assert!(e.to_string().starts_with("controller.model_loop"), "{e}");
 }
+
+#[wasm_bindgen_test(unsupported = test)]
+fn malformed_or_oversized_model_loops_are_errors_not_panics() {
+    let (plant, c) = ajmeri_ex1();
+    let good = api::controller_json(&c);
+    let pj = api::plant_json(&plant);
+    let sc = json!({"t_end": 50.0, "dt": 0.5, "setpoint": {"time": 0.0, "size": 1.0}});
+    let mut cases: Vec<(serde_json::Value, &str)> = Vec::new();
+    for (field, v, path) in [
+        ("plant", json!(null), "controller.model_loop"),
+        (
+            "cr",
+            json!({"num": [1.0, 2.0, 3.0], "den": [1.0]}),
+            "controller.model_loop.cr",
+        ),
+        (
+            "cy",
+            json!({"num": [1.0], "den": [0.0]}),
+            "controller.model_loop.cy",
+        ),
+        (
+            "cy",
+            json!({"num": ["x"], "den": [1.0]}),
+            "controller.model_loop.cy",
+        ),
+        (
+            "plant",
+            json!({"num": [1.0, 0.0, 0.0], "den": [1.0], "delay": 1.0}),
+            "controller.model_loop.plant",
+        ),
+    ] {
+        let mut bad = good.clone();
+        bad["model_loop"][field] = v;
+        cases.push((bad, path));
+    }
+    for (bad, path) in cases {
+        let e = api::simulate(&json!({"plant": pj, "controller": bad, "scenario": sc}))
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with(path), "{e} (expected {path})");
+    }
+    // a model dead time tiny against t_end: too many breakpoints → a clear error, at once
+    let mut tiny = good.clone();
+    tiny["model_loop"]["plant"] = json!({"num": [0.05], "den": [1.0, 0.0], "delay": 1e-4});
+    let sc = json!({"t_end": 1000.0, "dt": 1.0, "setpoint": {"time": 0.0, "size": 1.0}});
+    let e = api::simulate(&json!({"plant": pj, "controller": tiny, "scenario": sc}))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("scenario.t_end") || e.starts_with("dt"),
+        "{e}"
+    );
+}

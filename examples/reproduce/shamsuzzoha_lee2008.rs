@@ -6,6 +6,7 @@
 use pidlab::controller::Controller;
 use pidlab::freq::analyze;
 use pidlab::plant::{Family, Plant};
+use pidlab::rules::shamsuzzoha_lee2008 as ssl;
 use pidlab::rules::shamsuzzoha_lee2008::{
     design, imc_pid, lambda_for_ms, studies, weighting_filter, ImcModel, DIP_ALPHA,
 };
@@ -290,10 +291,26 @@ pub fn report() -> String {
          PID with integral action on an integrating plant; their controller structure is not \
          given, so this row is not reproduced (mapped as an ideal PID, derivative on y).\n\
          - Example 2, Liu et al.: a set-point controller around a delay-free model, a stabilizer \
-         R(s) = 0.4s/(0.1s+1) and a disturbance estimator F₀ acting on y − G̃e^(-θs)u; the \
-         set-point controller is not printed and the scheme contains the model's dead time, so \
-         it has no rational (Cr, Cy) form and no preset.\n"
+         R(s) = 0.4s/(0.1s+1) and a disturbance estimator F₀ acting on y − G̃e^(-θs)u. With a \
+         perfect model the load response depends on F₀ alone, y = Ge^(-θs)(1 − F₀Ge^(-θs))d, \
+         computed exactly below; the set-point controller is not printed and R's place in the \
+         scheme is not given (without R the scheme is internally unstable: the model's double \
+         integrator runs open loop), so the set-point and mismatch columns cannot be computed \
+         and there is no preset.\n"
     );
+    match ssl::liu_load_response(50.0, 0.1, 100.0, 0.001) {
+        Ok((iae, peak, tv)) => {
+            let _ = writeln!(
+                o,
+                "  Liu et al. nominal load response (0.1 step): IAE {iae:.4} (printed 2.63), peak \
+                 {peak:.4} (0.39), TV of u {tv:.4} (0.37 ≈ ours + 0.1: the printed value looks like \
+                 the TV of u + d).\n"
+            );
+        }
+        Err(e) => {
+            let _ = writeln!(o, "  Liu et al. load response: failed: {e}\n");
+        }
+    }
 
     // ------------------------------------------------------------------ Eq. (27)
     let _ = writeln!(
