@@ -152,7 +152,7 @@ fn perfect_model_decouples_servo_and_regulatory_responses() {
 #[wasm_bindgen_test(unsupported = test)]
 fn servo_iae_equals_the_closed_form_integral_of_the_error() {
     // u₁ = kp(r − y_m) − kd·ẏ_m around K e^{−θs}/s: ∫e = (1 + K kd)/(K kp) (no overshoot,
-    // so IAE = ∫e); Ajmeri & Ali Example 1 → 9.0593, Table 4 prints 9.06.
+    // so IAE = ∫e); Ajmeri & Ali Example 1 → 9.0599, Table 4 prints 9.06.
     let (plant, c) = ajmeri_ex1();
     let sc = Scenario::steps(400.0, 0.05, 0.0, 1.0, 0.0, 0.0);
     let res = simulate(&plant, &c, &sc).unwrap();
