@@ -142,7 +142,7 @@ function setFamily(id) {
   if (id === 'custom') {
     const tf = old.family ? S.familyTf(old) : old;
     if (last && last.ctl && state.method !== '__literal') {
-      state.literal = { cr: last.ctl.cr, cy: last.ctl.cy, title: 'last design (held)' };
+      state.literal = { ...S.controllerOf(last.ctl), title: 'last design (held)' };
       state.method = '__literal';
     }
     state.plant = { num: tf.num, den: tf.den, delay: tf.delay };
@@ -215,7 +215,7 @@ function buildMethod() {
   if (sel.options.length === 0) sel.append(el('option', { value: '', text: 'no method applies to this plant: load a preset' }));
 
   const info = methodInfo(state.method);
-  $('method-structure').textContent = info ? info.structure : state.method === '__literal' ? 'Literal (Cr, Cy) of a comparison setting' : '';
+  $('method-structure').textContent = info ? info.structure : state.method === '__literal' ? 'Literal (Cr, Cy)' + (state.literal && state.literal.model_loop ? ' with a set-point model loop' : '') + ' of a comparison setting' : '';
   $('method-cite').textContent = info ? info.citation : '';
   const box = $('method-params');
   box.replaceChildren();
@@ -366,7 +366,7 @@ function loadPreset(id) {
     if (typeof state.params.target_ms === 'number') { state.target = state.params.target_ms; delete state.params.target_ms; }
     state.literal = null;
   } else if (literal) {
-    state.literal = { cr: literal.cr, cy: literal.cy, title: p.title };
+    state.literal = { ...S.controllerOf(literal), title: p.title };
     state.method = '__literal';
     state.params = {};
   }
@@ -393,7 +393,7 @@ function pinExample() {
     }
     if (!controller) continue;
     if (state.pins.length >= 6) state.pins.shift();
-    state.pins.push({ label: p.title, plant, controller: { cr: controller.cr, cy: controller.cy }, scenario: structuredClone(state.scenario) });
+    state.pins.push({ label: p.title, plant, controller: S.controllerOf(controller), scenario: structuredClone(state.scenario) });
   }
   refreshPins();
   changed();
@@ -479,7 +479,9 @@ function compute() {
   }
   t0 = lap('tune', t0);
   if (!r.ctl) return r;
-  const controller = { cr: r.ctl.cr, cy: r.ctl.cy };
+  // The controller with its set-point model loop, when it has one. A perturbation changes the
+  // process only: the controller's internal model (model_loop.plant) stays the nominal one.
+  const controller = S.controllerOf(r.ctl);
   const perturbed = S.isPerturbed(state.pert);
   r.truePlant = perturbed ? S.perturbPlant(state.plant, state.pert) : state.plant;
   try {
@@ -507,7 +509,13 @@ function compute() {
       r.banners.push({ kind: 'error', title: 'Ill-posed loop' + who, text: v || '|L(j∞)| is infinite.' });
     } else if (an.stable === false) {
       const neutral = /^neutral/i.test(v);
-      r.banners.push({ kind: 'error', title: (neutral ? 'Neutral-type unstable loop' : 'Unstable closed loop') + who, text: v || 'The Nyquist curve encircles −1 (with the open-loop unstable poles counted).' });
+      // analyze() marks the loop unstable when only the set-point model loop is; its verdict says so.
+      const modelOnly = an.model_loop_stable === false && /model loop/i.test(v);
+      // The model loop does not see the process: the nominal banner has said it already.
+      if (modelOnly && who) return;
+      let text = v || 'The Nyquist curve encircles −1 (with the open-loop unstable poles counted).';
+      if (an.model_loop_stable === false && !modelOnly) text += ' The set-point model loop is unstable too.';
+      r.banners.push({ kind: 'error', title: (modelOnly ? 'Unstable set-point model loop' : neutral ? 'Neutral-type unstable loop' : 'Unstable closed loop') + who, text });
     }
   };
   verdictBanner(r.an, '');
@@ -569,11 +577,17 @@ function showReadouts(r) {
   setOut('ro-pm', an ? S.fmt(an.pm) + '°' + (Number.isFinite(an.w_gc) ? ' at ω=' + S.fmt(an.w_gc, 3) : '') : '–', an ? an.pm : null);
   setOut('ro-stable', an ? (an.stable ? 'stable' : 'UNSTABLE') : '–', an ? an.stable : null);
   $('ro-stable').classList.toggle('bad', !!an && !an.stable);
+  // The set-point model loop (a loop around the controller's own model): its stability and Ms.
+  const ml = an && typeof an.model_loop_stable === 'boolean' ? an : null;
+  $('ro-model-line').hidden = !ml;
+  setOut('ro-model-ms', ml ? (ml.model_loop_stable ? 'Ms ' + S.fmt(ml.model_loop_ms) + ', stable' : 'UNSTABLE' + (Number.isFinite(ml.model_loop_ms) ? ', Ms ' + S.fmt(ml.model_loop_ms) : '')) : '–', ml ? ml.model_loop_ms : null);
+  $('ro-model-ms').classList.toggle('bad', !!ml && !ml.model_loop_stable);
   $('ro-true-box').hidden = !r.anTrue;
   // A short summary for screen readers, announced once the input has settled.
   clearTimeout(announceTimer);
   announceTimer = setTimeout(() => {
     const parts = ['Ms ' + $('ro-ms').textContent, 'gain margin ' + $('ro-gm').textContent, 'phase margin ' + $('ro-pm').textContent, $('ro-stable').textContent];
+    if (!$('ro-model-line').hidden) parts.push('set-point model loop ' + $('ro-model-ms').textContent);
     $('announce').textContent = parts.join(', ');
   }, 700);
   setOut('ro-ms-true', r.anTrue ? S.fmt(r.anTrue.ms) + (r.anTrue.stable ? '' : ' (unstable)') : '–', r.anTrue ? r.anTrue.ms : null);
@@ -720,6 +734,7 @@ function drawPlots(r) {
     if (r.an && Number.isFinite(r.an.ms) && r.an.ms > 0) circle = { cx: -1, cy: 0, r: 1 / r.an.ms, label: 'Ms circle, r = 1/Ms', color: '#D55E00' };
   }
   plot({ canvas: 'plot-nyquist', kind: 'nyquist', dpr: k, title: 'Nyquist plot of L', xlabel: 'Re L', ylabel: 'Im L', series: ny, circle, points: [{ x: -1, y: 0, label: '−1' }] });
+  $('nyquist-note').hidden = !(r.ctl && r.ctl.model_loop);
 }
 
 function plantTf(p) {
@@ -765,7 +780,7 @@ function showMetrics(r) {
   $('plot-servo').setAttribute('aria-label', 'Set-point response of y to a step in r: overshoot ' + (typeof sv.overshoot === 'number' ? (Math.abs(sv.overshoot) < 1e-9 ? '0' : S.fmt(100 * sv.overshoot, 3)) + ' %' : '–') + ', settling time ' + S.fmt(sv.settling_time) + ', IAE ' + S.fmt(sv.iae));
   $('plot-load').setAttribute('aria-label', 'Load response of y to a step at the plant input: peak error ' + S.fmt(rg.peak_error) + ', settling time ' + S.fmt(rg.settling_time) + ', IAE ' + S.fmt(rg.iae));
   $('plot-u').setAttribute('aria-label', 'Control signal u: total variation ' + S.fmt(sv.tv) + ' (servo), ' + S.fmt(rg.tv) + ' (load)');
-  $('plot-nyquist').setAttribute('aria-label', 'Nyquist plot of L(jω) with the circle of radius 1/Ms around −1; Ms ' + (r.an ? S.fmt(r.an.ms) : '–') + (r.an && r.an.stable === false ? ', closed loop unstable' : ''));
+  $('plot-nyquist').setAttribute('aria-label', 'Nyquist plot of L(jω)' + (r.ctl && r.ctl.model_loop ? ' = Cy·P, the feedback loop only (not the set-point model loop),' : '') + ' with the circle of radius 1/Ms around −1; Ms ' + (r.an ? S.fmt(r.an.ms) : '–') + (r.an && r.an.stable === false ? ', closed loop unstable' : ''));
   for (const s of table.querySelectorAll('.swatch')) s.style.backgroundColor = s.getAttribute('data-color');
 }
 
@@ -781,6 +796,12 @@ function tfText(t) {
   return '(' + S.polyText(t.num) + ') / (' + S.polyText(t.den) + ')';
 }
 
+/** A plant as a transfer function with its dead time, in the style of tfText. */
+function plantTfText(p) {
+  const t = plantTf(p);
+  return tfText(t) + (t.delay ? ' · e^(−' + S.fmt(t.delay) + 's)' : '');
+}
+
 function showController(r) {
   const info = methodInfo(state.method);
   $('ctl-structure').textContent = info ? info.title + ' — ' + info.structure : state.method === '__literal' && state.literal ? 'Literal controller: ' + (state.literal.title || '') : '';
@@ -789,8 +810,9 @@ function showController(r) {
   const plantText = pl.family
     ? S.FAMILIES[pl.family].formula + ' with ' + S.FAMILIES[pl.family].params.map((n) => n + ' = ' + S.fmt(pl[n])).join(', ')
     : 'P(s) = (' + S.polyText(pl.num) + ') / (' + S.polyText(pl.den) + ') · e^(−' + S.fmt(pl.delay) + 's)';
-  const pert = S.isPerturbed(state.pert) ? '; true plant perturbed: ' + Object.entries(state.pert).filter(([, v]) => v !== 0).map(([k, v]) => k + ' ' + (v > 0 ? '+' : '') + v + ' %').join(', ') : '';
-  $('print-summary').textContent = 'Plant: ' + plantText + pert + '. Controller: ' + pinLabel() + '.';
+  const ml = r.ctl && r.ctl.model_loop;
+  const pert = S.isPerturbed(state.pert) ? '; true plant perturbed: ' + Object.entries(state.pert).filter(([, v]) => v !== 0).map(([k, v]) => k + ' ' + (v > 0 ? '+' : '') + v + ' %').join(', ') + (ml ? ' (the controller\'s internal model stays nominal)' : '') : '';
+  $('print-summary').textContent = 'Plant: ' + plantText + pert + '. Controller: ' + pinLabel() + (ml ? ', with a set-point model loop on P_m(s) = ' + plantTfText(ml.plant) : '') + '.';
   $('ctl-cite').textContent = info ? info.citation : (PRESETS.find((p) => p.id === state.preset) || {}).citation || '';
   const named = $('ctl-named');
   named.replaceChildren();
@@ -798,9 +820,15 @@ function showController(r) {
   det.replaceChildren();
   const warn = $('ctl-warnings');
   warn.replaceChildren();
+  $('ctl-model').hidden = !ml;
   if (!r.ctl) { $('ctl-cr').textContent = '–'; $('ctl-cy').textContent = '–'; return; }
   $('ctl-cr').textContent = tfText(r.ctl.cr);
   $('ctl-cy').textContent = tfText(r.ctl.cy);
+  if (ml) {
+    $('ctl-model-plant').textContent = plantTfText(ml.plant);
+    $('ctl-model-cr').textContent = tfText(ml.cr);
+    $('ctl-model-cy').textContent = tfText(ml.cy);
+  }
   const show = (dl, k, v) => {
     let text;
     if (typeof v === 'number') text = S.fmt(v, 5);
@@ -812,7 +840,7 @@ function showController(r) {
     }
     dl.append(el('dt', { text: SYMBOLS[k] || k, title: k }), el('dd', { text }));
   };
-  for (const [k, v] of Object.entries(r.ctl)) if (k !== 'cr' && k !== 'cy' && k !== 'title') show(named, k, v);
+  for (const [k, v] of Object.entries(r.ctl)) if (k !== 'cr' && k !== 'cy' && k !== 'model_loop' && k !== 'title') show(named, k, v);
   if (r.tune && r.tune.details) {
     for (const [k, v] of Object.entries(r.tune.details)) {
       if (k === 'warnings' && Array.isArray(v)) v.forEach((w) => warn.append(el('li', { text: String(w) })));
@@ -868,7 +896,7 @@ function refreshPins() {
 function pin() {
   if (!last || !last.ctl) return;
   if (state.pins.length >= 6) state.pins.shift();
-  state.pins.push({ label: pinLabel(), plant: structuredClone(last.truePlant || state.plant), controller: { cr: last.ctl.cr, cy: last.ctl.cy }, scenario: structuredClone(state.scenario) });
+  state.pins.push({ label: pinLabel(), plant: structuredClone(last.truePlant || state.plant), controller: structuredClone(S.controllerOf(last.ctl)), scenario: structuredClone(state.scenario) });
   refreshPins();
   changed();
 }
@@ -1018,7 +1046,7 @@ async function main() {
   window.__pidlab = {
     wasm,
     state: () => structuredClone(state),
-    inputs: () => (last && last.ctl ? { plant: state.plant, controller: { cr: last.ctl.cr, cy: last.ctl.cy } } : null),
+    inputs: () => (last && last.ctl ? { plant: state.plant, controller: S.controllerOf(last.ctl) } : null),
     perf,
     fmt: S.fmt,
     ready: true,

@@ -44,7 +44,7 @@ export function defaultState() {
     method: 'praveen_kumar',
     params: {},
     target: null, // target Ms, or null when λ is set directly
-    literal: null, // literal controller {cr, cy} of a comparison preset (when method is null)
+    literal: null, // literal controller {cr, cy[, model_loop], title} of a comparison preset (method '__literal')
     preset: '',
     scenario: structuredClone(DEFAULT_SCENARIO),
     pert: { k: 0, tau: 0, zero: 0, theta: 0 },
@@ -101,6 +101,39 @@ function cleanParams(p) {
   return out;
 }
 
+/**
+ * The controller object the API takes (API.md): `cr`, `cy` and, when present, the set-point
+ * `model_loop: { plant, cr, cy }` (a loop closed around the controller's own process model).
+ * Other fields (named parameters, a title) are left out. No validation: for objects that come
+ * from the module itself; the model plant is put in the form cleanPlant gives it.
+ */
+export function controllerOf(c) {
+  const out = { cr: c.cr, cy: c.cy };
+  const ml = c.model_loop;
+  if (ml && typeof ml === 'object') out.model_loop = { plant: cleanPlant(ml.plant) || ml.plant, cr: ml.cr, cy: ml.cy };
+  return out;
+}
+
+const cleanTf = (t) => ({ num: t.num.slice(), den: t.den.slice() });
+
+/**
+ * A controller from an untrusted source (URL hash) as the API takes it, or null when malformed.
+ * A model loop, when given, must be whole (a valid plant and two transfer functions): without
+ * it the set-point path would be a different controller, so a malformed one rejects the whole
+ * controller rather than being dropped.
+ */
+export function cleanController(c) {
+  if (!c || typeof c !== 'object' || !isTf(c.cr) || !isTf(c.cy)) return null;
+  const out = { cr: cleanTf(c.cr), cy: cleanTf(c.cy) };
+  const ml = c.model_loop;
+  if (ml === undefined || ml === null) return out;
+  if (typeof ml !== 'object') return null;
+  const plant = cleanPlant(ml.plant);
+  if (!plant || !isTf(ml.cr) || !isTf(ml.cy)) return null;
+  out.model_loop = { plant, cr: cleanTf(ml.cr), cy: cleanTf(ml.cy) };
+  return out;
+}
+
 /** Validates a decoded state object field by field; anything malformed falls back to the default. */
 export function cleanState(raw) {
   const s = defaultState();
@@ -110,8 +143,9 @@ export function cleanState(raw) {
   if (raw.method === null || isId(raw.method)) s.method = raw.method;
   s.params = cleanParams(raw.params);
   if (isNum(raw.target) && raw.target > 1 && raw.target < 10) s.target = raw.target;
-  if (raw.literal && isTf(raw.literal.cr) && isTf(raw.literal.cy)) {
-    s.literal = { cr: { num: raw.literal.cr.num, den: raw.literal.cr.den }, cy: { num: raw.literal.cy.num, den: raw.literal.cy.den } };
+  const lit = cleanController(raw.literal);
+  if (lit) {
+    s.literal = lit;
     if (typeof raw.literal.title === 'string') s.literal.title = raw.literal.title.slice(0, 200);
   }
   if (isId(raw.preset)) s.preset = raw.preset;
@@ -122,11 +156,12 @@ export function cleanState(raw) {
   if (Array.isArray(raw.pins)) {
     for (const p of raw.pins.slice(0, 6)) {
       const plant = cleanPlant(p && p.plant);
-      if (plant && p.controller && isTf(p.controller.cr) && isTf(p.controller.cy)) {
+      const controller = cleanController(p && p.controller);
+      if (plant && controller) {
         s.pins.push({
           label: typeof p.label === 'string' ? p.label.slice(0, 120) : 'pinned',
           plant,
-          controller: { cr: p.controller.cr, cy: p.controller.cy },
+          controller,
           scenario: cleanScenario(p.scenario),
         });
       }

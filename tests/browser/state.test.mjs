@@ -87,3 +87,38 @@ test('the fallback Nyquist curve of a pure delay loop lies on the unit circle', 
   assert.equal(c.re.length, 50);
   for (let i = 0; i < 50; i++) assert.ok(Math.abs(Math.hypot(c.re[i], c.im[i]) - 1) < 1e-12);
 });
+
+test('a controller with a set-point model loop survives the hash round trip; a malformed one is refused whole', () => {
+  const ml = { plant: { family: 'piptd', k: 0.05, theta: 5 }, cr: { num: [2.9933], den: [1] }, cy: { num: [7.1189, 2.9933], den: [1] } };
+  const ctl = { cr: { num: [0], den: [1] }, cy: { num: [5.8796, 3.3209, 0.1614], den: [1, 0] }, model_loop: ml };
+  const st = S.defaultState();
+  st.plant = { family: 'piptd', k: 0.05, theta: 5 };
+  st.method = '__literal';
+  st.literal = { ...structuredClone(ctl), title: 'Ajmeri & Ali' };
+  st.pins = [{ label: 'pcs', plant: { family: 'piptd', k: 0.06, theta: 5.5 }, controller: structuredClone(ctl), scenario: structuredClone(S.DEFAULT_SCENARIO) }];
+  assert.deepEqual(S.decodeHash(S.encodeHash(st)).state, st);
+
+  // A model plant as presets() writes it (num/den/delay and the family) is kept in family form.
+  const full = { ...ml, plant: { family: 'piptd', k: 0.05, theta: 5, num: [0.05], den: [1, 0], delay: 5 } };
+  assert.deepEqual(S.cleanController({ ...ctl, model_loop: full }), ctl);
+  assert.deepEqual(S.controllerOf({ ...ctl, model_loop: full, kp: 1, title: 'x' }), ctl);
+  // No model loop (absent or null): a plain (Cr, Cy) controller.
+  assert.deepEqual(S.cleanController({ cr: ctl.cr, cy: ctl.cy, model_loop: null }), { cr: ctl.cr, cy: ctl.cy });
+  assert.deepEqual(S.controllerOf({ cr: ctl.cr, cy: ctl.cy, kp: 1 }), { cr: ctl.cr, cy: ctl.cy });
+
+  const bad = [
+    { ...ml, cy: undefined },
+    { ...ml, cr: { num: ['x'], den: [1] } },
+    { ...ml, plant: { family: 'nope', k: 1 } },
+    { ...ml, plant: { num: [1], den: [1, 0] } }, // no delay
+    'model',
+    [ml],
+  ];
+  for (const m of bad) {
+    assert.equal(S.cleanController({ ...ctl, model_loop: m }), null, JSON.stringify(m));
+    const raw = { ...st, literal: { ...ctl, model_loop: m, title: 't' }, pins: [{ ...st.pins[0], controller: { ...ctl, model_loop: m } }] };
+    const back = S.decodeHash('#' + new URLSearchParams({ s: JSON.stringify(raw) }).toString()).state;
+    assert.equal(back.literal, null, 'literal with model_loop ' + JSON.stringify(m));
+    assert.equal(back.pins.length, 0, 'pin with model_loop ' + JSON.stringify(m));
+  }
+});
