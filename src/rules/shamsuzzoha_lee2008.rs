@@ -1059,7 +1059,8 @@ pub fn studies() -> Vec<Study> {
                     tune: None,
                     description: "Zhang et al. PID K_c = 2.038, τ_I = 2.991, τ_D = 0.665 (ideal form) \
                                   × F_t = 1/(0.145s + 1) on both paths, set-point filter Eq. (27) with \
-                                  γ = 0.3 as printed"
+                                  γ = 0.3 as printed; the rule derived in `zhang1999_pid` gives these \
+                                  four numbers from λ = 0.597"
                         .into(),
                     citation: C_ZHANG,
                 },
@@ -1307,6 +1308,49 @@ pub fn studies() -> Vec<Study> {
             ],
         },
     ]
+}
+
+/// Zhang, Xu & Sun (1999)'s IMC-PID for the FODIP `K e^{−θs}/(s(τs + 1))`, the comparison rule
+/// of Table 1 and Fig. 7. The paper quotes only its settings; this derivation reproduces all four
+/// printed numbers of Table 1's row (λ = 0.597 on the Example 1 model K = 1, τ = 1, θ = 0.2:
+/// K_c = 2.038, τ_I = 2.991, τ_D = 0.665, F_t = 1/(0.145s + 1)):
+///
+/// IMC controller `Q = s(τs + 1)(βs + 1)/(K(λs + 1)³)` with `β = 3λ + θ` (so that `1 − GQ`
+/// has a double zero at s = 0: no offset for a ramp-like load on an integrator), and the
+/// feedback controller `C = Q/(1 − GQ)` with the first-order Taylor approximation
+/// `e^{−θs} ≈ 1 − θs`, whose denominator is exactly `s²(λ³s + 3λ² + βθ)`:
+///
+/// `C = (τs + 1)(βs + 1)/(K(3λ² + βθ)·s) · 1/(λ³/(3λ² + βθ)·s + 1)`, i.e. the series-free ideal
+/// PID `K_c = (τ + β)/(K(3λ² + βθ))`, `τ_I = τ + β`, `τ_D = τβ/(τ + β)` times the lag
+/// `F_t = 1/(t_f s + 1)`, `t_f = λ³/(3λ² + βθ)`. (With the second-order Taylor term the gain would
+/// be 2.066, not the printed 2.038.) Returns `(K_c, τ_I, τ_D, t_f)`.
+pub fn zhang1999_pid(k: f64, tau: f64, theta: f64, lambda: f64) -> Result<(f64, f64, f64, f64)> {
+    crate::error::finite("k", k)?;
+    if k == 0.0 {
+        return Err(Error::new("k", "must be non-zero"));
+    }
+    crate::error::non_negative("tau", tau)?;
+    crate::error::non_negative("theta", theta)?;
+    crate::error::positive("lambda", lambda)?;
+    let beta = 3.0 * lambda + theta;
+    let a2 = 3.0 * lambda * lambda + beta * theta;
+    let ti = tau + beta;
+    Ok((ti / (k * a2), ti, tau * beta / ti, lambda.powi(3) / a2))
+}
+
+/// Zhang et al.'s controller (ideal PID × F_t on both paths, no set-point filter) for the FODIP
+/// `family` with λ, for the Fig. 7 comparison.
+pub fn zhang1999_controller(family: &Family, lambda: f64) -> Result<Controller> {
+    let Family::Ifoptd { k, tau, theta } = *family else {
+        return Err(Error::new(
+            "plant.family",
+            "Zhang et al.'s rule here is for ifoptd",
+        ));
+    };
+    let (kc, ti, td, tf) = zhang1999_pid(k, tau, theta, lambda)?;
+    Pid::ideal(kc, ti, td)
+        .series_filter(lag(tf))
+        .to_controller()
 }
 
 /// Liu et al.'s nominal load response in Example 2 (Table 2, row "Liu et al.", disturbance
