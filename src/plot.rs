@@ -353,9 +353,10 @@ impl Spec {
                 format!("must be between 0.5 and 4 (got {dpr})"),
             ));
         }
-        let series_v = match o.get("series") {
-            None | Some(Value::Null) => Vec::new(),
-            Some(Value::Array(a)) => a.clone(),
+        // Borrowed, not cloned: the series hold most of the spec's data.
+        let series_v: &[Value] = match o.get("series") {
+            None | Some(Value::Null) => &[],
+            Some(Value::Array(a)) => a,
             Some(_) => return Err(err("spec.series", "must be an array")),
         };
         if series_v.len() > MAX_SERIES {
@@ -441,10 +442,10 @@ impl Spec {
             }
             Some(_) => return Err(err("spec.circle", "must be an object {cx, cy, r}")),
         };
-        let list = |key: &str| -> Result<Vec<Value>> {
+        let list = |key: &str| -> Result<&[Value]> {
             match o.get(key) {
-                None | Some(Value::Null) => Ok(Vec::new()),
-                Some(Value::Array(a)) if a.len() <= 64 => Ok(a.clone()),
+                None | Some(Value::Null) => Ok(&[]),
+                Some(Value::Array(a)) if a.len() <= 64 => Ok(a),
                 Some(Value::Array(_)) => Err(err(&format!("spec.{key}"), "at most 64 entries")),
                 Some(_) => Err(err(&format!("spec.{key}"), "must be an array")),
             }
