@@ -1,6 +1,6 @@
 // pidlab page: controls -> wasm (tune, simulate, analyze) -> plots (drawn in Rust) and readouts.
 // No user or URL value is ever parsed as HTML or run as code: the DOM is built with createElement and
-// textContent only. Every input schedules one render per animation frame.
+// textContent only. Inputs are rendered at most once per animation frame (see changed()).
 import * as wasm from './pkg/pidlab.js';
 import * as S from './state.js';
 
@@ -29,8 +29,34 @@ let embed = false;
 let last = null; // last computed results
 let pinCache = []; // simulated pins (parallel to state.pins)
 let pending = false;
+// Per render: the time of each stage (performance.now() laps; a stage that did not run is absent).
 const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {} };
-const lap = (name, t0) => { perf.phases[name] = performance.now() - t0; return performance.now(); };
+const lap = (name, t0) => { const t = performance.now(); perf.phases[name] = (perf.phases[name] || 0) + t - t0; return t; };
+
+// ---------------------------------------------------------------- engine calls by input
+// tune/simulate/analyze are pure: the same input gives the same result. A render reuses the
+// result (or the error) of an input it has seen in the last few calls, so a control that leaves
+// an input alone does not recompute it (a perturbation slider keeps the nominal design, its
+// simulation and its analysis). Keyed by the input's JSON text.
+const MEMO_SIZE = 4;
+const memo = { tune: [], simulate: [], analyze: [] };
+function engine(fn, input) {
+  const key = JSON.stringify(input);
+  const list = memo[fn];
+  const i = list.findIndex((e) => e.key === key);
+  let e;
+  if (i >= 0) {
+    e = list[i];
+    list.splice(i, 1);
+  } else {
+    e = { key };
+    try { e.value = wasm[fn](input); } catch (err) { e.error = err; }
+  }
+  list.unshift(e);
+  if (list.length > MEMO_SIZE) list.pop();
+  if ('error' in e) throw e.error;
+  return e.value;
+}
 
 // ---------------------------------------------------------------- wasm loading
 async function loadWasm() {
@@ -46,6 +72,12 @@ async function loadWasm() {
 }
 
 const errText = (e) => (e && typeof e === 'object' && 'message' in e ? String(e.message) : String(e));
+
+// DOM writes that skip a value the node already has: an unchanged text, attribute or hidden
+// flag then costs no style recalculation, layout or repaint.
+const setText = (node, text) => { if (node.textContent !== text) node.textContent = text; };
+const setAttr = (node, name, value) => { if (node.getAttribute(name) !== value) node.setAttribute(name, value); };
+const setHidden = (node, hidden) => { if (node.hidden !== hidden) node.hidden = hidden; };
 
 // ---------------------------------------------------------------- controls
 let uid = 0;
@@ -436,8 +468,23 @@ function applyEmbed() {
 }
 
 // ---------------------------------------------------------------- computing
-function changed() {
+/**
+ * Something the page shows has changed: render it, at most once per animation frame. The first
+ * change after a frame renders at once (a key press on a slider or a typed number does not wait
+ * for the next frame to start computing: the frame then only has to paint); further changes
+ * before the next frame are coalesced into one render at the start of that frame. A pointer
+ * drag delivers its moves at the start of a frame, so each renders at once, in that frame.
+ * `deferred`: always wait for the frame (a ResizeObserver callback runs inside a frame's layout).
+ */
+let renderedThisFrame = false;
+function changed(deferred = false) {
   if (pending) return;
+  if (!deferred && !renderedThisFrame) {
+    renderedThisFrame = true;
+    requestAnimationFrame(() => { renderedThisFrame = false; });
+    render();
+    return;
+  }
   pending = true;
   requestAnimationFrame(() => {
     pending = false;
@@ -467,7 +514,7 @@ function compute() {
   let t0 = performance.now();
   if (state.method && state.method !== '__literal') {
     try {
-      r.tune = wasm.tune({ method: state.method, plant: state.plant, params: methodParams() });
+      r.tune = engine('tune', { method: state.method, plant: state.plant, params: methodParams() });
       r.ctl = r.tune.controller;
     } catch (e) {
       r.banners.push({ kind: 'error', title: 'Ill-posed design: the rule cannot tune this plant', text: errText(e) });
@@ -485,21 +532,21 @@ function compute() {
   const perturbed = S.isPerturbed(state.pert);
   r.truePlant = perturbed ? S.perturbPlant(state.plant, state.pert) : state.plant;
   try {
-    r.sim = wasm.simulate({ plant: r.truePlant, controller, scenario: state.scenario });
+    r.sim = engine('simulate', { plant: r.truePlant, controller, scenario: state.scenario });
   } catch (e) {
     r.banners.push({ kind: 'error', title: 'Ill-posed loop: cannot simulate', text: errText(e) });
   }
   if (perturbed) {
-    try { r.simNom = wasm.simulate({ plant: state.plant, controller, scenario: state.scenario }); } catch { r.simNom = null; }
+    try { r.simNom = engine('simulate', { plant: state.plant, controller, scenario: state.scenario }); } catch { r.simNom = null; }
   }
   t0 = lap('simulate', t0);
   try {
-    r.an = wasm.analyze({ plant: state.plant, controller });
+    r.an = engine('analyze', { plant: state.plant, controller });
   } catch (e) {
     r.banners.push({ kind: 'error', title: 'Cannot analyse the loop', text: errText(e) });
   }
   if (perturbed) {
-    try { r.anTrue = wasm.analyze({ plant: r.truePlant, controller }); } catch { r.anTrue = null; }
+    try { r.anTrue = engine('analyze', { plant: r.truePlant, controller }); } catch { r.anTrue = null; }
   }
   lap('analyze', t0);
   const verdictBanner = (an, who) => {
@@ -528,6 +575,7 @@ function compute() {
 
 function render() {
   const t0 = performance.now();
+  for (const k of Object.keys(perf.phases)) delete perf.phases[k];
   let r;
   try {
     r = compute();
@@ -565,8 +613,8 @@ function showBanners(list) {
 
 function setOut(id, text, value) {
   const o = $(id);
-  if (o.textContent !== text) o.textContent = text;
-  o.setAttribute('data-value', value === undefined || value === null ? '' : String(value));
+  setText(o, text);
+  setAttr(o, 'data-value', value === undefined || value === null ? '' : String(value));
 }
 
 function showReadouts(r) {
@@ -576,13 +624,13 @@ function showReadouts(r) {
   setOut('ro-gm', an ? (an.gm === null && an.stable ? '∞' : S.fmt(an.gm)) + (Number.isFinite(an.w_pc) ? ' at ω=' + S.fmt(an.w_pc, 3) : '') : '–', an ? an.gm : null);
   setOut('ro-pm', an ? S.fmt(an.pm) + '°' + (Number.isFinite(an.w_gc) ? ' at ω=' + S.fmt(an.w_gc, 3) : '') : '–', an ? an.pm : null);
   setOut('ro-stable', an ? (an.stable ? 'stable' : 'UNSTABLE') : '–', an ? an.stable : null);
-  $('ro-stable').classList.toggle('bad', !!an && !an.stable);
+  if ($('ro-stable').classList.contains('bad') !== (!!an && !an.stable)) $('ro-stable').classList.toggle('bad', !!an && !an.stable);
   // The set-point model loop (a loop around the controller's own model): its stability and Ms.
   const ml = an && typeof an.model_loop_stable === 'boolean' ? an : null;
-  $('ro-model-line').hidden = !ml;
+  setHidden($('ro-model-line'), !ml);
   setOut('ro-model-ms', ml ? (ml.model_loop_stable ? 'Ms ' + S.fmt(ml.model_loop_ms) + ', stable' : 'UNSTABLE' + (Number.isFinite(ml.model_loop_ms) ? ', Ms ' + S.fmt(ml.model_loop_ms) : '')) : '–', ml ? ml.model_loop_ms : null);
-  $('ro-model-ms').classList.toggle('bad', !!ml && !ml.model_loop_stable);
-  $('ro-true-box').hidden = !r.anTrue;
+  if ($('ro-model-ms').classList.contains('bad') !== (!!ml && !ml.model_loop_stable)) $('ro-model-ms').classList.toggle('bad', !!ml && !ml.model_loop_stable);
+  setHidden($('ro-true-box'), !r.anTrue);
   // A short summary for screen readers, announced once the input has settled.
   clearTimeout(announceTimer);
   announceTimer = setTimeout(() => {
@@ -651,19 +699,48 @@ function thin(x, y, buckets) {
   return { x: ox, y: oy };
 }
 
+/** Bucket count of thin() for a canvas: one per CSS pixel of its width. */
+function buckets(canvasId) {
+  const sz = cssSize.get(canvasId);
+  return Math.max(50, Math.round(sz ? sz.width : 600));
+}
+
+// The thinned samples of a simulation, kept with it by window and bucket count: a pinned
+// design's curves, or a simulation the memo handed back, are not sliced and thinned again.
+const thinnedOf = new WeakMap();
+/** Samples of sim[key] between t0 and t1 (all of them when t0 is null), thinned to `nb` buckets. */
+function series(sim, key, t0, t1, nb) {
+  let m = thinnedOf.get(sim);
+  if (!m) { m = new Map(); thinnedOf.set(sim, m); }
+  const id = key + ' ' + t0 + ' ' + t1 + ' ' + nb;
+  let s = m.get(id);
+  if (!s) {
+    const w = t0 === null ? { x: sim.t, y: sim[key] } : windowed(sim, key, t0, t1);
+    s = thin(w.x, w.y, nb);
+    m.set(id, s);
+  }
+  return s;
+}
+
 let plotAsObject = false;
+// The spec (JSON text and canvas size) each canvas was last drawn with: a plot whose spec did
+// not change is not drawn again (the canvas keeps its pixels until its size changes).
+const drawn = new Map();
 function plot(spec) {
+  const c = $(spec.canvas);
   try {
-    const sz = cssSize.get(spec.canvas);
-    const buckets = Math.max(50, Math.round(sz ? sz.width : 600));
-    if (spec.kind === 'time') {
-      for (const s of spec.series) { const t = thin(s.x, s.y, buckets); s.x = t.x; s.y = t.y; }
-    }
+    const t0 = performance.now();
+    const text = JSON.stringify(spec);
+    const key = c.width + 'x' + c.height + ' ' + text;
+    lap('plots: spec', t0);
+    if (drawn.get(spec.canvas) === key) return;
+    drawn.delete(spec.canvas);
+    const t1 = performance.now();
     if (plotAsObject) {
       wasm.plot(spec);
     } else {
       try {
-        wasm.plot(JSON.stringify(spec));
+        wasm.plot(text);
       } catch (e) {
         // A boundary that only takes objects: send the object from now on. (A spec field
         // error, "spec.<field>: ...", is a real error and is reported.)
@@ -672,6 +749,8 @@ function plot(spec) {
         wasm.plot(spec);
       }
     }
+    lap('plots: draw', t1);
+    drawn.set(spec.canvas, key);
   } catch (e) {
     showBanners([...(last ? last.banners : []), { kind: 'warn', title: 'Plot ' + spec.canvas, text: errText(e) }]);
   }
@@ -690,31 +769,43 @@ function drawPlots(r) {
   const divLines = r.sim && r.sim.diverged && Number.isFinite(r.sim.diverged_at) ? [{ x: r.sim.diverged_at, label: 'diverged', color: '#D55E00' }] : [];
   for (const id of ['plot-servo', 'plot-load', 'plot-u', 'plot-nyquist']) sizeCanvas($(id));
 
+  const t0 = performance.now();
   const servo = [];
+  let nb = buckets('plot-servo');
   if (r.sim) {
-    const w = windowed(r.sim, 'r', sc.setpoint.time, spEnd);
+    const w = series(r.sim, 'r', sc.setpoint.time, spEnd, nb);
     servo.push({ label: 'r', x: w.x, y: w.y, color: C_REF, dash: 'dash', width: 1.5 });
   }
   for (const run of runs) {
-    const w = windowed(run.sim, 'y', sc.setpoint.time, spEnd);
+    const w = series(run.sim, 'y', sc.setpoint.time, spEnd, nb);
     servo.push({ label: run.label, x: w.x, y: w.y, color: run.color, faint: run.faint });
   }
+  lap('plots: series', t0);
   plot({ canvas: 'plot-servo', kind: 'time', dpr: k, title: 'Set-point response', xlabel: 'time', ylabel: 'y, r', series: servo, xrange: spEnd > sc.setpoint.time ? [sc.setpoint.time, spEnd] : null, vlines: divLines });
 
+  const t1 = performance.now();
   const load = [];
+  nb = buckets('plot-load');
   if (hasLoad) {
     for (const run of runs) {
-      const w = windowed(run.sim, 'y', sc.disturbance.time, sc.t_end);
+      const w = series(run.sim, 'y', sc.disturbance.time, sc.t_end, nb);
       load.push({ label: run.label, x: w.x, y: w.y, color: run.color, faint: run.faint });
     }
     if (r.sim) {
-      const w = windowed(r.sim, 'r', sc.disturbance.time, sc.t_end);
+      const w = series(r.sim, 'r', sc.disturbance.time, sc.t_end, nb);
       load.unshift({ label: 'r', x: w.x, y: w.y, color: C_REF, dash: 'dash', width: 1.5 });
     }
   }
+  lap('plots: series', t1);
   plot({ canvas: 'plot-load', kind: 'time', dpr: k, title: hasLoad ? 'Load response (step at the plant input)' : 'Load response: no load step in this scenario', xlabel: 'time', ylabel: 'y', series: load, xrange: hasLoad ? [sc.disturbance.time, sc.t_end] : [0, 1], vlines: divLines });
 
-  const u = runs.map((run) => ({ label: run.label.replace(/^y/, 'u'), x: run.sim.t, y: run.sim.u, color: run.color, faint: run.faint }));
+  const t2 = performance.now();
+  nb = buckets('plot-u');
+  const u = runs.map((run) => {
+    const w = series(run.sim, 'u', null, null, nb);
+    return { label: run.label.replace(/^y/, 'u'), x: w.x, y: w.y, color: run.color, faint: run.faint };
+  });
+  lap('plots: series', t2);
   plot({ canvas: 'plot-u', kind: 'time', dpr: k, title: 'Control signal', xlabel: 'time', ylabel: 'u', series: u, vlines: divLines });
 
   const ny = [];
@@ -734,7 +825,7 @@ function drawPlots(r) {
     if (r.an && Number.isFinite(r.an.ms) && r.an.ms > 0) circle = { cx: -1, cy: 0, r: 1 / r.an.ms, label: 'Ms circle, r = 1/Ms', color: '#D55E00' };
   }
   plot({ canvas: 'plot-nyquist', kind: 'nyquist', dpr: k, title: 'Nyquist plot of L', xlabel: 'Re L', ylabel: 'Im L', series: ny, circle, points: [{ x: -1, y: 0, label: '−1' }] });
-  $('nyquist-note').hidden = !(r.ctl && r.ctl.model_loop);
+  setHidden($('nyquist-note'), !(r.ctl && r.ctl.model_loop));
 }
 
 function plantTf(p) {
@@ -752,6 +843,11 @@ const METRIC_COLS = [
   ['regulatory', 'iae', 'IAE'], ['regulatory', 'ise', 'ISE'], ['regulatory', 'itae', 'ITAE'], ['regulatory', 'peak_error', 'Peak |e|'], ['regulatory', 'settling_time', 'Settling'], ['regulatory', 'tv', 'TV'],
 ];
 
+const overshootText = (v) => (Math.abs(v) < 1e-9 ? '0' : S.fmt(100 * v, 3)) + ' %';
+
+// The rows the metrics table was built with (label and colour of each); while they stay the
+// same, a render only rewrites the cells whose text changed.
+let metricsRows = '';
 function showMetrics(r) {
   const table = $('metrics');
   const thead = table.tHead;
@@ -766,22 +862,33 @@ function showMetrics(r) {
     const cells = METRIC_COLS.map(([w, k]) => {
       const v = m[w] ? m[w][k] : null;
       // Round-off sized overshoot (|v| < 1e-9) is shown as 0.
-      return el('td', { text: v === null || v === undefined ? '–' : k === 'overshoot' ? (Math.abs(v) < 1e-9 ? '0' : S.fmt(100 * v, 3)) + ' %' : S.fmt(v) });
+      return v === null || v === undefined ? '–' : k === 'overshoot' ? overshootText(v) : S.fmt(v);
     });
-    return el('tr', {}, el('th', { scope: 'row' }, el('span', { class: 'swatch', 'data-color': color }), label), ...cells, el('td', { text: S.fmt(ms) }));
+    cells.push(S.fmt(ms));
+    rows.push({ label, color, cells });
   };
-  pinCache.forEach((p) => rows.push(row(p.label, p.color, p.sim, p.ms)));
-  if (r.simNom) rows.push(row('current, nominal plant', C_CUR, r.simNom, r.an && r.an.ms));
-  rows.push(row(r.simNom ? 'current, true plant' : 'current design', C_CUR, r.sim, (r.anTrue || r.an || {}).ms));
-  table.tBodies[0].replaceChildren(...rows);
+  pinCache.forEach((p) => row(p.label, p.color, p.sim, p.ms));
+  if (r.simNom) row('current, nominal plant', C_CUR, r.simNom, r.an && r.an.ms);
+  row(r.simNom ? 'current, true plant' : 'current design', C_CUR, r.sim, (r.anTrue || r.an || {}).ms);
+  const body = table.tBodies[0];
+  const shape = JSON.stringify(rows.map((x) => [x.label, x.color]));
+  if (shape !== metricsRows || body.rows.length !== rows.length) {
+    metricsRows = shape;
+    body.replaceChildren(...rows.map((x) => el('tr', {}, el('th', { scope: 'row' }, el('span', { class: 'swatch', 'data-color': x.color }), x.label), ...x.cells.map((t) => el('td', { text: t })))));
+    for (const sw of table.querySelectorAll('.swatch')) sw.style.backgroundColor = sw.getAttribute('data-color');
+  } else {
+    rows.forEach((x, i) => {
+      const cells = body.rows[i].cells;
+      x.cells.forEach((t, j) => setText(cells[j + 1], t));
+    });
+  }
   // Text equivalents of the plots for screen readers.
   const m = r.sim && r.sim.metrics ? r.sim.metrics : {};
   const sv = m.servo || {}, rg = m.regulatory || {};
-  $('plot-servo').setAttribute('aria-label', 'Set-point response of y to a step in r: overshoot ' + (typeof sv.overshoot === 'number' ? (Math.abs(sv.overshoot) < 1e-9 ? '0' : S.fmt(100 * sv.overshoot, 3)) + ' %' : '–') + ', settling time ' + S.fmt(sv.settling_time) + ', IAE ' + S.fmt(sv.iae));
-  $('plot-load').setAttribute('aria-label', 'Load response of y to a step at the plant input: peak error ' + S.fmt(rg.peak_error) + ', settling time ' + S.fmt(rg.settling_time) + ', IAE ' + S.fmt(rg.iae));
-  $('plot-u').setAttribute('aria-label', 'Control signal u: total variation ' + S.fmt(sv.tv) + ' (servo), ' + S.fmt(rg.tv) + ' (load)');
-  $('plot-nyquist').setAttribute('aria-label', 'Nyquist plot of L(jω)' + (r.ctl && r.ctl.model_loop ? ' = Cy·P, the feedback loop only (not the set-point model loop),' : '') + ' with the circle of radius 1/Ms around −1; Ms ' + (r.an ? S.fmt(r.an.ms) : '–') + (r.an && r.an.stable === false ? ', closed loop unstable' : ''));
-  for (const s of table.querySelectorAll('.swatch')) s.style.backgroundColor = s.getAttribute('data-color');
+  setAttr($('plot-servo'), 'aria-label', 'Set-point response of y to a step in r: overshoot ' + (typeof sv.overshoot === 'number' ? overshootText(sv.overshoot) : '–') + ', settling time ' + S.fmt(sv.settling_time) + ', IAE ' + S.fmt(sv.iae));
+  setAttr($('plot-load'), 'aria-label', 'Load response of y to a step at the plant input: peak error ' + S.fmt(rg.peak_error) + ', settling time ' + S.fmt(rg.settling_time) + ', IAE ' + S.fmt(rg.iae));
+  setAttr($('plot-u'), 'aria-label', 'Control signal u: total variation ' + S.fmt(sv.tv) + ' (servo), ' + S.fmt(rg.tv) + ' (load)');
+  setAttr($('plot-nyquist'), 'aria-label', 'Nyquist plot of L(jω)' + (r.ctl && r.ctl.model_loop ? ' = Cy·P, the feedback loop only (not the set-point model loop),' : '') + ' with the circle of radius 1/Ms around −1; Ms ' + (r.an ? S.fmt(r.an.ms) : '–') + (r.an && r.an.stable === false ? ', closed loop unstable' : ''));
 }
 
 // Display symbols of the named structure parameters (the papers' notation); unknown names
@@ -802,9 +909,38 @@ function plantTfText(p) {
   return tfText(t) + (t.delay ? ' · e^(−' + S.fmt(t.delay) + 's)' : '');
 }
 
+/** A value of the rule's output as text (numbers to 5 digits, objects as short JSON). */
+function detailText(v) {
+  if (typeof v === 'number') return S.fmt(v, 5);
+  if (typeof v === 'string' || typeof v === 'boolean') return String(v);
+  if (v === null) return '–';
+  const text = JSON.stringify(v, (kk, vv) => (typeof vv === 'number' ? Number(vv.toPrecision(5)) : vv));
+  return text.length > 300 ? text.slice(0, 300) + '…' : text;
+}
+
+/** Shows [name, text] pairs in a <dl>: rebuilt when the names change, else only changed texts are written. */
+function fillDl(dl, entries) {
+  const kids = dl.children;
+  let same = kids.length === 2 * entries.length;
+  for (let i = 0; same && i < entries.length; i++) same = kids[2 * i].title === entries[i][0];
+  if (!same) {
+    dl.replaceChildren(...entries.flatMap(([k, text]) => [el('dt', { text: SYMBOLS[k] || k, title: k }), el('dd', { text })]));
+    return;
+  }
+  entries.forEach(([, text], i) => setText(kids[2 * i + 1], text));
+}
+
+/** Shows texts as the items of a list, rebuilding it only when they change. */
+function fillList(ul, texts) {
+  const kids = ul.children;
+  if (kids.length === texts.length && texts.every((t, i) => kids[i].textContent === t)) return;
+  ul.replaceChildren(...texts.map((t) => el('li', { text: t })));
+}
+
+let shownDetails; // the tune details the rule's <dl> and warnings show
 function showController(r) {
   const info = methodInfo(state.method);
-  $('ctl-structure').textContent = info ? info.title + ' — ' + info.structure : state.method === '__literal' && state.literal ? 'Literal controller: ' + (state.literal.title || '') : '';
+  setText($('ctl-structure'), info ? info.title + ' — ' + info.structure : state.method === '__literal' && state.literal ? 'Literal controller: ' + (state.literal.title || '') : '');
   // What a printout needs to be read on its own: the plant, the method and its parameters.
   const pl = state.plant;
   const plantText = pl.family
@@ -812,49 +948,45 @@ function showController(r) {
     : 'P(s) = (' + S.polyText(pl.num) + ') / (' + S.polyText(pl.den) + ') · e^(−' + S.fmt(pl.delay) + 's)';
   const ml = r.ctl && r.ctl.model_loop;
   const pert = S.isPerturbed(state.pert) ? '; true plant perturbed: ' + Object.entries(state.pert).filter(([, v]) => v !== 0).map(([k, v]) => k + ' ' + (v > 0 ? '+' : '') + v + ' %').join(', ') + (ml ? ' (the controller\'s internal model stays nominal)' : '') : '';
-  $('print-summary').textContent = 'Plant: ' + plantText + pert + '. Controller: ' + pinLabel() + (ml ? ', with a set-point model loop on P_m(s) = ' + plantTfText(ml.plant) : '') + '.';
-  $('ctl-cite').textContent = info ? info.citation : (PRESETS.find((p) => p.id === state.preset) || {}).citation || '';
-  const named = $('ctl-named');
-  named.replaceChildren();
-  const det = $('ctl-details');
-  det.replaceChildren();
-  const warn = $('ctl-warnings');
-  warn.replaceChildren();
-  $('ctl-model').hidden = !ml;
-  if (!r.ctl) { $('ctl-cr').textContent = '–'; $('ctl-cy').textContent = '–'; return; }
-  $('ctl-cr').textContent = tfText(r.ctl.cr);
-  $('ctl-cy').textContent = tfText(r.ctl.cy);
-  if (ml) {
-    $('ctl-model-plant').textContent = plantTfText(ml.plant);
-    $('ctl-model-cr').textContent = tfText(ml.cr);
-    $('ctl-model-cy').textContent = tfText(ml.cy);
+  setText($('print-summary'), 'Plant: ' + plantText + pert + '. Controller: ' + pinLabel() + (ml ? ', with a set-point model loop on P_m(s) = ' + plantTfText(ml.plant) : '') + '.');
+  setText($('ctl-cite'), info ? info.citation : (PRESETS.find((p) => p.id === state.preset) || {}).citation || '');
+  setHidden($('ctl-model'), !ml);
+  const details = r.ctl && r.tune && r.tune.details ? r.tune.details : null;
+  if (details !== shownDetails) {
+    shownDetails = details;
+    const det = [];
+    const warns = [];
+    for (const [k, v] of Object.entries(details || {})) {
+      if (k === 'warnings' && Array.isArray(v)) v.forEach((w) => warns.push(String(w)));
+      else det.push([k, detailText(v)]);
+    }
+    fillDl($('ctl-details'), det);
+    fillList($('ctl-warnings'), warns);
   }
-  const show = (dl, k, v) => {
-    let text;
-    if (typeof v === 'number') text = S.fmt(v, 5);
-    else if (typeof v === 'string' || typeof v === 'boolean') text = String(v);
-    else if (v === null) text = '–';
-    else {
-      text = JSON.stringify(v, (kk, vv) => (typeof vv === 'number' ? Number(vv.toPrecision(5)) : vv));
-      if (text.length > 300) text = text.slice(0, 300) + '…';
-    }
-    dl.append(el('dt', { text: SYMBOLS[k] || k, title: k }), el('dd', { text }));
-  };
-  for (const [k, v] of Object.entries(r.ctl)) if (k !== 'cr' && k !== 'cy' && k !== 'model_loop' && k !== 'title') show(named, k, v);
-  if (r.tune && r.tune.details) {
-    for (const [k, v] of Object.entries(r.tune.details)) {
-      if (k === 'warnings' && Array.isArray(v)) v.forEach((w) => warn.append(el('li', { text: String(w) })));
-      else show(det, k, v);
-    }
+  if (!r.ctl) {
+    fillDl($('ctl-named'), []);
+    setText($('ctl-cr'), '–');
+    setText($('ctl-cy'), '–');
+    return;
+  }
+  setText($('ctl-cr'), tfText(r.ctl.cr));
+  setText($('ctl-cy'), tfText(r.ctl.cy));
+  if (ml) {
+    setText($('ctl-model-plant'), plantTfText(ml.plant));
+    setText($('ctl-model-cr'), tfText(ml.cr));
+    setText($('ctl-model-cy'), tfText(ml.cy));
+  }
+  fillDl($('ctl-named'), Object.entries(r.ctl).filter(([k]) => k !== 'cr' && k !== 'cy' && k !== 'model_loop' && k !== 'title').map(([k, v]) => [k, detailText(v)]));
+  if (details) {
     // Automatic parameters: show the value the rule chose.
     for (const row of document.querySelectorAll('#method-params .row')) {
       const n = row.autoParam;
       if (!n || typeof state.params[n] === 'number') continue;
-      const v = typeof r.ctl[n] === 'number' ? r.ctl[n] : r.tune.details[n];
+      const v = typeof r.ctl[n] === 'number' ? r.ctl[n] : details[n];
       if (typeof v === 'number' && Number.isFinite(v) && row.setValue) row.setValue(v);
     }
     // With a target Ms the rule reports the solved λ: show it on the (disabled) λ slider.
-    const lam = r.tune.details.lambda ?? (r.ctl.lambda);
+    const lam = details.lambda ?? (r.ctl.lambda);
     const row = document.querySelector('[data-key="mp-lambda"]');
     if (state.target !== null && typeof lam === 'number' && row && row.setValue) row.setValue(lam);
   }
@@ -1039,7 +1171,7 @@ async function main() {
         if (!old || old.width !== sz.width || old.height !== sz.height) any = true;
         cssSize.set(e.target.id, sz);
       }
-      if (any) changed();
+      if (any) changed(true);
     });
     for (const c of document.querySelectorAll('.plot canvas')) ro.observe(c);
   }
