@@ -23,7 +23,7 @@ import { fileURLToPath, pathToFileURL } from 'node:url';
 import * as S from '../www/state.js';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
-const dist = join(root, 'dist', 'pidlab.html');
+const dist = process.env.PIDLAB_PAGE ? resolve(process.env.PIDLAB_PAGE) : join(root, 'dist', 'pidlab.html');
 const args = process.argv.slice(2);
 let n = 120;
 let trace = false;
@@ -74,7 +74,7 @@ function summarizeTrace(events) {
   const marks = events.filter((e) => /^pidlab-(in|painted)-\d+$/.test(e.name));
   if (!marks.length) return null;
   const main = marks[0].pid + ':' + marks[0].tid;
-  const X = events.filter((e) => e.ph === 'X' && e.pid + ':' + e.tid === main);
+  const X = events.filter((e) => e.ph === 'X' && e.pid + ':' + e.tid === main).sort((u, v) => u.ts - v.ts);
   const byIdx = new Map();
   for (const m of marks) {
     const [, kind, i] = m.name.match(/^pidlab-(in|painted)-(\d+)$/);
@@ -94,10 +94,20 @@ function summarizeTrace(events) {
     if (!a || !b) continue;
     const row = {};
     for (const [g, names] of Object.entries(groups)) {
-      row[g] = X.filter((e) => names.includes(e.name) && e.ts >= a && e.ts < b).reduce((s, e) => s + e.dur / 1000, 0);
+      // Outermost events only (Paint nests inside Paint, one per paint layer).
+      let end = -1;
+      row[g] = 0;
+      row[g + ' cpu'] = 0;
+      for (const e of X) {
+        if (!names.includes(e.name) || e.ts < a || e.ts >= b || e.ts < end) continue;
+        row[g] += e.dur / 1000;
+        row[g + ' cpu'] += (e.tdur ?? e.dur) / 1000;
+        end = e.ts + e.dur;
+      }
     }
     const bmf = X.find((e) => e.name === 'ProxyMain::BeginMainFrame' && e.ts >= a && e.ts < b);
     row['wait for the frame'] = bmf ? (bmf.ts - a) / 1000 : NaN;
+    row['main thread cpu'] = Object.keys(groups).reduce((s, g) => s + row[g + ' cpu'], 0);
     rows.push(row);
   }
   return rows;
@@ -233,7 +243,11 @@ for (const sl of SLIDERS) {
     console.log('  stages (p50 / p95 ms): ' + Object.entries(x.phases).map(([k, v]) => `${k} ${f(q(v, 0.5))}/${f(q(v, 0.95))}`).join(', '));
   }
   if (tr) {
-    console.log('trace, main thread per event (p50 / p95 ms; tracing itself slows the page): ' + Object.keys(tr[0] || {}).map((k) => `${k} ${f(q(tr.map((x) => x[k]), 0.5))}/${f(q(tr.map((x) => x[k]), 0.95))}`).join(', '));
+    const line = (keys) => keys.map((k) => `${k.replace(/ cpu$/, '')} ${f(q(tr.map((x) => x[k]), 0.5))}/${f(q(tr.map((x) => x[k]), 0.95))}`).join(', ');
+    const keys = Object.keys(tr[0] || {});
+    console.log('trace of synthetic events, renderer main thread per event, p50/p95 ms (tracing slows the page):');
+    console.log('  wall: ' + line(keys.filter((k) => !k.endsWith(' cpu') && k !== 'main thread cpu')));
+    console.log('  cpu:  ' + line(keys.filter((k) => k.endsWith(' cpu'))));
   }
 }
 await ctx.close();
