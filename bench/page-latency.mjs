@@ -83,7 +83,7 @@ function summarizeTrace(events) {
     byIdx.set(i, o);
   }
   const groups = {
-    script: ['FireAnimationFrame'],
+    script: ['FireAnimationFrame', 'EventDispatch'], // the page renders in either
     'style+layout': ['UpdateLayoutTree', 'Layout'],
     'prepaint+paint': ['PrePaint', 'Paint'],
     'commit (incl. wait)': ['Commit'],

@@ -488,7 +488,7 @@ function changed(deferred = false) {
   pending = true;
   requestAnimationFrame(() => {
     pending = false;
-    render();
+    render(true);
   });
 }
 
@@ -573,7 +573,13 @@ function compute() {
   return r;
 }
 
-function render() {
+/**
+ * One update: compute, then what the frame must show at once (banners, readouts, plots). The
+ * metrics table and the controller section follow in a task after that frame has been painted
+ * (same numbers, one frame later): their text and layout no longer delay the plots.
+ * `inFrame`: called from an animation-frame callback.
+ */
+function render(inFrame = false) {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
   let r;
@@ -584,10 +590,8 @@ function render() {
     showReadouts(r);
     const t1 = performance.now();
     drawPlots(r);
-    const t2 = lap('plots', t1);
-    showMetrics(r);
-    showController(r);
-    lap('tables', t2);
+    lap('plots', t1);
+    afterPaint(inFrame);
   } catch (e) {
     showBanners([{ kind: 'error', title: 'Internal error', text: errText(e) }]);
   }
@@ -597,6 +601,35 @@ function render() {
   perf.works.push(dt);
   if (perf.works.length > 1000) perf.works.shift();
   saveHashSoon();
+}
+
+// The secondary update (tables) of the latest render, in a task after the next painted frame;
+// renders before it runs are coalesced into one.
+let tablesDue = false;
+function afterPaint(inFrame) {
+  if (tablesDue) return;
+  tablesDue = true;
+  const post = () => {
+    const ch = new MessageChannel();
+    ch.port1.onmessage = showTables;
+    ch.port2.postMessage(0);
+  };
+  // A task posted from a frame callback runs after that frame; otherwise wait for the frame.
+  if (inFrame) post();
+  else requestAnimationFrame(post);
+}
+
+function showTables() {
+  tablesDue = false;
+  if (!last) return;
+  const t0 = performance.now();
+  try {
+    showMetrics(last);
+    showController(last);
+  } catch (e) {
+    showBanners([...last.banners, { kind: 'error', title: 'Internal error', text: errText(e) }]);
+  }
+  perf.phases['tables (after the frame)'] = performance.now() - t0;
 }
 
 // ---------------------------------------------------------------- output
@@ -722,6 +755,26 @@ function series(sim, key, t0, t1, nb) {
   return s;
 }
 
+// JSON text of sample arrays, kept with the array: the curves of pinned designs and of
+// memoized simulations are serialized once, not on every render.
+const jsonOf = new WeakMap();
+function arrayText(a) {
+  let t = jsonOf.get(a);
+  if (t === undefined) {
+    t = JSON.stringify(a);
+    jsonOf.set(a, t);
+  }
+  return t;
+}
+
+/** The JSON text of a plot spec (as JSON.stringify, with each series' x and y placed last). */
+function specText(spec) {
+  const open = (o) => { const t = JSON.stringify(o); return t === '{}' ? '{' : t.slice(0, -1) + ','; };
+  const series = spec.series.map(({ x, y, ...rest }) => open(rest) + '"x":' + arrayText(x) + ',"y":' + arrayText(y) + '}');
+  const { series: _, ...head } = spec;
+  return open(head) + '"series":[' + series.join(',') + ']}';
+}
+
 let plotAsObject = false;
 // The spec (JSON text and canvas size) each canvas was last drawn with: a plot whose spec did
 // not change is not drawn again (the canvas keeps its pixels until its size changes).
@@ -730,7 +783,7 @@ function plot(spec) {
   const c = $(spec.canvas);
   try {
     const t0 = performance.now();
-    const text = JSON.stringify(spec);
+    const text = specText(spec);
     const key = c.width + 'x' + c.height + ' ' + text;
     lap('plots: spec', t0);
     if (drawn.get(spec.canvas) === key) return;
