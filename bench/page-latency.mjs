@@ -3,17 +3,25 @@
 //
 //   node bench/page-latency.mjs                 # every slider, 120 events each
 //   node bench/page-latency.mjs --n 200 lambda  # one slider, 200 events
-//   node bench/page-latency.mjs --trace         # also a Chrome trace per slider: main-thread
-//                                               # time per frame in script, style/layout,
-//                                               # paint, commit and GC
+//   node bench/page-latency.mjs --trace         # also a Chrome trace per slider: renderer
+//                                               # main-thread time per event in script,
+//                                               # style/layout, paint, commit and GC
+//   PIDLAB_PAGE=other.html node bench/page-latency.mjs   # another build of the page
 //
 // Needs dist/pidlab.html (bash scripts/page.sh --no-serve) and Debian's /usr/bin/chromium
-// (override with PIDLAB_CHROMIUM). Each slider gets a fresh page; 10 warm-up events are not
-// counted. An event is one `input` event on the slider, sent from a task right after the
-// previous event's frame was painted (the browser test does the same for λ):
-//   work    = the page's own time in its update (window.__pidlab.perf.lastWorkMs);
-//   frame   = input event -> end of the animation frame that redraws;
-//   painted = input event -> the first task after that frame (its pixels are committed).
+// (override with PIDLAB_CHROMIUM). Each slider gets a fresh page; warm-up events are not
+// counted. Three ways of moving a slider:
+//   - synthetic `input` events, each sent from a task right after the previous event's frame
+//     was painted (what the browser test does for λ). This phase-locks to the frame clock: the
+//     page's own work overlaps the wait for the next frame, so `frame` and `painted` are about
+//     one frame interval whatever the work costs, as long as it fits;
+//   - the same events sent at a random time in the frame interval (a key press, a typed number);
+//   - a mouse drag of the thumb (Chromium delivers pointer moves at the start of a frame, so the
+//     update runs in that frame): what a person dragging the slider sees. Times from the
+//     move's own timeStamp.
+// For each: work    = the page's own time in its update (window.__pidlab.perf.lastWorkMs);
+//           frame   = input -> end of the animation frame that shows the update;
+//           painted = input -> the first task after that frame (its pixels are committed).
 // The stages are the page's own performance.now() laps (window.__pidlab.perf.phases).
 import { chromium } from 'playwright-core';
 import { existsSync, mkdtempSync, rmSync } from 'node:fs';
@@ -27,10 +35,12 @@ const dist = process.env.PIDLAB_PAGE ? resolve(process.env.PIDLAB_PAGE) : join(r
 const args = process.argv.slice(2);
 let n = 120;
 let trace = false;
+let json = false;
 const only = [];
 for (let i = 0; i < args.length; i++) {
   if (args[i] === '--n') n = Number(args[++i]);
   else if (args[i] === '--trace') trace = true;
+  else if (args[i] === '--json') json = true; // also print every result as one JSON line at the end
   else only.push(args[i]);
 }
 if (!existsSync(dist)) {
@@ -131,12 +141,14 @@ async function run(sl) {
   }
   await page.waitForTimeout(300);
   const values = (count, warm) => Array.from({ length: warm + count }, (_, i) => sl.v(i < warm ? i + count - warm : i - warm, count));
-  const loop = (count, warm, mark) => page.evaluate(async ([sel, vals, count, warm, mark]) => {
+  const loop = (count, warm, mark, jitter = false) => page.evaluate(async ([sel, vals, count, warm, mark, jitter]) => {
     const x = document.querySelector(sel);
     const perf = window.__pidlab.perf;
     const out = { frame: [], painted: [], work: [], phases: {} };
     for (let i = 0; i < warm + count; i++) {
       const keep = i >= warm;
+      // At a random time in the frame interval (a key press, a typed number), not right after a paint.
+      if (jitter) await new Promise((res) => setTimeout(res, Math.random() * 16.7));
       const t0 = performance.now();
       if (mark && keep) performance.mark('pidlab-in-' + i);
       x.value = String(vals[i]);
@@ -158,8 +170,9 @@ async function run(sl) {
       for (const k of Object.keys(perf.phases)) delete perf.phases[k];
     }
     return out;
-  }, [sl.sel, values(count, warm), count, warm, mark]);
+  }, [sl.sel, values(count, warm), count, warm, mark, jitter]);
   const r = await loop(n, 10, false);
+  const k = await loop(n, 10, false, true);
   const d = await drag(page, sl, n, 10);
   let tr = null;
   if (trace) {
@@ -175,7 +188,7 @@ async function run(sl) {
     await cdp.detach();
   }
   await page.close();
-  return { r, d, tr, errors };
+  return { r, k, d, tr, errors };
 }
 
 /**
@@ -232,12 +245,16 @@ async function drag(page, sl, count, warm) {
   return out;
 }
 
+const results = {};
 for (const sl of SLIDERS) {
   if (only.length && !only.includes(sl.name)) continue;
-  const { r, d, tr, errors } = await run(sl);
+  const { r, k, d, tr, errors } = await run(sl);
+  const sum = (x) => Object.fromEntries(['work', 'frame', 'painted'].map((m) => [m, [q(x[m], 0.5), q(x[m], 0.95)]]));
+  results[sl.name] = { synthetic: sum(r), random: sum(k), drag: sum(d) };
+  if (tr) results[sl.name].mainThreadCpu = [q(tr.map((x) => x['main thread cpu']), 0.5), q(tr.map((x) => x['main thread cpu']), 0.95)];
   console.log(`\n## ${sl.name}: ${sl.what}`);
   if (errors.length) console.log('page errors: ' + errors.join(' | '));
-  for (const [mode, x] of [['synthetic input events (as the browser test)', r], [`mouse drag (${d.work.length} moves that changed the value)`, d]]) {
+  for (const [mode, x] of [['synthetic input events right after the previous paint (as the browser test)', r], ['synthetic input events at a random time in the frame', k], [`mouse drag (${d.work.length} moves that changed the value)`, d]]) {
     console.log(mode + ':');
     for (const k of ['work', 'frame', 'painted']) console.log(`  ${k.padEnd(8)} p50 ${f(q(x[k], 0.5))} ms  p95 ${f(q(x[k], 0.95))} ms`);
     console.log('  stages (p50 / p95 ms): ' + Object.entries(x.phases).map(([k, v]) => `${k} ${f(q(v, 0.5))}/${f(q(v, 0.95))}`).join(', '));
@@ -250,5 +267,6 @@ for (const sl of SLIDERS) {
     console.log('  cpu:  ' + line(keys.filter((k) => k.endsWith(' cpu'))));
   }
 }
+if (json) console.log(JSON.stringify(results));
 await ctx.close();
 rmSync(profile, { recursive: true, force: true });

@@ -784,7 +784,7 @@ function plot(spec) {
   try {
     const t0 = performance.now();
     const text = specText(spec);
-    const key = c.width + 'x' + c.height + ' ' + text;
+    const key = (c ? c.width + 'x' + c.height : '') + ' ' + text;
     lap('plots: spec', t0);
     if (drawn.get(spec.canvas) === key) return;
     drawn.delete(spec.canvas);
