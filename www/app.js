@@ -488,7 +488,7 @@ function changed(deferred = false) {
   pending = true;
   requestAnimationFrame(() => {
     pending = false;
-    render(true);
+    render();
   });
 }
 
@@ -573,13 +573,7 @@ function compute() {
   return r;
 }
 
-/**
- * One update: compute, then what the frame must show at once (banners, readouts, plots). The
- * metrics table and the controller section follow in a task after that frame has been painted
- * (same numbers, one frame later): their text and layout no longer delay the plots.
- * `inFrame`: called from an animation-frame callback.
- */
-function render(inFrame = false) {
+function render() {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
   let r;
@@ -590,8 +584,10 @@ function render(inFrame = false) {
     showReadouts(r);
     const t1 = performance.now();
     drawPlots(r);
-    lap('plots', t1);
-    afterPaint(inFrame);
+    const t2 = lap('plots', t1);
+    showMetrics(r);
+    showController(r);
+    lap('tables', t2);
   } catch (e) {
     showBanners([{ kind: 'error', title: 'Internal error', text: errText(e) }]);
   }
@@ -601,35 +597,6 @@ function render(inFrame = false) {
   perf.works.push(dt);
   if (perf.works.length > 1000) perf.works.shift();
   saveHashSoon();
-}
-
-// The secondary update (tables) of the latest render, in a task after the next painted frame;
-// renders before it runs are coalesced into one.
-let tablesDue = false;
-function afterPaint(inFrame) {
-  if (tablesDue) return;
-  tablesDue = true;
-  const post = () => {
-    const ch = new MessageChannel();
-    ch.port1.onmessage = showTables;
-    ch.port2.postMessage(0);
-  };
-  // A task posted from a frame callback runs after that frame; otherwise wait for the frame.
-  if (inFrame) post();
-  else requestAnimationFrame(post);
-}
-
-function showTables() {
-  tablesDue = false;
-  if (!last) return;
-  const t0 = performance.now();
-  try {
-    showMetrics(last);
-    showController(last);
-  } catch (e) {
-    showBanners([...last.banners, { kind: 'error', title: 'Internal error', text: errText(e) }]);
-  }
-  perf.phases['tables (after the frame)'] = performance.now() - t0;
 }
 
 // ---------------------------------------------------------------- output
