@@ -54,7 +54,7 @@ const pk = (lambda) => ({ method: 'praveen_kumar', params: { lambda, epsilon: 0.
 // name, state, slider, value of event i (of count)
 const SLIDERS = [
   { name: 'lambda', what: 'λ (praveen_kumar, boiler)', st: state(pk(1.0)), sel: '#mp-lambda', range: [0.5, 1.9] },
-  { name: 'theta', what: 'plant θ (praveen_kumar λ = 1.2)', st: state(pk(1.2)), sel: '#fp-theta', range: [0.05, 1.0] },
+  { name: 'theta', what: 'plant θ (praveen_kumar λ = 0.8)', st: state(pk(0.8)), sel: '#fp-theta', range: [0.05, 1.0] },
   { name: 'zeta', what: 'ζ (arvanitis_alg1, boiler)', st: state({ method: 'arvanitis_alg1', params: { zeta: 0.6 } }), sel: '#mp-zeta', range: [0.4, 1.0] },
   { name: 'epsilon', what: 'ε (praveen_kumar λ = 1.2)', st: state(pk(1.2)), sel: '#mp-epsilon', range: [0.05, 0.95] },
   { name: 'pert', what: 'perturbation θ % (λ = 1.2, k +20 %)', st: state({ ...pk(1.2), pert: { k: 20, tau: 0, zero: 0, theta: 0 } }), sel: '#pt-theta', range: [-40, 40] },
