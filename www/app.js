@@ -28,6 +28,7 @@ let state = S.defaultState();
 let embed = false;
 let last = null; // last computed results
 let pinCache = []; // simulated pins (parallel to state.pins)
+let pinScenarioKey = ''; // the scenario pinCache was simulated with
 let pending = false;
 // Per render: the time of each stage (performance.now() laps; a stage that did not run is absent).
 const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {} };
@@ -777,6 +778,7 @@ function plot(spec) {
 }
 
 function drawPlots(r) {
+  ensurePins();
   const sc = state.scenario;
   const hasLoad = sc.disturbance.size !== 0 && sc.disturbance.time < sc.t_end;
   const spEnd = hasLoad && sc.disturbance.time > sc.setpoint.time ? sc.disturbance.time : sc.t_end;
@@ -1033,8 +1035,17 @@ function simulatePin(p, i) {
   return out;
 }
 
+// Pinned designs are compared under the current scenario: re-simulated when it changes.
+function ensurePins() {
+  const key = JSON.stringify(state.scenario);
+  if (key === pinScenarioKey) return;
+  pinCache = state.pins.map(simulatePin);
+  pinScenarioKey = key;
+}
+
 function refreshPins() {
   pinCache = state.pins.map(simulatePin);
+  pinScenarioKey = JSON.stringify(state.scenario);
   const list = $('pin-list');
   list.replaceChildren();
   $('pins').hidden = state.pins.length === 0;

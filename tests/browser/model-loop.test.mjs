@@ -228,6 +228,11 @@ test('overlaying the example pins the Ajmeri & Ali setting with its model loop',
   assert.ok(pin.controller.model_loop, 'with its model loop');
   const rows = await metricRows(page);
   assert.ok(Math.abs(Number(rows[title][0]) - 9.06) <= 0.01, `pinned servo IAE ${rows[title][0]}`);
+  // Pins are compared under the current scenario: a set-point step of 2 doubles the pinned
+  // servo IAE (the loop is linear and the step at 0 is the only servo event).
+  await setInput(page, '#sc-sp_size', 2);
+  const rows2 = await metricRows(page);
+  assert.ok(Math.abs(Number(rows2[title][0]) - 2 * 9.0599) <= 0.01, `pinned servo IAE after the scenario change ${rows2[title][0]}`);
   assert.deepEqual(log.errors, []);
   await page.close();
 });
