@@ -26,7 +26,7 @@
 //! the ideal derivative of Eq. (4): only simulable on a strictly proper plant (e.g. the
 //! higher-order processes of Examples 2 and 3 the model was reduced from).
 //!
-//! **Model reduction** ([`reduce_to_fopdt_ir`]): the paper's reference [14] (Seborg et al.),
+//! **Model reduction** ([`reduce_to_fopdt_ir`]): the paper's reference \[14\] (Seborg et al.),
 //! first-order Taylor approximations of the smaller lags, reproduces the printed models of
 //! Examples 2 and 3.
 
