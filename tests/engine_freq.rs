@@ -156,6 +156,21 @@ fn solve_for_ms_hits_the_target() {
     .unwrap();
     let a = analyze(&p, &Pid::parallel(k, 0.0, 0.0).to_controller().unwrap()).unwrap();
     assert!((a.ms.unwrap() - 1.8).abs() < 1e-8);
+    // a bracket reaching into the unstable range (K > π/2 gives Ms = ∞ to the solver): the
+    // regula-falsi steps fall back to bisection there and still land on the target
+    for target in [3.0, 8.0] {
+        let k = solve_for_ms(target, 0.05, 3.0, |k| {
+            Ok((p.clone(), Pid::parallel(k, 0.0, 0.0).to_controller()?))
+        })
+        .unwrap();
+        assert!(k < std::f64::consts::FRAC_PI_2);
+        let a = analyze(&p, &Pid::parallel(k, 0.0, 0.0).to_controller().unwrap()).unwrap();
+        assert!(
+            (a.ms.unwrap() - target).abs() < 1e-8,
+            "{target}: {:?}",
+            a.ms
+        );
+    }
     assert!(solve_for_ms(0.5, 0.05, 1.5, |k| Ok((
         p.clone(),
         Pid::parallel(k, 0.0, 0.0).to_controller()?
