@@ -9,9 +9,39 @@ use serde_json::Value;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
+/// Shortest all-number array converted through a `Float64Array` (one copy and one
+/// `Array.from`) instead of element by element.
+const TYPED_MIN: usize = 32;
+
+/// JSON → plain JS (objects, arrays of numbers, …) as `serde_wasm_bindgen`'s JSON-compatible
+/// serializer makes it, but long arrays of numbers (the simulation's samples, Nyquist points)
+/// cross the boundary in one copy: a real `Array` of numbers all the same (API.md `number[]`).
 fn to_js(v: &Value) -> Result<JsValue, JsError> {
-    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
-        .map_err(|e| JsError::new(&format!("output: {e}")))
+    match v {
+        Value::Array(a) if a.len() >= TYPED_MIN && a.iter().all(Value::is_number) => {
+            let xs: Vec<f64> = a.iter().map(|x| x.as_f64().unwrap_or(f64::NAN)).collect();
+            let typed = js_sys::Float64Array::from(&xs[..]);
+            Ok(js_sys::Array::from(&typed).into())
+        }
+        Value::Array(a) => {
+            let out = js_sys::Array::new_with_length(a.len() as u32);
+            for (i, x) in a.iter().enumerate() {
+                out.set(i as u32, to_js(x)?);
+            }
+            Ok(out.into())
+        }
+        Value::Object(m) => {
+            let out = js_sys::Object::new();
+            for (k, x) in m {
+                js_sys::Reflect::set(&out, &JsValue::from_str(k), &to_js(x)?)
+                    .map_err(|_| JsError::new(&format!("output: cannot set field {k}")))?;
+            }
+            Ok(out.into())
+        }
+        _ => v
+            .serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+            .map_err(|e| JsError::new(&format!("output: {e}"))),
+    }
 }
 
 /// Deepest nesting accepted at the boundary (a cyclic object hits it too).
