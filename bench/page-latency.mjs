@@ -23,12 +23,12 @@
 //           frame   = input -> end of the animation frame that shows the update;
 //           painted = input -> the first task after that frame (its pixels are committed).
 // The stages are the page's own performance.now() laps (window.__pidlab.perf.phases).
-import { chromium } from 'playwright-core';
-import { existsSync, mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir, cpus, loadavg } from 'node:os';
+import { existsSync } from 'node:fs';
+import { cpus, loadavg } from 'node:os';
 import { join, resolve, dirname } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import * as S from '../www/state.js';
+import { launch } from '../tests/browser/harness.mjs';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const dist = process.env.PIDLAB_PAGE ? resolve(process.env.PIDLAB_PAGE) : join(root, 'dist', 'pidlab.html');
@@ -69,13 +69,8 @@ const q = (a, p) => {
 };
 const f = (x) => (Number.isFinite(x) ? x.toFixed(2) : '–');
 
-const profile = mkdtempSync(join(tmpdir(), 'pidlab-bench-'));
-const ctx = await chromium.launchPersistentContext(profile, {
-  executablePath: process.env.PIDLAB_CHROMIUM || '/usr/bin/chromium',
-  headless: true,
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  viewport: { width: 1280, height: 900 },
-});
+const browser = await launch({ requirePage: false });
+const ctx = browser.ctx;
 const version = ctx.browser() ? ctx.browser().version() : '';
 console.log(`# page latency: ${n} events per slider, headless Chromium ${version}, viewport 1280×900, ${cpus().length} cores, load average ${loadavg().map((x) => x.toFixed(1)).join(' ')}`);
 
@@ -271,5 +266,4 @@ for (const sl of SLIDERS) {
   }
 }
 if (json) console.log(JSON.stringify(results));
-await ctx.close();
-rmSync(profile, { recursive: true, force: true });
+await browser.close();

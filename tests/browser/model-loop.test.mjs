@@ -4,18 +4,11 @@
 // Chromium: /usr/bin/chromium (override with PIDLAB_CHROMIUM).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdtempSync, rmSync, existsSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join, resolve, dirname } from 'node:path';
-import { fileURLToPath, pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
 import * as S from '../../www/state.js';
+import * as H from './harness.mjs';
+import { frames, setInput, ready } from './harness.mjs';
 
-const root = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
-const dist = join(root, 'dist', 'pidlab.html');
-const pageUrl = pathToFileURL(dist).href;
-let ctx;
-let profile;
+let browser;
 
 const PRESET = 'medarametla2018/ex1/ajmeri-ali';
 // Example 1: K e^{-5s}/s with K = 0.05; Ajmeri & Ali's set-point PD kp = 2.9933, kd = 7.1189.
@@ -24,57 +17,15 @@ const K = 0.05, KP = 2.9933, KD = 7.1189;
 const IAE_CLOSED_FORM = (1 + K * KD) / (K * KP);
 
 before(async () => {
-  assert.ok(existsSync(dist), 'dist/pidlab.html missing: run scripts/build-page.sh first');
-  profile = mkdtempSync(join(tmpdir(), 'pidlab-chromium-'));
-  ctx = await chromium.launchPersistentContext(profile, {
-    executablePath: process.env.PIDLAB_CHROMIUM || '/usr/bin/chromium',
-    headless: true,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-    viewport: { width: 1280, height: 900 },
-  });
+  browser = await H.launch();
 });
 
 after(async () => {
-  if (ctx) await ctx.close();
-  if (profile) rmSync(profile, { recursive: true, force: true });
+  if (browser) await browser.close();
 });
 
-/** Opens the page; records console errors, page errors and every request that is not local. */
-async function open(hash = '') {
-  const page = await ctx.newPage();
-  const log = { errors: [], blocked: [] };
-  page.on('console', (m) => { if (m.type() === 'error') log.errors.push(m.text()); });
-  page.on('pageerror', (e) => log.errors.push(String(e)));
-  await page.route('**/*', (route) => {
-    const u = route.request().url();
-    if (/^(file|data|blob):/.test(u)) return route.continue();
-    log.blocked.push(u);
-    return route.abort();
-  });
-  await page.goto(pageUrl + hash);
-  await ready(page);
-  return { page, log };
-}
-
-async function ready(page) {
-  await page.waitForSelector('body[data-ready="1"]', { timeout: 20000 });
-  await frames(page);
-}
-
-/** Waits until the app's pending animation-frame render has run. */
-async function frames(page) {
-  await page.evaluate(() => new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(() => res()))));
-}
-
-async function setInput(page, sel, value, ev = 'input') {
-  await page.evaluate(([s, v, e]) => {
-    const x = document.querySelector(s);
-    if (!x) throw new Error('no element ' + s);
-    x.value = String(v);
-    x.dispatchEvent(new Event(e, { bubbles: true }));
-  }, [sel, value, ev]);
-  await frames(page);
-}
+/** Opens the page (see harness.mjs: console/page errors, requests, non-local ones aborted). */
+const open = (hash = '') => H.open(browser.ctx, hash);
 
 /** The metrics table: { row label: [servo IAE, ..., Ms] } as shown. */
 async function metricRows(page) {

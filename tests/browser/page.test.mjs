@@ -4,71 +4,26 @@
 // Chromium: /usr/bin/chromium (override with PIDLAB_CHROMIUM).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdtempSync, rmSync, existsSync, mkdirSync, readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { tmpdir } from 'node:os';
-import { join, resolve, dirname } from 'node:path';
-import { fileURLToPath, pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
 import * as S from '../../www/state.js';
+import * as H from './harness.mjs';
+import { root, frames, setInput } from './harness.mjs';
 
-const root = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
-const dist = join(root, 'dist', 'pidlab.html');
-const pageUrl = pathToFileURL(dist).href;
-let ctx;
-let profile;
+let browser;
 
 before(async () => {
-  assert.ok(existsSync(dist), 'dist/pidlab.html missing: run scripts/build-page.sh first');
-  profile = mkdtempSync(join(tmpdir(), 'pidlab-chromium-'));
-  ctx = await chromium.launchPersistentContext(profile, {
-    executablePath: process.env.PIDLAB_CHROMIUM || '/usr/bin/chromium',
-    headless: true,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-    viewport: { width: 1280, height: 900 },
-  });
+  browser = await H.launch();
   await pickLambdaMethod();
 });
 
 after(async () => {
-  if (ctx) await ctx.close();
-  if (profile) rmSync(profile, { recursive: true, force: true });
+  if (browser) await browser.close();
 });
 
-/** Opens the page; records console errors, page errors and every request that is not local. */
-async function open(hash = '', viewport) {
-  const page = await ctx.newPage();
-  if (viewport) await page.setViewportSize(viewport);
-  const log = { errors: [], requests: [], blocked: [] };
-  page.on('console', (m) => { if (m.type() === 'error') log.errors.push(m.text()); });
-  page.on('pageerror', (e) => log.errors.push(String(e)));
-  page.on('request', (r) => log.requests.push(r.url()));
-  await page.route('**/*', (route) => {
-    const u = route.request().url();
-    if (/^(file|data|blob):/.test(u)) return route.continue();
-    log.blocked.push(u);
-    return route.abort();
-  });
-  await page.goto(pageUrl + hash);
-  await page.waitForSelector('body[data-ready="1"]', { timeout: 20000 });
-  await frames(page);
-  return { page, log };
-}
-
-/** Waits until the app's pending animation-frame render has run. */
-async function frames(page) {
-  await page.evaluate(() => new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(() => res()))));
-}
-
-/** Sets an input's value and fires the event the app listens to. */
-async function setInput(page, sel, value, ev = 'input') {
-  await page.evaluate(([s, v, e]) => {
-    const x = document.querySelector(s);
-    if (!x) throw new Error('no element ' + s);
-    x.value = String(v);
-    x.dispatchEvent(new Event(e, { bubbles: true }));
-  }, [sel, value, ev]);
-  await frames(page);
-}
+/** Opens the page (see harness.mjs: console/page errors, requests, non-local ones aborted). */
+const open = (hash = '', viewport) => H.open(browser.ctx, hash, viewport);
 
 /** Per canvas: the number of clearly coloured pixels (a drawn data curve, not grid or text). */
 async function colouredPixels(page) {

@@ -1,0 +1,76 @@
+// Shared harness of the browser tests (not a test file: the runner picks up *.test.mjs):
+// headless Debian Chromium through playwright-core on dist/pidlab.html opened from file://.
+// Chromium: /usr/bin/chromium (override with PIDLAB_CHROMIUM).
+import assert from 'node:assert/strict';
+import { mkdtempSync, rmSync, existsSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve, dirname } from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { chromium } from 'playwright-core';
+
+export const root = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const dist = join(root, 'dist', 'pidlab.html');
+export const pageUrl = pathToFileURL(dist).href;
+
+/** Launches Chromium with a throw-away profile; `close()` ends it and removes the profile.
+ *  `requirePage: false` skips the check that dist/pidlab.html exists (bench/page-latency.mjs
+ *  may load another build). */
+export async function launch({ requirePage = true } = {}) {
+  if (requirePage) assert.ok(existsSync(dist), 'dist/pidlab.html missing: run scripts/build-page.sh first');
+  const profile = mkdtempSync(join(tmpdir(), 'pidlab-chromium-'));
+  const ctx = await chromium.launchPersistentContext(profile, {
+    executablePath: process.env.PIDLAB_CHROMIUM || '/usr/bin/chromium',
+    headless: true,
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+    viewport: { width: 1280, height: 900 },
+  });
+  return {
+    ctx,
+    async close() {
+      await ctx.close();
+      rmSync(profile, { recursive: true, force: true });
+    },
+  };
+}
+
+/** Opens the page; records console errors, page errors, every request, and every request that
+ *  is not local (aborted). Resolves once the app is ready and has rendered. */
+export async function open(ctx, hash = '', viewport) {
+  const page = await ctx.newPage();
+  if (viewport) await page.setViewportSize(viewport);
+  const log = { errors: [], requests: [], blocked: [] };
+  page.on('console', (m) => { if (m.type() === 'error') log.errors.push(m.text()); });
+  page.on('pageerror', (e) => log.errors.push(String(e)));
+  page.on('request', (r) => log.requests.push(r.url()));
+  await page.route('**/*', (route) => {
+    const u = route.request().url();
+    if (/^(file|data|blob):/.test(u)) return route.continue();
+    log.blocked.push(u);
+    return route.abort();
+  });
+  await page.goto(pageUrl + hash);
+  await ready(page);
+  return { page, log };
+}
+
+/** Waits for the app's ready mark and its first render. */
+export async function ready(page) {
+  await page.waitForSelector('body[data-ready="1"]', { timeout: 20000 });
+  await frames(page);
+}
+
+/** Waits until the app's pending animation-frame render has run. */
+export async function frames(page) {
+  await page.evaluate(() => new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(() => res()))));
+}
+
+/** Sets an input's value and fires the event the app listens to. */
+export async function setInput(page, sel, value, ev = 'input') {
+  await page.evaluate(([s, v, e]) => {
+    const x = document.querySelector(s);
+    if (!x) throw new Error('no element ' + s);
+    x.value = String(v);
+    x.dispatchEvent(new Event(e, { bubbles: true }));
+  }, [sel, value, ev]);
+  await frames(page);
+}
