@@ -3,25 +3,7 @@
 // checks (a frequency sweep in JS for Ms, trapezoidal integrals for the IAE, the dead time).
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { pidlab, BOILER, BOILER_TF, IPD, SCENARIO, presetList, isNumArray, finiteArray } from './pidlab.mjs';
-
-// --- a tiny complex arithmetic for the independent frequency sweep ---------------------------
-const cx = (re, im = 0) => ({ re, im });
-const cadd = (a, b) => cx(a.re + b.re, a.im + b.im);
-const cmul = (a, b) => cx(a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re);
-const cdiv = (a, b) => {
-  const d = b.re * b.re + b.im * b.im;
-  return cx((a.re * b.re + a.im * b.im) / d, (a.im * b.re - a.re * b.im) / d);
-};
-const cabs = (a) => Math.hypot(a.re, a.im);
-const polyval = (p, s) => p.reduce((acc, k) => cadd(cmul(acc, s), cx(k)), cx(0)); // descending
-/** L(jω) = Cy(jω)·P(jω)·e^{−jωθ} for a num/den/delay plant. */
-function openLoop(plant, cy, w) {
-  const s = cx(0, w);
-  const p = cdiv(polyval(plant.num, s), polyval(plant.den, s));
-  const c = cdiv(polyval(cy.num, s), polyval(cy.den, s));
-  return cmul(cmul(p, c), cx(Math.cos(w * plant.delay), -Math.sin(w * plant.delay)));
-}
+import { pidlab, BOILER, BOILER_TF, IPD, SCENARIO, presetList, isNumArray, finiteArray, cx, cadd, cabs, openLoop } from './pidlab.mjs';
 
 function assertTf(tf, what) {
   assert.ok(tf && typeof tf === 'object', `${what} is an object`);

@@ -5,7 +5,7 @@
 // sweep of the model loop).
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { pidlab, presetList, finiteArray, FIELD_PATH } from './pidlab.mjs';
+import { pidlab, presetList, finiteArray, FIELD_PATH, cx, cadd, cabs, openLoop } from './pidlab.mjs';
 
 const ID = 'medarametla2018/ex1/ajmeri-ali';
 // Example 1: K e^{-5s}/s, K = 0.05; set-point PD kp = 2.9933, kd = 7.1189 (Table 2).
@@ -19,22 +19,6 @@ function preset() {
   return p;
 }
 
-// --- a tiny complex arithmetic for the frequency sweep ----------------------------------------
-const cx = (re, im = 0) => ({ re, im });
-const cadd = (a, b) => cx(a.re + b.re, a.im + b.im);
-const cmul = (a, b) => cx(a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re);
-const cdiv = (a, b) => {
-  const d = b.re * b.re + b.im * b.im;
-  return cx((a.re * b.re + a.im * b.im) / d, (a.im * b.re - a.re * b.im) / d);
-};
-const cabs = (a) => Math.hypot(a.re, a.im);
-const polyval = (p, s) => p.reduce((acc, k) => cadd(cmul(acc, s), cx(k)), cx(0));
-function openLoop(plant, c, w) {
-  const s = cx(0, w);
-  const p = cdiv(polyval(plant.num, s), polyval(plant.den, s));
-  const k = cdiv(polyval(c.num, s), polyval(c.den, s));
-  return cmul(cmul(p, k), cx(Math.cos(w * plant.delay), -Math.sin(w * plant.delay)));
-}
 /** Grid maximum of |1/(1 + L(jω))| on 10⁻³..10² rad per time unit. */
 function sweepMs(plant, c) {
   let m = 0;

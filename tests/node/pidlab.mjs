@@ -54,3 +54,22 @@ export function isNumArray(a) {
 export function finiteArray(a) {
   return isNumArray(a) && Array.from(a).every(Number.isFinite);
 }
+
+// --- a tiny complex arithmetic for the independent frequency sweeps ---------------------------
+export const cx = (re, im = 0) => ({ re, im });
+export const cadd = (a, b) => cx(a.re + b.re, a.im + b.im);
+export const cmul = (a, b) => cx(a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re);
+export const cdiv = (a, b) => {
+  const d = b.re * b.re + b.im * b.im;
+  return cx((a.re * b.re + a.im * b.im) / d, (a.im * b.re - a.re * b.im) / d);
+};
+export const cabs = (a) => Math.hypot(a.re, a.im);
+/** p(s) for descending coefficients. */
+export const polyval = (p, s) => p.reduce((acc, k) => cadd(cmul(acc, s), cx(k)), cx(0));
+/** L(jω) = C(jω)·P(jω)·e^{−jωθ} for a num/den/delay plant and a {num, den} controller path. */
+export function openLoop(plant, c, w) {
+  const s = cx(0, w);
+  const p = cdiv(polyval(plant.num, s), polyval(plant.den, s));
+  const k = cdiv(polyval(c.num, s), polyval(c.den, s));
+  return cmul(cmul(p, k), cx(Math.cos(w * plant.delay), -Math.sin(w * plant.delay)));
+}
