@@ -14,26 +14,8 @@ use pidlab::tf::Tf;
 use serde_json::json;
 use wasm_bindgen_test::wasm_bindgen_test;
 
-/// Same closed form as in `engine_sim.rs`: y' = a(1 − y(t − θ)), y = 0 before 0.
-fn integrator_p_exact(a: f64, theta: f64, t: f64) -> f64 {
-    if t <= 0.0 {
-        return 0.0;
-    }
-    let j = (t / theta).floor() as i32;
-    let mut z = 0.0;
-    let mut fact = 1.0;
-    for i in 0..=j.max(0) {
-        if i > 0 {
-            fact *= i as f64;
-        }
-        let dt = t - i as f64 * theta;
-        if dt < 0.0 {
-            break;
-        }
-        z += (-a).powi(i) * dt.powi(i) / fact;
-    }
-    1.0 - z
-}
+mod common;
+use common::integrator_p_exact;
 
 fn pcs(cr1: Tf, cy1: Tf, model: Plant, cd: Tf) -> Controller {
     Controller::new(Tf::gain(0.0), cd)
