@@ -303,20 +303,35 @@ struct Prop {
     yrows: Vec<Vec<f64>>,
 }
 
-fn propagators(m: &LoopModel, len: f64) -> Result<Prop> {
-    let n = m.a.nrows();
-    let sz = n + NODES + 2;
-    let (ir, id) = (n + NODES, n + NODES + 1);
+/// `exp(M·ℓ/DEG)` for one piece of length ℓ of the augmented system over
+/// `[x (n); ξ_j (NODES per delayed channel j); r; d]`: `ẋ = A x + Σ_j b_j ξ_{j,0} + b_r r + b_d d`,
+/// where `ξ_j` are the monomial coefficients of channel j's delayed input on the piece
+/// (`w_j(τ) = Σ_k ξ_{j,k} σ^k`, `σ = τ/ℓ`, so `dξ_{j,k}/dτ = (k+1)/ℓ·ξ_{j,k+1}`). Its powers give
+/// the state at the piece's nodes `iℓ/DEG` (shared by the one- and the several-delay
+/// integrators).
+pub(crate) fn piece_exponential(
+    a: &DMatrix<f64>,
+    bw: &[DVector<f64>],
+    br: &DVector<f64>,
+    bd: &DVector<f64>,
+    len: f64,
+) -> Result<DMatrix<f64>> {
+    let (n, m) = (a.nrows(), bw.len());
+    let sz = n + NODES * m + 2;
+    let (ir, id) = (n + NODES * m, n + NODES * m + 1);
     let mut big = DMatrix::zeros(sz, sz);
-    big.view_mut((0, 0), (n, n)).copy_from(&m.a);
+    big.view_mut((0, 0), (n, n)).copy_from(a);
     for i in 0..n {
-        big[(i, n)] = m.bw[i];
-        big[(i, ir)] = m.br[i];
-        big[(i, id)] = m.bd[i];
+        for (j, b) in bw.iter().enumerate() {
+            big[(i, n + NODES * j)] = b[i];
+        }
+        big[(i, ir)] = br[i];
+        big[(i, id)] = bd[i];
     }
-    // chain: dξ_k/dτ = (k+1)/ℓ · ξ_{k+1};  w(τ) = ξ_0 = Σ c_k σ^k, σ = τ/ℓ
-    for k in 0..DEG {
-        big[(n + k, n + k + 1)] = (k + 1) as f64 / len;
+    for j in 0..m {
+        for k in 0..DEG {
+            big[(n + NODES * j + k, n + NODES * j + k + 1)] = (k + 1) as f64 / len;
+        }
     }
     let e1 = (big * (len / DEG as f64)).exp();
     if !e1.iter().all(|x| x.is_finite()) {
@@ -325,11 +340,20 @@ fn propagators(m: &LoopModel, len: f64) -> Result<Prop> {
             "loop matrix exponential overflowed (gains too large?)",
         ));
     }
-    // V[j][k] = σ_j^k, σ_j = j/DEG; coefficients c = V⁻¹ w.
-    let v = DMatrix::from_fn(NODES, NODES, |j, k| (j as f64 / DEG as f64).powi(k as i32));
-    let vinv = v
+    Ok(e1)
+}
+
+/// `V⁻¹` of the interpolation nodes: `V[j][k] = σ_j^k`, `σ_j = j/DEG`; coefficients `c = V⁻¹ w`.
+pub(crate) fn interpolation_inverse() -> Result<DMatrix<f64>> {
+    DMatrix::from_fn(NODES, NODES, |j, k| (j as f64 / DEG as f64).powi(k as i32))
         .try_inverse()
-        .ok_or_else(|| Error::new("", "internal: interpolation matrix singular"))?;
+        .ok_or_else(|| Error::new("", "internal: interpolation matrix singular"))
+}
+
+fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
+    let n = m.a.nrows();
+    let (ir, id) = (n + NODES, n + NODES + 1);
+    let e1 = piece_exponential(&m.a, std::slice::from_ref(&m.bw), &m.br, &m.bd, len)?;
     let width = n + NODES + 2;
     let mut p = Prop {
         m_end: vec![],
@@ -346,7 +370,7 @@ fn propagators(m: &LoopModel, len: f64) -> Result<Prop> {
         mi.view_mut((0, 0), (n, n))
             .copy_from(&ei.view((0, 0), (n, n)));
         mi.view_mut((0, n), (n, NODES))
-            .copy_from(&(ei.view((0, n), (n, NODES)) * &vinv));
+            .copy_from(&(ei.view((0, n), (n, NODES)) * vinv));
         mi.view_mut((0, ir), (n, 1))
             .copy_from(&ei.view((0, ir), (n, 1)));
         mi.view_mut((0, id), (n, 1))
@@ -463,6 +487,13 @@ impl Trajectory {
     pub fn u_at(&self, t: f64) -> f64 {
         let (k, s) = self.locate(t);
         lagrange(self.v_nodes(k), s) - self.step_at(&self.disturbance, t)
+    }
+
+    /// Keeps only the first `k` pieces (the response before divergence was detected).
+    pub fn keep_pieces(&mut self, k: usize) {
+        self.n_pieces = k;
+        self.v.truncate(k * NODES);
+        self.y.truncate(k * NODES);
     }
 
     /// End time of the computed response.
@@ -587,9 +618,10 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
             ),
         ));
     }
+    let vinv = interpolation_inverse()?;
     let props: Vec<Prop> = lens
         .iter()
-        .map(|&l| propagators(m, l))
+        .map(|&l| propagators(m, l, &vinv))
         .collect::<Result<_>>()?;
     let n = m.a.nrows();
     let mut traj = Trajectory {
@@ -650,10 +682,7 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
         traj.n_pieces = k + 1;
         if bad || !xn.iter().all(|q| q.is_finite()) {
             diverged_at = Some(t0);
-            // keep only the pieces before this one
-            traj.n_pieces = k;
-            traj.v.truncate(k * NODES);
-            traj.y.truncate(k * NODES);
+            traj.keep_pieces(k);
             break;
         }
     }

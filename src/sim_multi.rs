@@ -21,7 +21,10 @@
 use crate::controller::Controller;
 use crate::error::{Error, Result};
 use crate::plant::Plant;
-use crate::sim::{lagrange, sample, Scenario, SimResult, Trajectory, DEG, NODES};
+use crate::sim::{
+    interpolation_inverse, lagrange, piece_exponential, sample, Scenario, SimResult, Trajectory,
+    DEG, NODES,
+};
 use crate::ss::{balance, realize, realize_paths, Ss};
 use nalgebra::{DMatrix, DVector};
 use std::collections::hash_map::Entry;
@@ -360,27 +363,9 @@ fn propagators(mm: &MultiModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
     let sz = n + NODES * m + 2;
     let (ir, id) = (n + NODES * m, n + NODES * m + 1);
     let (fr, fd) = (n + m, n + m + 1);
-    let mut big = DMatrix::zeros(sz, sz);
-    big.view_mut((0, 0), (n, n)).copy_from(&mm.a());
-    for i in 0..n {
-        for j in 0..m {
-            big[(i, n + NODES * j)] = mm.f[(i, n + j)];
-        }
-        big[(i, ir)] = mm.f[(i, fr)];
-        big[(i, id)] = mm.f[(i, fd)];
-    }
-    for j in 0..m {
-        for k in 0..DEG {
-            big[(n + NODES * j + k, n + NODES * j + k + 1)] = (k + 1) as f64 / len;
-        }
-    }
-    let e1 = (big * (len / DEG as f64)).exp();
-    if !e1.iter().all(|x| x.is_finite()) {
-        return Err(Error::new(
-            "controller",
-            "loop matrix exponential overflowed (gains too large?)",
-        ));
-    }
+    let col = |c: usize| mm.f.column(c).into_owned();
+    let bw: Vec<DVector<f64>> = (0..m).map(|j| col(n + j)).collect();
+    let e1 = piece_exponential(&mm.a(), &bw, &col(fr), &col(fd), len)?;
     let width = sz;
     let mut p = Prop {
         m_end: vec![],
@@ -561,10 +546,7 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
     let starts: Vec<f64> = bounds[..bounds.len() - 1].to_vec();
     let lens: Vec<f64> = bounds.windows(2).map(|w| w[1] - w[0]).collect();
     let total = starts.len();
-    let v = DMatrix::from_fn(NODES, NODES, |j, k| (j as f64 / DEG as f64).powi(k as i32));
-    let vinv = v
-        .try_inverse()
-        .ok_or_else(|| Error::new("", "internal: interpolation matrix singular"))?;
+    let vinv = interpolation_inverse()?;
     let uniform = propagators(mm, h, &vinv)?;
     let mut cache: HashMap<u64, Prop> = HashMap::new();
     let (n, m) = (mm.n, mm.m);
@@ -587,6 +569,11 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
     let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).fold(0.0, |s, (x, y)| s + x * y);
     let mut z = vec![0.0; width];
     let mut xn = vec![0.0; n];
+    let mut sig = vec![0.0; m]; // channel signals at one node
+                                // the channel rows over ζ, contiguous (node 0 of every piece reads them)
+    let srows0: Vec<Vec<f64>> = (0..m)
+        .map(|j| mm.s.row(j).iter().copied().collect())
+        .collect();
     let mut diverged_at = None;
     let (fr, fd) = (n + m, n + m + 1);
     for k in 0..total {
@@ -640,21 +627,23 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
                 traj.v.push(vv);
                 traj.y.push(y);
             };
-        let s0: Vec<f64> = (0..m)
-            .map(|j| at0(mm.s.row(j).transpose().as_slice()))
-            .collect();
+        for (j, o) in sig.iter_mut().enumerate() {
+            *o = at0(&srows0[j]);
+        }
         push(
             &mut chans,
             &mut traj,
-            &s0,
+            &sig,
             at0(mm.y.as_slice()),
             at0(mm.u.as_slice()),
         );
         for i in 0..DEG {
-            let si: Vec<f64> = p.srows[i].iter().map(|row| dot(row, &z)).collect();
+            for (o, row) in sig.iter_mut().zip(&p.srows[i]) {
+                *o = dot(row, &z);
+            }
             let y = dot(&p.yrows[i], &z);
             let u = dot(&p.urows[i], &z);
-            push(&mut chans, &mut traj, &si, y, u);
+            push(&mut chans, &mut traj, &sig, y, u);
         }
         for (row, xr) in xn.iter_mut().enumerate() {
             *xr = dot(&p.m_end[row * width..(row + 1) * width], &z);
@@ -663,9 +652,7 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
         traj.n_pieces = k + 1;
         if bad || !xn.iter().all(|q| q.is_finite()) {
             diverged_at = Some(t0);
-            traj.n_pieces = k;
-            traj.v.truncate(k * NODES);
-            traj.y.truncate(k * NODES);
+            traj.keep_pieces(k);
             break;
         }
     }
