@@ -23,31 +23,6 @@ fn opt(x: Option<f64>) -> String {
     x.map_or("—".into(), |v| format!("{v:.3}"))
 }
 
-/// Table 3 as printed: k_p, k_i, k_d, a₁, b₁, b₂.
-const TABLE3: [(&str, [&str; 6]); 6] = [
-    ("ex1", ["3.3671", "0.1828", "2.7808", "1.25", "0.6525", "—"]),
-    (
-        "ex2",
-        ["0.2247", "0.0266", "0.7021", "0.25", "0.1894", "0.0253"],
-    ),
-    (
-        "ex3",
-        ["7.6401", "1.1477", "14.309", "0.25", "0.1799", "0.024"],
-    ),
-    (
-        "ex4",
-        ["1.37", "0.2866", "1.6359", "0.25", "10.1367", "1.3672"],
-    ),
-    (
-        "ex5",
-        ["1.0978", "0.1576", "1.0447", "0.32", "0.2941", "0.0490"],
-    ),
-    (
-        "ex6",
-        ["818,880", "168,150", "160,460", "0.25", "766.1607", "65.52"],
-    ),
-];
-
 /// Tables 4 and 5, proposed and Anil & Padma Sree rows: servo (IAE, TV, OS, t_s),
 /// regulatory (IAE, TV, OS, t_s). NaN: not printed/garbled.
 struct Printed {
@@ -233,7 +208,7 @@ pub fn report() -> String {
     let _ = writeln!(o, "### Table 3 — controller parameters (ours / printed)\n");
     let _ = writeln!(o, "| Example | λ | k_p | k_i | k_d | a₁ | b₁ | b₂ |");
     let _ = writeln!(o, "|---|---|---|---|---|---|---|---|");
-    for (e, (_, pr)) in mm::examples().iter().zip(TABLE3.iter()) {
+    for (e, (_, pr)) in mm::examples().iter().zip(mm::TABLE3_PRINTED.iter()) {
         match mm::design(&e.family, e.lambda) {
             Ok(d) => {
                 let ours = [d.kp, d.ki, d.kd, d.a1, d.b1, d.b2];

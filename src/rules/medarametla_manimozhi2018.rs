@@ -1033,6 +1033,32 @@ pub fn example5_process() -> Plant {
     }
 }
 
+/// Table 3 as printed (strings, digits as in the paper; "—" not printed): k_p, k_i, k_d, a₁,
+/// b₁, b₂. Example 6's k_d "160,460" has a dropped digit (ERRATA.md: 1,604,557.8).
+pub const TABLE3_PRINTED: [(&str, [&str; 6]); 6] = [
+    ("ex1", ["3.3671", "0.1828", "2.7808", "1.25", "0.6525", "—"]),
+    (
+        "ex2",
+        ["0.2247", "0.0266", "0.7021", "0.25", "0.1894", "0.0253"],
+    ),
+    (
+        "ex3",
+        ["7.6401", "1.1477", "14.309", "0.25", "0.1799", "0.024"],
+    ),
+    (
+        "ex4",
+        ["1.37", "0.2866", "1.6359", "0.25", "10.1367", "1.3672"],
+    ),
+    (
+        "ex5",
+        ["1.0978", "0.1576", "1.0447", "0.32", "0.2941", "0.0490"],
+    ),
+    (
+        "ex6",
+        ["818,880", "168,150", "160,460", "0.25", "766.1607", "65.52"],
+    ),
+];
+
 /// A comparison setting of Table 2 (Anil & Padma Sree 2015): parallel PID × filter.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Comparison {
