@@ -7,10 +7,10 @@
 //! Median and p95 over `runs` (default 1000, at least 200) after 100 warm-up runs; then each
 //! registered method tuned on its first preset.
 
+use pidlab::analysis::freq::analyze;
 use pidlab::api;
-use pidlab::controller::Controller;
-use pidlab::freq::analyze;
-use pidlab::plant::{Family, Plant};
+use pidlab::model::controller::Controller;
+use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::{self, Params};
 use pidlab::sim::{simulate, Scenario};
 use serde_json::Value;

@@ -11,15 +11,15 @@
 //! against local minima, at a second point), on the servo criterion over a horizon of
 //! 25 + 6θ/T time constants.
 
-use pidlab::controller::{Controller, Pid};
-use pidlab::freq::analyze;
-use pidlab::plant::{Family, Plant};
-use pidlab::poly::Poly;
+use pidlab::analysis::freq::analyze;
+use pidlab::model::controller::{Controller, Pid};
+use pidlab::model::plant::{Family, Plant};
+use pidlab::model::poly::Poly;
+use pidlab::model::tf::Tf;
 use pidlab::rules::kaya2020::{
     default_n, normalized_settings, table_for, Criterion, TABLE_I, TABLE_II,
 };
 use pidlab::sim::{simulate, Scenario};
-use pidlab::tf::Tf;
 use std::fmt::Write;
 
 /// The rule's I-PD as shipped (derivative filter N from `default_n`) on the normalized plant.
@@ -316,7 +316,7 @@ fn main() {
            simulated as its closed-loop transfer function), i.e. what the paper's PSO (33 particles × 300 \
            iterations, T₀/T = 0.7 and 1.0 only) minimized.\n\n\
          Horizon 25 + 6θ/T. `excess` = J(fit)/J* − 1, the criterion the fit gives away. Ms is the \
-         exact-delay maximum sensitivity (pidlab::freq, including the high-frequency limit \
+         exact-delay maximum sensitivity (pidlab::analysis::freq, including the high-frequency limit \
          1/(1 − |L(j∞)|)); the constrained optimum minimizes J among settings at least as robust as \
          the fit.\n",
         if quick { "quick run: one grid point" } else { "full grid" }

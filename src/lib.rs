@@ -5,10 +5,10 @@
 //! metrics and frequency analysis, compiled to WebAssembly for a static page.
 //!
 //! ```
-//! use pidlab::plant::Family;
-//! use pidlab::controller::Pid;
+//! use pidlab::model::plant::Family;
+//! use pidlab::model::controller::Pid;
 //! use pidlab::sim::{simulate, Scenario};
-//! use pidlab::freq::analyze;
+//! use pidlab::analysis::freq::analyze;
 //!
 //! // Boiler steam drum (Arvanitis et al. 2012): 0.547(1 − 0.418 s)e^{−0.1 s}/(s(1.06 s + 1))
 //! let plant = Family::IpdtIr { k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 }.plant();
@@ -29,20 +29,13 @@
 //!   `Y = P(s)e^{−θs}(U + D)`.
 //! - Metric definitions: see [`metrics`].
 
+pub mod analysis;
 pub mod api;
-pub mod controller;
-pub mod cstr;
 pub mod error;
-pub mod freq;
-pub mod metrics;
-pub mod plant;
+pub mod model;
 pub mod plot;
-pub mod poly;
 pub mod rules;
 pub mod sim;
-mod sim_multi;
-pub mod ss;
-pub mod tf;
 
 pub use error::{Error, Result};
 

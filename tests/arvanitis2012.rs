@@ -3,9 +3,9 @@
 //! frequency-domain properties of Method I, Table fits against the exact computation, and
 //! robustness over the paper's parameter range.
 
-use pidlab::controller::Pid;
-use pidlab::freq::analyze;
-use pidlab::plant::Family;
+use pidlab::analysis::freq::analyze;
+use pidlab::model::controller::Pid;
+use pidlab::model::plant::Family;
 use pidlab::rules::arvanitis2012::*;
 use pidlab::rules::{self, Params};
 use serde_json::Value;
@@ -325,7 +325,7 @@ fn equivalence_and_normalization() {
     let (kc, ti, td) = (0.8, 2.3, 0.7);
     let (kp, ki, kd) = series_to_ipd(kc, ti, td);
     for w in [0.1, 1.0, 7.0] {
-        let s = pidlab::poly::C64::new(0.0, w);
+        let s = pidlab::model::poly::C64::new(0.0, w);
         let series = kc * (1.0 + 1.0 / (ti * s)) * (1.0 + td * s);
         let ipd = kp + ki / s + kd * s;
         assert!((series - ipd).norm() < 1e-12);

@@ -1,9 +1,9 @@
 //! Frequency analysis against analytic margins, a brute-force supremum, and the papers' loops.
 
-use pidlab::controller::{lead_lag, Controller, Pid};
-use pidlab::freq::{analyze, open_loop, solve_for_ms};
-use pidlab::plant::{Family, Plant};
-use pidlab::tf::Tf;
+use pidlab::analysis::freq::{analyze, open_loop, solve_for_ms};
+use pidlab::model::controller::{lead_lag, Controller, Pid};
+use pidlab::model::plant::{Family, Plant};
+use pidlab::model::tf::Tf;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 /// Brute-force |S| maximum on a dense log grid (an independent, slow reference).

@@ -1,9 +1,9 @@
 //! Paper loops as end-to-end checks of simulate + metrics.
 
-use pidlab::controller::Pid;
-use pidlab::plant::{Family, Plant};
+use pidlab::model::controller::Pid;
+use pidlab::model::plant::{Family, Plant};
+use pidlab::model::tf::Tf;
 use pidlab::sim::{simulate, Scenario};
-use pidlab::tf::Tf;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 #[wasm_bindgen_test(unsupported = test)]

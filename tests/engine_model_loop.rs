@@ -5,12 +5,12 @@
 //! (perfect model: servo and regulatory responses decouple), the closed-form integral of the
 //! error, and the analysis verdicts.
 
+use pidlab::analysis::freq::analyze;
 use pidlab::api;
-use pidlab::controller::{Controller, ModelLoop, Pid};
-use pidlab::freq::analyze;
-use pidlab::plant::{Family, Plant};
+use pidlab::model::controller::{Controller, ModelLoop, Pid};
+use pidlab::model::plant::{Family, Plant};
+use pidlab::model::tf::Tf;
 use pidlab::sim::{simulate, Scenario};
-use pidlab::tf::Tf;
 use serde_json::json;
 use wasm_bindgen_test::wasm_bindgen_test;
 

@@ -1,7 +1,7 @@
 //! Kaya (2020) I-PD rules: printed settings (Tables III, VI, V), the model reduction of
 //! Examples 2-3, fit-range warnings, the I-PD mapping, and random FOPDT-IR plants.
 
-use pidlab::plant::{Family, Plant};
+use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::kaya2020::{
     self, default_n, normalized_settings, reduce_to_fopdt_ir, reduce_to_fopdt_ir_with, settings,
     Criterion, Reduction, EX1, EX2_MODEL, EX3_MODEL, TABLE_I,
@@ -374,15 +374,15 @@ fn presets_complete() {
 }
 
 /// 3/3 Padé approximation of e^{−θs} (the paper's design model of the delay).
-fn pade33(theta: f64) -> pidlab::tf::Tf {
-    use pidlab::poly::Poly;
+fn pade33(theta: f64) -> pidlab::model::tf::Tf {
+    use pidlab::model::poly::Poly;
     let c = [
         1.0,
         theta / 2.0,
         theta * theta / 10.0,
         theta.powi(3) / 120.0,
     ];
-    pidlab::tf::Tf {
+    pidlab::model::tf::Tf {
         num: Poly::from_asc(&[c[0], -c[1], c[2], -c[3]]),
         den: Poly::from_asc(&c),
     }
@@ -395,10 +395,10 @@ fn pade33(theta: f64) -> pidlab::tf::Tf {
 /// Measured: 1.939 vs 1.942.
 #[wasm_bindgen_test(unsupported = test)]
 fn default_filter_stable_and_close_to_design_loop() {
-    use pidlab::controller::Controller;
+    use pidlab::model::controller::Controller;
     use pidlab::sim::{simulate, Scenario};
     let t = tune(&EX1.plant(), Params::default()).unwrap();
-    let a = pidlab::freq::analyze(&EX1.plant(), &t.controller).unwrap();
+    let a = pidlab::analysis::freq::analyze(&EX1.plant(), &t.controller).unwrap();
     let hf = t.details["derivative_filter"]["hf_loop_gain"]
         .as_f64()
         .unwrap();
@@ -414,7 +414,11 @@ fn default_filter_stable_and_close_to_design_loop() {
         .controller;
     let pp = EX1.plant().tf.mul(&pade33(0.3567));
     let tr = pp.feedback(&ideal.cy).mul(&ideal.cr);
-    let pass = Controller::new(pidlab::tf::Tf::gain(1.0), pidlab::tf::Tf::gain(0.0)).unwrap();
+    let pass = Controller::new(
+        pidlab::model::tf::Tf::gain(1.0),
+        pidlab::model::tf::Tf::gain(0.0),
+    )
+    .unwrap();
     let design = simulate(&Plant::new(tr, 0.0).unwrap(), &pass, &sc).unwrap();
     let j_design = design.metrics.servo.unwrap().iste;
     assert!(
@@ -437,7 +441,11 @@ fn examples_2_3_least_overshoot() {
         let ipd = kaya2020::example_ipd(ex, Criterion::Iste, None)
             .unwrap()
             .controller;
-        assert!(pidlab::freq::analyze(&plant, &ipd).unwrap().stable);
+        assert!(
+            pidlab::analysis::freq::analyze(&plant, &ipd)
+                .unwrap()
+                .stable
+        );
         let r = simulate(&plant, &ipd, &sc).unwrap();
         assert!(!r.diverged);
         let ov = r.metrics.servo.unwrap().overshoot.unwrap();
@@ -497,7 +505,7 @@ fn presets_through_the_json_api() {
 /// error naming the plant field, never a panic.
 #[wasm_bindgen_test(unsupported = test)]
 fn reduction_random_plants() {
-    use pidlab::poly::Poly;
+    use pidlab::model::poly::Poly;
     let mut state: u64 = 0x9E37_79B9_7F4A_7C15;
     let mut rnd = move || {
         state = state
@@ -513,7 +521,7 @@ fn reduction_random_plants() {
             .iter()
             .fold(Poly::constant(1.0), |d, &t| d.mul(&Poly::linear(t, 1.0)));
         let num = Poly::linear(-k * t0, k);
-        let p = Plant::new(pidlab::tf::Tf { num, den }, th0).unwrap();
+        let p = Plant::new(pidlab::model::tf::Tf { num, den }, th0).unwrap();
         let (fam, d) = reduce_to_fopdt_ir(&p).unwrap_or_else(|e| panic!("{taus:?}: {e}"));
         let v = fam.values();
         let sum: f64 = taus.iter().sum();

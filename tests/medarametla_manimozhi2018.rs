@@ -3,10 +3,10 @@
 //! cross-checks, random plants, Table 1 fits, and the CSTR of Example 6 (Eq. 53, nonlinear
 //! closed loop).
 
-use pidlab::cstr::{self, CstrParams, CstrScenario};
-use pidlab::plant::Family;
-use pidlab::poly::{Poly, C64};
+use pidlab::model::plant::Family;
+use pidlab::model::poly::{Poly, C64};
 use pidlab::rules::medarametla_manimozhi2018 as mm;
+use pidlab::rules::medarametla_manimozhi2018::cstr::{self, CstrParams, CstrScenario};
 use pidlab::rules::{self, Params};
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -448,12 +448,12 @@ fn cstr_closed_loop_servo_and_regulatory() {
         r.tj_cmd.last().unwrap()
     );
     // a set-point path with an ideal derivative (a step would be an impulse) is refused
-    let bad = pidlab::controller::Controller::new(
-        pidlab::tf::Tf {
+    let bad = pidlab::model::controller::Controller::new(
+        pidlab::model::tf::Tf {
             num: Poly::from_asc(&[0.0, 1.0]),
             den: Poly::from_asc(&[1.0]),
         },
-        pidlab::tf::Tf {
+        pidlab::model::tf::Tf {
             num: Poly::from_asc(&[1.0]),
             den: Poly::from_asc(&[1.0]),
         },
@@ -477,7 +477,7 @@ fn cstr_closed_loop_servo_and_regulatory() {
 
 /// Independent reference: unit-step response of a proper rational `g` at `times`, by
 /// classical RK4 (step `h`) on its controllable canonical realization.
-fn step_response_rk4(g: &pidlab::tf::Tf, times: &[f64], h: f64) -> Vec<f64> {
+fn step_response_rk4(g: &pidlab::model::tf::Tf, times: &[f64], h: f64) -> Vec<f64> {
     let (q, r) = g.split_improper();
     let d0 = q.coef(0);
     let n = g.den.degree();
@@ -526,7 +526,7 @@ fn servo_response_on_the_laguerre_model_is_exact() {
         let c = d.controller_order(e.p, n).unwrap();
         let th = e.family.theta();
         let pl = e.family.rational().mul(&mm::laguerre2(th));
-        let plant = pidlab::plant::Plant::new(pl, 0.0).unwrap();
+        let plant = pidlab::model::plant::Plant::new(pl, 0.0).unwrap();
         let t_end = 6.0 * (th + 2.0 * e.p);
         let dt = t_end / 300.0;
         let sc = pidlab::sim::Scenario::steps(t_end, dt, 0.0, 1.0, 0.0, 0.0);
@@ -653,7 +653,7 @@ fn ms_of_the_examples_and_lambda_for_target_ms() {
         .pid()
         .to_controller()
         .unwrap();
-    let ms49 = pidlab::freq::analyze(&mm::example5_process(), &c)
+    let ms49 = pidlab::analysis::freq::analyze(&mm::example5_process(), &c)
         .unwrap()
         .ms
         .unwrap();
@@ -680,8 +680,8 @@ fn ms_of_the_examples_and_lambda_for_target_ms() {
 /// and the suggested scenario simulates without error or divergence.
 #[wasm_bindgen_test(unsupported = test)]
 fn presets_load_and_simulate() {
-    use pidlab::controller::Controller;
-    use pidlab::plant::Plant;
+    use pidlab::model::controller::Controller;
+    use pidlab::model::plant::Plant;
     use pidlab::sim::{simulate, Scenario};
     let presets = mm::presets();
     assert_eq!(
@@ -787,7 +787,7 @@ fn json_api_tune() {
 /// `T/T_j` (exact second-order, 1 s delay) up to the nonlinearity, O(step²).
 #[wasm_bindgen_test(unsupported = test)]
 fn cstr_small_step_matches_the_linearization() {
-    use pidlab::plant::Plant;
+    use pidlab::model::plant::Plant;
     use pidlab::sim::{simulate, Scenario};
     let p = CstrParams::paper();
     let op = p.steady_state_at(344.0);

@@ -1,14 +1,14 @@
 //! Praveen Kumar & Narayana: PID × lead-lag by pole placement (seed 004_e7142b8c2f5ed265.txt).
 
-use pidlab::freq::analyze;
-use pidlab::plant::Family;
-use pidlab::poly::Poly;
+use pidlab::analysis::freq::analyze;
+use pidlab::model::plant::Family;
+use pidlab::model::poly::Poly;
 use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
 use pidlab::rules::{self, Params};
 use pidlab::sim::{simulate, Scenario};
 use wasm_bindgen_test::wasm_bindgen_test;
 
-fn plant_of(p: &IpdtIr) -> pidlab::plant::Plant {
+fn plant_of(p: &IpdtIr) -> pidlab::model::plant::Plant {
     Family::IpdtIr {
         k: p.k,
         tau: p.tau,
@@ -89,7 +89,7 @@ fn eqs_13_14_closed_forms_agree_with_the_solve() {
 /// replaced by the first-order Padé of Eq. (9): `den·p_c·(1 + θs/2) + num·q_c·(1 − θs/2)`,
 /// with `Cy = q_c/p_c`. The design promises `A·(s + λ)⁴·(1 + θs/2)` (the lead α = θ/2 cancels
 /// the Padé denominator). Returns the relative coefficient residual.
-fn char_residual(p: &IpdtIr, c: &pidlab::controller::Controller, lambda: f64) -> f64 {
+fn char_residual(p: &IpdtIr, c: &pidlab::model::controller::Controller, lambda: f64) -> f64 {
     let pl = plant_of(p);
     let pade_num = Poly::linear(-p.theta / 2.0, 1.0);
     let pade_den = Poly::linear(p.theta / 2.0, 1.0);
@@ -247,9 +247,9 @@ fn bad_inputs_name_the_field() {
 fn servo(
     p: &IpdtIr,
     lambda: f64,
-    plant: &pidlab::plant::Plant,
+    plant: &pidlab::model::plant::Plant,
     t_end: f64,
-) -> pidlab::metrics::Metrics {
+) -> pidlab::analysis::metrics::Metrics {
     let d = pk::design(p, lambda).unwrap();
     let c = pk::controller(&d, 0.2, pk::Derivative::Measurement).unwrap();
     let sc = Scenario::steps(t_end, 0.01, 0.0, 0.2, 0.0, 0.0);
@@ -276,7 +276,7 @@ fn proposed_servo_ise_matches_tables_2_and_4() {
     let full = pk::ex2_process();
     let mut full40 = full.clone();
     full40.delay *= 1.4;
-    let rows: [(&str, IpdtIr, f64, pidlab::plant::Plant, f64); 4] = [
+    let rows: [(&str, IpdtIr, f64, pidlab::model::plant::Plant, f64); 4] = [
         ("Table 2, Ex. 1", pk::EX1, 1.9, pk::EX1.plant(), 0.06497),
         ("Table 2, Ex. 2", pk::EX2_REDUCED, 0.8, full.clone(), 0.1423),
         (

@@ -2,10 +2,10 @@
 //! processes (method `shamsuzzoha_lee`). Printed values, closed forms, defining equations,
 //! simulated Table 1, robustness of the routine over random plants.
 
-use pidlab::controller::Pid;
-use pidlab::freq::analyze;
-use pidlab::plant::{Family, Plant};
-use pidlab::poly::Poly;
+use pidlab::analysis::freq::analyze;
+use pidlab::model::controller::Pid;
+use pidlab::model::plant::{Family, Plant};
+use pidlab::model::poly::Poly;
 use pidlab::rules::shamsuzzoha_lee2008::{
     design, design_model, imc_pid, setpoint_filter, studies, weighting_filter, ImcModel,
 };
@@ -350,7 +350,7 @@ fn cancellation_conditions_hold() {
 
 fn sim_metrics(
     p: &Plant,
-    c: &pidlab::controller::Controller,
+    c: &pidlab::model::controller::Controller,
     sc: &Scenario,
 ) -> (f64, f64, f64, f64) {
     let r = simulate(p, c, sc).unwrap();
@@ -666,7 +666,7 @@ fn zhang_rule_reproduces_table1_row() {
     }
     // the defining property: 1 − G·Q has a double zero at s = 0 with the Taylor delay, i.e.
     // C = Q/(1 − GQ) has the PID × lag form above; check C(jω)·(1 − G Q) = Q at a few ω
-    use pidlab::tf::Tf;
+    use pidlab::model::tf::Tf;
     let (k, tau, th, l) = (1.0, 1.0, 0.2, 0.597);
     let beta = 3.0 * l + th;
     let c = pidlab::rules::shamsuzzoha_lee2008::zhang1999_controller(
@@ -684,7 +684,7 @@ fn zhang_rule_reproduces_table1_row() {
     let g = Tf::parse_desc(&[-k * th, k], &[tau, 1.0, 0.0]).unwrap();
     for w in [0.01, 0.3, 2.0, 40.0] {
         let (cv, qv, gv) = (c.eval_jw(w), q.eval_jw(w), g.eval_jw(w));
-        let lhs = cv * (pidlab::poly::C64::new(1.0, 0.0) - gv * qv);
+        let lhs = cv * (pidlab::model::poly::C64::new(1.0, 0.0) - gv * qv);
         assert!((lhs - qv).norm() <= 1e-12 * qv.norm().max(1.0), "ω = {w}");
     }
     // bad input: a clear error naming the field
@@ -706,7 +706,7 @@ fn fig7_proposed_beats_zhang_at_ms2() {
         };
         let l =
             pidlab::rules::shamsuzzoha_lee2008::lambda_for_ms(&f, 2.0, 1.0, 0.3, 100.0).unwrap();
-        let zl = pidlab::freq::solve_for_ms(2.0, 1e-3 * r, 50.0 * (1.0 + r), |l| {
+        let zl = pidlab::analysis::freq::solve_for_ms(2.0, 1e-3 * r, 50.0 * (1.0 + r), |l| {
             Ok((f.plant(), zhang1999_controller(&f, l)?))
         })
         .unwrap();

@@ -2,8 +2,8 @@
 //! for IPDT-IR processes — Section 6 (boiler steam drum), Section 3 limits, Tables 2-8 against
 //! the exact computation, the responses of Figs. 8-12 with their metrics, and timings.
 
-use pidlab::controller::{Controller, Pid};
-use pidlab::freq::analyze;
+use pidlab::analysis::freq::analyze;
+use pidlab::model::controller::{Controller, Pid};
 use pidlab::rules::arvanitis2012::*;
 use pidlab::rules::{self, Params};
 use pidlab::sim::{simulate, Scenario};

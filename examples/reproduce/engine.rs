@@ -1,11 +1,11 @@
 //! Engine section: the exact simulator and the frequency analysis on the papers' loops, against
 //! the independently checked values of ERRATA.md / CLARIFICATIONS.md.
 
-use pidlab::controller::{lead_lag, Pid};
-use pidlab::freq::analyze;
-use pidlab::plant::{Family, Plant};
+use pidlab::analysis::freq::analyze;
+use pidlab::model::controller::{lead_lag, Pid};
+use pidlab::model::plant::{Family, Plant};
+use pidlab::model::tf::Tf;
 use pidlab::sim::{simulate, Scenario};
-use pidlab::tf::Tf;
 
 pub fn report() -> String {
     let mut s = String::from("## Engine: exact dead-time loops\n\n");

@@ -1,15 +1,15 @@
 //! Reproduction section: Kaya (2020), I-PD rules for stable inverse-response processes.
 
-use pidlab::controller::Controller;
-use pidlab::freq::analyze;
-use pidlab::plant::{Family, Plant};
-use pidlab::poly::Poly;
+use pidlab::analysis::freq::analyze;
+use pidlab::model::controller::Controller;
+use pidlab::model::plant::{Family, Plant};
+use pidlab::model::poly::Poly;
+use pidlab::model::tf::Tf;
 use pidlab::rules::kaya2020::{
     self, comparisons, example_ipd, normalized_settings, reduce_to_fopdt_ir_with, scenario_of,
     settings, Criterion, Reduction, EX1, EX1_PERTURBED, EX2_MODEL, EX3_MODEL, TABLE_I,
 };
 use pidlab::sim::{simulate, Scenario, SimResult};
-use pidlab::tf::Tf;
 use std::fmt::Write;
 
 /// A simulation and its Ms cell, or the error.
@@ -184,7 +184,7 @@ fn claims(rows: &[Row]) -> String {
         }
         best.map_or("–".to_string(), |(n, v)| format!("{n} ({v:.3})"))
     };
-    let servo = |r: &SimResult, f: &dyn Fn(&pidlab::metrics::Metrics) -> Option<f64>| {
+    let servo = |r: &SimResult, f: &dyn Fn(&pidlab::analysis::metrics::Metrics) -> Option<f64>| {
         r.metrics.servo.as_ref().and_then(f).unwrap_or(f64::NAN)
     };
     format!(

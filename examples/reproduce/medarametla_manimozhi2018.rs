@@ -1,11 +1,11 @@
 //! Reproduction section: Medarametla & Manimozhi (2018), PID × second-order filter for
 //! integrating processes (Table 3, Table 1 / Fig. 2, Tables 4-5, Example 6's CSTR).
 
-use pidlab::controller::Controller;
-use pidlab::cstr::{self, CstrParams, CstrScenario};
-use pidlab::metrics::Metrics;
-use pidlab::plant::{Family, Plant};
+use pidlab::analysis::metrics::Metrics;
+use pidlab::model::controller::Controller;
+use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::medarametla_manimozhi2018 as mm;
+use pidlab::rules::medarametla_manimozhi2018::cstr::{self, CstrParams, CstrScenario};
 use pidlab::sim::{simulate, Scenario};
 use std::fmt::Write;
 
@@ -476,7 +476,7 @@ fn cstr_section() -> String {
         .map(|c| c.controller());
     let _ = writeln!(
         o,
-        "Closed loop on the **nonlinear** reactor (RK4, h = 0.01 s, 1 s measurement delay; `pidlab::cstr`), \
+        "Closed loop on the **nonlinear** reactor (RK4, h = 0.01 s, 1 s measurement delay; `pidlab::rules::medarametla_manimozhi2018::cstr`), \
          and for comparison the same controller on the linear model of Eq. (53) (exact-delay simulator). \
          Servo: set point 344 → 346 K at t = 0; regulatory: jacket temperature 317.4 → 310 K (a −7.4 K \
          step added to the controller's T_j) at t = 0. TV on 0.1 s samples.\n"
@@ -629,7 +629,7 @@ fn cstr_section() -> String {
 
 /// Unit-step response of a proper rational `g` at `times` by classical RK4 (step `h`) on its
 /// controllable canonical realization (an independent reference for the simulator).
-fn step_rk4(g: &pidlab::tf::Tf, times: &[f64], h: f64) -> Vec<f64> {
+fn step_rk4(g: &pidlab::model::tf::Tf, times: &[f64], h: f64) -> Vec<f64> {
     let (q, r) = g.split_improper();
     let d0 = q.coef(0);
     let n = g.den.degree();
@@ -691,7 +691,7 @@ fn ms_section() -> String {
         let Ok(c) = d.pid().to_controller() else {
             continue;
         };
-        let a = pidlab::freq::analyze(&e.family.plant(), &c);
+        let a = pidlab::analysis::freq::analyze(&e.family.plant(), &c);
         let (ms, w) = match &a {
             Ok(a) => (
                 a.ms.map_or("—".into(), |m| format!("{m:.4}")),
@@ -708,7 +708,7 @@ fn ms_section() -> String {
             e.id, e.lambda, e.ms_printed
         );
         if e.id == "ex5" {
-            if let Ok(a) = pidlab::freq::analyze(&mm::example5_process(), &c) {
+            if let Ok(a) = pidlab::analysis::freq::analyze(&mm::example5_process(), &c) {
                 let _ = writeln!(
                     o,
                     "| ex5 controller on the process of Eq. (49) | 1.895 | {} | {} | 2.81 | |",
@@ -739,7 +739,7 @@ fn ms_section() -> String {
         let plant = process(&e);
         let cell = c
             .controller()
-            .and_then(|ctrl| pidlab::freq::analyze(&plant, &ctrl))
+            .and_then(|ctrl| pidlab::analysis::freq::analyze(&plant, &ctrl))
             .map(|a| {
                 (
                     a.ms.map_or(format!("— ({})", a.verdict), |m| format!("{m:.4}")),

@@ -1,9 +1,9 @@
 //! Reproduction section: Praveen Kumar & Narayana, PID × lead-lag for IFOPDT processes with
 //! inverse response (`praveen_kumar`).
 
-use pidlab::controller::Controller;
-use pidlab::freq::analyze;
-use pidlab::plant::Plant;
+use pidlab::analysis::freq::analyze;
+use pidlab::model::controller::Controller;
+use pidlab::model::plant::Plant;
 use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
 use pidlab::rules::{self, Params};
 use pidlab::sim::{simulate, Scenario};

@@ -3,9 +3,9 @@
 //! worst-case mismatch), the printed closed forms, and the λ guideline curves of Figs. 7-9
 //! (CSV under `docs/figures/`).
 
-use pidlab::controller::Controller;
-use pidlab::freq::analyze;
-use pidlab::plant::{Family, Plant};
+use pidlab::analysis::freq::analyze;
+use pidlab::model::controller::Controller;
+use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::shamsuzzoha_lee2008 as ssl;
 use pidlab::rules::shamsuzzoha_lee2008::{
     design, imc_pid, lambda_for_ms, studies, weighting_filter, ImcModel, DIP_ALPHA,
@@ -470,7 +470,7 @@ pub fn report() -> String {
             res.metrics.regulatory.map(|m| m.iae)
         });
         // Zhang et al. (rule derived in `zhang1999_pid`) at the same Ms = 2
-        let zl = pidlab::freq::solve_for_ms(2.0, 1e-3 * r, 50.0 * (1.0 + r), |l| {
+        let zl = pidlab::analysis::freq::solve_for_ms(2.0, 1e-3 * r, 50.0 * (1.0 + r), |l| {
             Ok((f.plant(), ssl::zhang1999_controller(&f, l)?))
         })
         .ok();

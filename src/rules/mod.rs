@@ -7,9 +7,9 @@
 //! - `pub fn presets() -> Vec<Preset>`: the paper's examples and the comparison settings it
 //!   quotes, each a plant plus either a method call or a literal controller.
 
-use crate::controller::Controller;
 use crate::error::{Error, Result};
-use crate::plant::Plant;
+use crate::model::controller::Controller;
+use crate::model::plant::Plant;
 use serde::Serialize;
 use serde_json::{Map, Value};
 
@@ -214,8 +214,8 @@ pub fn add_analysis(
     plant: &Plant,
     c: &Controller,
     details: &mut Map<String, Value>,
-) -> Option<crate::freq::Analysis> {
-    match crate::freq::analyze(plant, c) {
+) -> Option<crate::analysis::freq::Analysis> {
+    match crate::analysis::freq::analyze(plant, c) {
         Ok(a) => {
             details.insert("stable".into(), Value::from(a.stable));
             details.insert("verdict".into(), Value::from(a.verdict.clone()));

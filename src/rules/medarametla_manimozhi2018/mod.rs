@@ -66,12 +66,14 @@
 //!   paper does not state, so its use always adds a warning.
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+pub mod cstr;
+
 use crate::api::{controller_json, family_json, plant_json};
-use crate::controller::{Controller, ModelLoop, Pid};
 use crate::error::{Error, Result};
-use crate::plant::{Family, Plant};
-use crate::poly::Poly;
-use crate::tf::Tf;
+use crate::model::controller::{Controller, ModelLoop, Pid};
+use crate::model::plant::{Family, Plant};
+use crate::model::poly::Poly;
+use crate::model::tf::Tf;
 use nalgebra::{DMatrix, DVector};
 use serde_json::{json, Map, Value};
 
@@ -838,13 +840,13 @@ pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> 
 }
 
 /// λ such that the true Ms (exact delay; the set-point filter does not enter Ms) equals
-/// `ms`, by [`crate::freq::solve_for_ms`] over λ ∈ [0.02θ, 100θ] (the smallest such λ:
+/// `ms`, by [`crate::analysis::freq::solve_for_ms`] over λ ∈ [0.02θ, 100θ] (the smallest such λ:
 /// Ms falls as λ grows from the smallest admissible λ). Errors name `params.target_ms`.
 pub fn lambda_for_ms(family: &Family, ms: f64) -> Result<f64> {
     check_family(family)?;
     let th = family.theta();
     let plant = family.plant();
-    crate::freq::solve_for_ms(ms, 0.02 * th, 100.0 * th, |l| {
+    crate::analysis::freq::solve_for_ms(ms, 0.02 * th, 100.0 * th, |l| {
         let d = design(family, l)?;
         Ok((plant.clone(), d.pid().to_controller()?))
     })
@@ -853,7 +855,7 @@ pub fn lambda_for_ms(family: &Family, ms: f64) -> Result<f64> {
 /// The true Ms (exact delay) of a design, `None` when the loop is unstable.
 pub fn true_ms(d: &Design) -> Result<Option<f64>> {
     let c = d.pid().to_controller()?;
-    let a = crate::freq::analyze(&d.family.plant(), &c)?;
+    let a = crate::analysis::freq::analyze(&d.family.plant(), &c)?;
     Ok(if a.stable { a.ms } else { None })
 }
 

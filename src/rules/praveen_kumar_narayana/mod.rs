@@ -72,10 +72,10 @@
 //! presets with our reconstruction of their structure ([`pai2010_controller`]).
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
-use crate::controller::{lead_lag, Controller, Pid};
 use crate::error::{Error, Result};
-use crate::plant::{Family, Plant};
-use crate::poly::Poly;
+use crate::model::controller::{lead_lag, Controller, Pid};
+use crate::model::plant::{Family, Plant};
+use crate::model::poly::Poly;
 use nalgebra::{Matrix4, Vector4};
 use serde_json::{json, Map, Value};
 
@@ -625,7 +625,7 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
     })
 }
 
-/// Frequency analysis of the exact-delay loop ([`crate::freq::analyze`]): Ms (the true
+/// Frequency analysis of the exact-delay loop ([`crate::analysis::freq::analyze`]): Ms (the true
 /// supremum, including the high-frequency limit of the neutral loop), its frequency, |L(j∞)|,
 /// GM, PM, delay margin and Nyquist stability.
 fn add_frequency_details(
@@ -689,7 +689,7 @@ fn lambda_for_ms(
     let ms_of = |l: f64| -> f64 {
         loop_of(l)
             .ok()
-            .and_then(|(pl, c)| crate::freq::analyze(&pl, &c).ok())
+            .and_then(|(pl, c)| crate::analysis::freq::analyze(&pl, &c).ok())
             .and_then(|a| if a.stable { a.ms } else { None })
             .unwrap_or(f64::INFINITY)
     };
@@ -727,7 +727,7 @@ fn lambda_for_ms(
             ),
         ));
     }
-    let l = crate::freq::solve_for_ms(ms, l_min, hi * 0.9999, loop_of)?;
+    let l = crate::analysis::freq::solve_for_ms(ms, l_min, hi * 0.9999, loop_of)?;
     details.insert("target_ms".into(), json!(ms));
     Ok(l)
 }
@@ -764,7 +764,7 @@ pub fn ex2_process() -> Plant {
         .mul(&Poly::linear(0.1, 1.0))
         .mul(&Poly::linear(0.5, 1.0));
     Plant {
-        tf: crate::tf::Tf {
+        tf: crate::model::tf::Tf {
             num: Poly::linear(-0.25, 0.5),
             den,
         },

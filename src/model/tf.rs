@@ -1,7 +1,7 @@
-//! Rational transfer functions `num(s)/den(s)` (no dead time; see [`crate::plant`]).
+//! Rational transfer functions `num(s)/den(s)` (no dead time; see [`crate::model::plant`]).
 
 use crate::error::{Error, Result};
-use crate::poly::{Poly, C64};
+use crate::model::poly::{Poly, C64};
 
 /// A rational transfer function `num(s)/den(s)`.
 #[derive(Debug, Clone, PartialEq)]

@@ -44,10 +44,10 @@
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
 use crate::api::controller_json;
-use crate::controller::{lead_lag, Pid};
 use crate::error::{Error, Result};
-use crate::plant::{Family, Plant};
-use crate::poly::Poly;
+use crate::model::controller::{lead_lag, Pid};
+use crate::model::plant::{Family, Plant};
+use crate::model::poly::Poly;
 use crate::sim::{simulate, Scenario};
 use serde_json::{json, Map, Value};
 use std::f64::consts::PI;
@@ -2405,8 +2405,11 @@ fn boiler_plant_json() -> Value {
 ///   measurement (c = 0; the paper gives only b), no filter.
 /// - Gu et al. 2006: ideal IMC-PID on the error with a derivative filter N = 10 (the paper
 ///   gives no filter; a set-point step on an ideal derivative would be an impulse).
-pub fn comparison_controllers() -> Vec<(&'static str, &'static str, crate::controller::Controller)>
-{
+pub fn comparison_controllers() -> Vec<(
+    &'static str,
+    &'static str,
+    crate::model::controller::Controller,
+)> {
     let mut v = vec![];
     if let Ok(c) = Pid::parallel(1.61, 1.61 / 11.5, 0.0)
         .series_filter(lead_lag(1.15, 0.115))

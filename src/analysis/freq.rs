@@ -17,12 +17,12 @@
 //!   `|L(j∞)| ≥ 1` with a dead time is neutral-unstable; an improper `L` is ill-posed; a
 //!   set-point path with unstable poles of its own is internally unstable.
 
-use crate::controller::Controller;
 use crate::error::{Error, Result};
-use crate::plant::Plant;
-use crate::poly::{Poly, C64};
-use crate::ss::common_denominator;
-use crate::tf::Tf;
+use crate::model::controller::Controller;
+use crate::model::plant::Plant;
+use crate::model::poly::{Poly, C64};
+use crate::model::ss::common_denominator;
+use crate::model::tf::Tf;
 
 /// Result of [`analyze`]. Angles in degrees, frequencies in rad per time unit.
 #[derive(Debug, Clone, PartialEq)]
@@ -59,7 +59,7 @@ pub struct Analysis {
     pub delay_margin: Option<f64>,
     /// Nyquist samples `[ω, Re L, Im L]` for plotting (at most ~1500, ω ascending).
     pub nyquist: Vec<[f64; 3]>,
-    /// With a model-based set-point path ([`crate::controller::ModelLoop`]): whether that
+    /// With a model-based set-point path ([`crate::model::controller::ModelLoop`]): whether that
     /// model loop is stable (an unstable one makes `stable` false); `None` without one.
     pub model_loop_stable: Option<bool>,
     /// Ms of the model loop (its own sensitivity), `None` without one.
@@ -282,7 +282,7 @@ pub fn max_sensitivity(plant: &Plant, c: &Controller) -> Result<(f64, Option<f64
 }
 
 /// Full frequency analysis (see the module docs). The loop is `L = Cy·P·e^{−θs}`; a
-/// model-based set-point path ([`crate::controller::ModelLoop`]) is a feedforward from `r`
+/// model-based set-point path ([`crate::model::controller::ModelLoop`]) is a feedforward from `r`
 /// that does not enter `L`, but its own loop must be stable too, so it is analyzed as well
 /// (`model_loop_stable`, `model_loop_ms`) and an unstable one makes the verdict unstable.
 pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {

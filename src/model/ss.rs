@@ -4,10 +4,10 @@
 //! denominator, so a shared integrator (as in I-PD, `Cr = K_i/s`, `Cy = K_p + K_i/s + K_d s`)
 //! is one state integrating `r − y`, never two states integrating `r` and `y` apart.
 
-use crate::controller::Controller;
 use crate::error::{Error, Result};
-use crate::poly::Poly;
-use crate::tf::Tf;
+use crate::model::controller::Controller;
+use crate::model::poly::Poly;
+use crate::model::tf::Tf;
 use nalgebra::{DMatrix, DVector};
 
 /// `ẋ = A x + B u`, `y = C x + D u` (single output; `B` has one column per input).
@@ -231,8 +231,8 @@ pub fn balance(a: &DMatrix<f64>) -> DVector<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::controller::Pid;
-    use crate::poly::C64;
+    use crate::model::controller::Pid;
+    use crate::model::poly::C64;
 
     fn eval_ss(ss: &Ss, s: C64, input: usize) -> C64 {
         let n = ss.order();

@@ -39,12 +39,12 @@
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
 use crate::api::{controller_json, family_json, plant_json, tf_json};
-use crate::controller::{lag, Controller, Pid};
 use crate::error::{Error, Result};
-use crate::plant::{Family, Plant};
-use crate::poly::Poly;
+use crate::model::controller::{lag, Controller, Pid};
+use crate::model::plant::{Family, Plant};
+use crate::model::poly::Poly;
+use crate::model::tf::Tf;
 use crate::sim::Scenario;
-use crate::tf::Tf;
 use nalgebra::{DMatrix, DVector};
 use serde_json::{json, Map, Value};
 
@@ -787,7 +787,7 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
     }
     let mut warnings = d.warnings;
     // Robustness of the loop on the plant as given (Ms is the paper's measure).
-    match crate::freq::analyze(plant, &d.controller) {
+    match crate::analysis::freq::analyze(plant, &d.controller) {
         Ok(a) => {
             details.insert("ms".into(), json!(a.ms));
             details.insert("stable".into(), json!(a.stable));
@@ -809,7 +809,7 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
     })
 }
 
-/// λ for a target Ms: solved with the engine ([`crate::freq::solve_for_ms`]) on the loop of
+/// λ for a target Ms: solved with the engine ([`crate::analysis::freq::solve_for_ms`]) on the loop of
 /// the plant as given (not the φ design model). The search interval scales with the design
 /// dead time (the DIP guideline puts λ between 1.2θ and 2.3θ for Ms 2.0-1.6).
 pub fn lambda_for_ms(family: &Family, ms: f64, zeta: f64, gamma: f64, phi: f64) -> Result<f64> {
@@ -825,7 +825,7 @@ pub fn lambda_for_ms(family: &Family, ms: f64, zeta: f64, gamma: f64, phi: f64) 
         (base * 200.0).min(phi * 2.0).max(base * 1e-2 * 4.0),
     );
     let plant = family.plant();
-    crate::freq::solve_for_ms(ms, lo, hi, |l| {
+    crate::analysis::freq::solve_for_ms(ms, lo, hi, |l| {
         let d = design(family, l, zeta, gamma, phi)?;
         Ok((plant.clone(), d.controller))
     })

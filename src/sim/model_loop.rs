@@ -1,5 +1,5 @@
 //! Loops with several exact dead times: the model-based set-point structures of
-//! [`ModelLoop`](crate::controller::ModelLoop) (an internal process model with its own dead
+//! [`ModelLoop`](crate::model::controller::ModelLoop) (an internal process model with its own dead
 //! time θ_m beside the plant's θ).
 //!
 //! ## Method
@@ -18,14 +18,14 @@
 //! is smooth, so the error stays `O(h⁶)` for any ratio θ/θ_m. A piece of the grid length
 //! reuses one propagator; the cut pieces get their own.
 
-use crate::controller::Controller;
 use crate::error::{Error, Result};
-use crate::plant::Plant;
+use crate::model::controller::Controller;
+use crate::model::plant::Plant;
+use crate::model::ss::{balance, realize, realize_paths, Ss};
 use crate::sim::{
     interpolation_inverse, lagrange, piece_exponential, sample, Scenario, SimResult, Trajectory,
     DEG, NODES,
 };
-use crate::ss::{balance, realize, realize_paths, Ss};
 use nalgebra::{DMatrix, DVector};
 use std::collections::hash_map::Entry;
 use std::collections::HashMap;
@@ -118,7 +118,7 @@ fn need<'a>(
 }
 
 impl MultiModel {
-    /// The loop of a controller with a model loop (see [`crate::controller::ModelLoop`]).
+    /// The loop of a controller with a model loop (see [`crate::model::controller::ModelLoop`]).
     pub(crate) fn new(plant: &Plant, c: &Controller, setpoint_step: bool) -> Result<MultiModel> {
         let ml = c
             .model_loop

@@ -31,9 +31,9 @@
 //! simulator integrates both dead times exactly.
 
 use crate::error::{finite, positive, Error, Result};
-use crate::plant::Plant;
-use crate::poly::Poly;
-use crate::tf::Tf;
+use crate::model::plant::Plant;
+use crate::model::poly::Poly;
+use crate::model::tf::Tf;
 
 /// A controller `u = Cr·r − Cy·y`.
 #[derive(Debug, Clone, PartialEq)]

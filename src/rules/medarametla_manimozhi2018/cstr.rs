@@ -28,10 +28,10 @@
 //! grid; right- and left-hand limits are kept at grid points so that RK4 never straddles a
 //! discontinuity.
 
-use crate::controller::Controller;
 use crate::error::{Error, Result};
-use crate::poly::Poly;
-use crate::tf::Tf;
+use crate::model::controller::Controller;
+use crate::model::poly::Poly;
+use crate::model::tf::Tf;
 use nalgebra::{DMatrix, DVector};
 
 /// Parameters of Eqs. (51)-(52) (SI units of Table 6: m³, s, K, kJ, kmol, kg).

@@ -27,16 +27,18 @@
 //! error is `O(h⁶)`. Output samples `t_k = k·dt` are right-hand limits, interpolated within
 //! their piece; the metrics integrate the continuous piecewise-polynomial response.
 //!
-//! A controller with a model-based set-point path ([`crate::controller::ModelLoop`]: an
+//! A controller with a model-based set-point path ([`crate::model::controller::ModelLoop`]: an
 //! internal model with its own dead time θ_m) has two delays; [`simulate`] hands it to the
 //! two-delay version of this method (`sim_multi.rs`: the same pieces, cut at every
 //! `t_e + iθ + jθ_m`).
 
-use crate::controller::Controller;
+pub(crate) mod model_loop;
+
+use crate::analysis::metrics::{self, Windows};
 use crate::error::{non_negative, positive, Error, Result};
-use crate::metrics::{self, Windows};
-use crate::plant::{Family, Plant};
-use crate::ss::{balance, realize};
+use crate::model::controller::Controller;
+use crate::model::plant::{Family, Plant};
+use crate::model::ss::{balance, realize};
 use nalgebra::{DMatrix, DVector};
 
 /// Interpolation degree on each piece (nodes per piece = DEG + 1).
@@ -711,7 +713,7 @@ fn isens_weights(plant: &Plant, sc: &Scenario) -> (Option<f64>, Option<f64>) {
 pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResult> {
     sc.validate().map_err(|e| e.within("scenario"))?;
     if c.model_loop.is_some() {
-        return crate::sim_multi::simulate(plant, c, sc);
+        return crate::sim::model_loop::simulate(plant, c, sc);
     }
     let m = LoopModel::new(
         plant,

@@ -3,15 +3,15 @@
 //! `crate::wasm` converts JavaScript values to and from these; native tests and fuzzing drive
 //! the very same functions.
 
-use crate::controller::{Controller, ModelLoop};
+use crate::analysis::freq::{analyze as analyze_loop, Analysis};
+use crate::analysis::metrics::Metrics;
 use crate::error::{Error, Result};
-use crate::freq::{analyze as analyze_loop, Analysis};
-use crate::metrics::Metrics;
-use crate::plant::{Family, Plant};
-use crate::poly::Poly;
+use crate::model::controller::{Controller, ModelLoop};
+use crate::model::plant::{Family, Plant};
+use crate::model::poly::Poly;
+use crate::model::tf::Tf;
 use crate::rules::{self, Params};
 use crate::sim::{simulate as simulate_loop, Scenario, SimResult, Step};
-use crate::tf::Tf;
 use serde_json::{json, Map, Value};
 
 /// Largest polynomial accepted at the boundary (coefficients).
@@ -136,7 +136,7 @@ pub fn parse_plant(v: &Value, path: &str) -> Result<Plant> {
 /// Parses an API.md controller `{cr: {num, den}, cy: {num, den}}`.
 ///
 /// An optional `model_loop: { plant, cr, cy }` adds a model-based set-point path (see
-/// [`crate::controller::ModelLoop`]): `u = Cr·r − Cy·y + u₁ + Cy·y_m`, `u₁ = cr·r − cy·y_m`,
+/// [`crate::model::controller::ModelLoop`]): `u = Cr·r − Cy·y + u₁ + Cy·y_m`, `u₁ = cr·r − cy·y_m`,
 /// `y_m` = the model plant (dead time included) driven by `u₁`.
 pub fn parse_controller(v: &Value, path: &str) -> Result<Controller> {
     let cr = tf(field(v, "cr", path)?, &join(path, "cr"))?;

@@ -5,8 +5,8 @@
 //! their own derivation, explicitly named there.
 
 use crate::error::{non_negative, positive, Error, Result};
-use crate::poly::{Poly, C64};
-use crate::tf::Tf;
+use crate::model::poly::{Poly, C64};
+use crate::model::tf::Tf;
 
 /// Largest dead time accepted (in the plant's time unit).
 pub const MAX_DELAY: f64 = 1e6;

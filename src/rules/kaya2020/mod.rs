@@ -32,10 +32,10 @@
 
 use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
 use crate::api::{controller_json, family_json, plant_json};
-use crate::controller::Pid;
 use crate::error::{Error, Result};
-use crate::plant::{Family, Plant};
-use crate::poly::C64;
+use crate::model::controller::Pid;
+use crate::model::plant::{Family, Plant};
+use crate::model::poly::C64;
 use serde_json::{json, Map, Value};
 
 /// Citation of the paper.
@@ -375,7 +375,7 @@ pub fn reduce_to_fopdt_ir(plant: &Plant) -> Result<(Family, Map<String, Value>)>
 /// companion-matrix eigenvalues return as a small cluster of complex values (spread
 /// ~ ε^{1/m}), are replaced by the cluster mean (exact to rounding); distinct real roots are
 /// kept. Errors name `plant.den`.
-fn lag_time_constants(den: &crate::poly::Poly) -> Result<Vec<f64>> {
+fn lag_time_constants(den: &crate::model::poly::Poly) -> Result<Vec<f64>> {
     let mut roots: Vec<C64> = den.roots();
     if roots.is_empty() {
         return Err(Error::new(
@@ -780,9 +780,9 @@ pub const EX1_PERTURBED: Family = Family::FopdtIr {
 pub fn ex2_plant() -> Plant {
     // (2s+1)(s+1)(0.5s+1) = s³ + 3.5s² + 3.5s + 1
     Plant {
-        tf: crate::tf::Tf {
-            num: crate::poly::Poly::from_desc(&[-2.0, 1.0]),
-            den: crate::poly::Poly::from_desc(&[1.0, 3.5, 3.5, 1.0]),
+        tf: crate::model::tf::Tf {
+            num: crate::model::poly::Poly::from_desc(&[-2.0, 1.0]),
+            den: crate::model::poly::Poly::from_desc(&[1.0, 3.5, 3.5, 1.0]),
         },
         delay: 0.5,
         family: None,
@@ -792,9 +792,9 @@ pub fn ex2_plant() -> Plant {
 /// Example 3 process (Jeng & Lin): (−2s+1)/(s+1)⁵.
 pub fn ex3_plant() -> Plant {
     Plant {
-        tf: crate::tf::Tf {
-            num: crate::poly::Poly::from_desc(&[-2.0, 1.0]),
-            den: crate::poly::Poly::from_desc(&[1.0, 5.0, 10.0, 10.0, 5.0, 1.0]),
+        tf: crate::model::tf::Tf {
+            num: crate::model::poly::Poly::from_desc(&[-2.0, 1.0]),
+            den: crate::model::poly::Poly::from_desc(&[1.0, 5.0, 10.0, 10.0, 5.0, 1.0]),
         },
         delay: 0.0,
         family: None,
@@ -969,7 +969,7 @@ pub fn comparisons() -> Vec<Comparison> {
 
 impl Comparison {
     /// The controller as (Cr, Cy).
-    pub fn controller(&self) -> Result<crate::controller::Controller> {
+    pub fn controller(&self) -> Result<crate::model::controller::Controller> {
         match self.td {
             Some(td) => Pid::ideal(self.kc, self.ti, td)
                 .filter_n(COMPARISON_N)
