@@ -1,0 +1,197 @@
+//! Generic numerics, written once for every rule: Brent's root finder on a bracket, real
+//! roots of a polynomial by recursive isolation, golden-section minimization.
+//!
+//! Written by hand: the candidates on crates.io (`roots`, `argmin`) either do not take a
+//! caller's bracket with its end values already evaluated (each evaluation here can be a whole
+//! frequency analysis or simulation) or pull in far more code than these ~200 lines, and the
+//! wasm module's size matters (issue 15).
+
+use crate::error::Result;
+
+/// Brent's method on `[a, b]` with `f(a)·f(b) ≤ 0`; stops when the bracket is below
+/// `xtol` or after `maxit` evaluations. Returns `(x, evaluations)`.
+pub fn brent(
+    mut f: impl FnMut(f64) -> f64,
+    a0: f64,
+    b0: f64,
+    fa0: f64,
+    fb0: f64,
+    xtol: f64,
+    maxit: usize,
+) -> Option<(f64, usize)> {
+    let (mut a, mut b, mut fa, mut fb) = (a0, b0, fa0, fb0);
+    if !(fa.is_finite() && fb.is_finite()) || fa * fb > 0.0 {
+        return None;
+    }
+    if fa == 0.0 {
+        return Some((a, 0));
+    }
+    if fb == 0.0 {
+        return Some((b, 0));
+    }
+    let (mut c, mut fc) = (a, fa);
+    let mut d = b - a;
+    let mut e = d;
+    for it in 1..=maxit {
+        if fb * fc > 0.0 {
+            c = a;
+            fc = fa;
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            a = b;
+            b = c;
+            c = a;
+            fa = fb;
+            fb = fc;
+            fc = fa;
+        }
+        let tol1 = 2.0 * f64::EPSILON * b.abs() + 0.5 * xtol;
+        let xm = 0.5 * (c - b);
+        if xm.abs() <= tol1 || fb == 0.0 {
+            return Some((b, it));
+        }
+        if e.abs() >= tol1 && fa.abs() > fb.abs() {
+            let s = fb / fa;
+            let (mut p, mut q);
+            if a == c {
+                p = 2.0 * xm * s;
+                q = 1.0 - s;
+            } else {
+                let qq = fa / fc;
+                let r = fb / fc;
+                p = s * (2.0 * xm * qq * (qq - r) - (b - a) * (r - 1.0));
+                q = (qq - 1.0) * (r - 1.0) * (s - 1.0);
+            }
+            if p > 0.0 {
+                q = -q;
+            }
+            p = p.abs();
+            let min1 = 3.0 * xm * q - (tol1 * q).abs();
+            let min2 = (e * q).abs();
+            if 2.0 * p < min1.min(min2) {
+                e = d;
+                d = p / q;
+            } else {
+                d = xm;
+                e = d;
+            }
+        } else {
+            d = xm;
+            e = d;
+        }
+        a = b;
+        fa = fb;
+        if d.abs() > tol1 {
+            b += d;
+        } else {
+            b += tol1.copysign(xm);
+        }
+        fb = f(b);
+        if !fb.is_finite() {
+            return None;
+        }
+    }
+    Some((b, maxit))
+}
+
+/// Evaluates the polynomial with ascending coefficients `c` at `x` (Horner).
+pub fn horner(c: &[f64], x: f64) -> f64 {
+    c.iter().rev().fold(0.0, |acc, &a| acc * x + a)
+}
+
+/// Every real root in (lo, hi) of the polynomial with ascending coefficients `c`, by
+/// recursive isolation: the roots of p′ split (lo, hi) into monotone pieces of p, each holding
+/// at most one root, found by Brent's method (degree ≤ 1: closed form).
+pub fn real_roots_between(c: &[f64], lo: f64, hi: f64) -> Vec<f64> {
+    let mut n = c.len();
+    while n > 0 && c[n - 1] == 0.0 {
+        n -= 1;
+    }
+    let c = &c[..n];
+    if n <= 1 {
+        return vec![];
+    }
+    if n == 2 {
+        let r = -c[0] / c[1];
+        return if r > lo && r < hi { vec![r] } else { vec![] };
+    }
+    let dc: Vec<f64> = c
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, a)| i as f64 * a)
+        .collect();
+    let mut pts = vec![lo];
+    pts.extend(real_roots_between(&dc, lo, hi));
+    pts.push(hi);
+    let mut out = vec![];
+    for w in pts.windows(2) {
+        let (a, b) = (w[0], w[1]);
+        let (fa, fb) = (horner(c, a), horner(c, b));
+        if fb == 0.0 && b < hi {
+            out.push(b);
+        } else if fa * fb < 0.0 {
+            if let Some((x, _)) = brent(|x| horner(c, x), a, b, fa, fb, 1e-16 * b.abs(), 200) {
+                out.push(x);
+            }
+        }
+    }
+    out.dedup_by(|a, b| (*a - *b).abs() <= 1e-14 * b.abs());
+    out
+}
+
+/// Every positive real root of a polynomial (ascending coefficients), within the Cauchy bound.
+pub fn positive_real_roots(c: &[f64]) -> Vec<f64> {
+    let mut n = c.len();
+    while n > 0 && c[n - 1] == 0.0 {
+        n -= 1;
+    }
+    if n <= 1 {
+        return vec![];
+    }
+    let lead = c[n - 1];
+    let bound = 1.0
+        + c[..n - 1]
+            .iter()
+            .fold(0.0_f64, |m, a| m.max((a / lead).abs()));
+    if !bound.is_finite() {
+        return vec![];
+    }
+    real_roots_between(&c[..n], 0.0, bound * (1.0 + 1e-12))
+}
+
+/// Golden-section minimization of `f` on `[a, b]` to a bracket of `tol`; returns
+/// (x, f(x), evaluations).
+pub fn golden_min(
+    mut f: impl FnMut(f64) -> Result<f64>,
+    mut a: f64,
+    mut b: f64,
+    tol: f64,
+    maxit: usize,
+) -> Result<(f64, f64, usize)> {
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    let mut c = b - r * (b - a);
+    let mut d = a + r * (b - a);
+    let mut fc = f(c)?;
+    let mut fd = f(d)?;
+    let mut n = 2;
+    while (b - a).abs() > tol && n < maxit {
+        if fc <= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - r * (b - a);
+            fc = f(c)?;
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + r * (b - a);
+            fd = f(d)?;
+        }
+        n += 1;
+    }
+    Ok(if fc <= fd { (c, fc, n) } else { (d, fd, n) })
+}
