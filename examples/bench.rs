@@ -232,7 +232,7 @@ fn main() {
     let json_update = || -> Option<()> {
         let ctl = match &tune_call {
             Some((id, p)) => {
-                let params = Value::Object(p.0.clone());
+                let params = serde_json::to_value(p).unwrap_or(Value::Null);
                 let input = serde_json::json!({"method": id, "plant": plant_v, "params": params});
                 api::tune(&input).ok()?.get("controller")?.clone()
             }
@@ -278,7 +278,10 @@ fn main() {
     if methods.is_empty() {
         return;
     }
-    let presets = rules::presets();
+    let presets = pidlab::api::presets()["presets"]
+        .as_array()
+        .cloned()
+        .unwrap_or_default();
     let per = runs.min(200);
     println!();
     println!("Each method tuned on its first preset ({per} runs each; update = tune + simulate the preset's scenario + analyze):");
@@ -288,24 +291,32 @@ fn main() {
     for m in methods {
         let Some(p) = presets
             .iter()
-            .find(|p| p.tune.get("method").and_then(Value::as_str) == Some(m.id.as_str()))
+            .find(|p| p["tune"].get("method").and_then(Value::as_str) == Some(m.id.as_str()))
         else {
             println!("| {} | (no preset) | | | | | |", m.id);
             continue;
         };
         // The design model is tune.plant when the preset gives one (Kaya 2020 Ex. 2).
-        let design = p.tune.get("plant").and_then(plant_of);
-        let (Some(pl), Some(sc)) = (plant_of(&p.plant), scenario_of(&p.scenario)) else {
-            println!("| {} | {} | (preset not parsed) | | | | |", m.id, p.id);
+        let design = p["tune"].get("plant").and_then(plant_of);
+        let (Some(pl), Some(sc)) = (plant_of(&p["plant"]), scenario_of(&p["scenario"])) else {
+            println!(
+                "| {} | {} | (preset not parsed) | | | | |",
+                m.id,
+                p["id"].as_str().unwrap_or("")
+            );
             continue;
         };
-        let params =
-            Params::from_value(p.tune.get("params").unwrap_or(&Value::Null)).unwrap_or_default();
+        let params = pidlab::api::params_from_json(p["tune"].get("params").unwrap_or(&Value::Null))
+            .unwrap_or_default();
         let dp = design.unwrap_or_else(|| pl.clone());
         let c = match rules::tune(&m.id, &dp, &params) {
             Ok(t) => t.controller,
             Err(e) => {
-                println!("| {} | {} | error: {e} | | | | |", m.id, p.id);
+                println!(
+                    "| {} | {} | error: {e} | | | | |",
+                    m.id,
+                    p["id"].as_str().unwrap_or("")
+                );
                 continue;
             }
         };
@@ -328,7 +339,7 @@ fn main() {
         println!(
             "| {} | {} | {} | {} | {n} | {} | {} |",
             m.id,
-            p.id,
+            p["id"].as_str().unwrap_or(""),
             fmt(tt.median),
             fmt(tt.p95),
             fmt(tu.median),

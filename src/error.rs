@@ -79,3 +79,60 @@ pub fn non_negative(path: &str, x: f64) -> Result<f64> {
         ))
     }
 }
+
+/// The candidate closest to `name` by edit distance, when it is close enough to be a likely
+/// misspelling (at most a third of the longer name's letters differ): the "did you mean" of
+/// unknown-field errors.
+pub fn did_you_mean<'a>(name: &str, candidates: &[&'a str]) -> Option<&'a str> {
+    let dist = |a: &str, b: &str| -> usize {
+        let b: Vec<char> = b.chars().collect();
+        let mut prev: Vec<usize> = (0..=b.len()).collect();
+        for (i, ca) in a.chars().enumerate() {
+            let mut cur = vec![i + 1; b.len() + 1];
+            for (j, cb) in b.iter().enumerate() {
+                let sub = prev[j] + usize::from(ca != *cb);
+                cur[j + 1] = sub.min(prev[j + 1] + 1).min(cur[j] + 1);
+            }
+            prev = cur;
+        }
+        prev[b.len()]
+    };
+    candidates
+        .iter()
+        .map(|c| (dist(name, c), *c))
+        .filter(|(d, c)| 3 * d <= name.chars().count().max(c.chars().count()))
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, c)| c)
+}
+
+/// The error for an unknown field `name` at `path`, listing what is allowed.
+pub fn unknown_field(path: &str, name: &str, allowed: &[&str]) -> Error {
+    let full = if path.is_empty() {
+        name.to_string()
+    } else {
+        format!("{path}.{name}")
+    };
+    let hint = did_you_mean(name, allowed)
+        .map(|c| format!(" (did you mean '{c}'?)"))
+        .unwrap_or_default();
+    Error::new(
+        full,
+        format!("unknown field{hint}; allowed: {}", allowed.join(", ")),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn did_you_mean_finds_close_names_only() {
+        let c = ["setpoint", "disturbance", "t_end", "dt"];
+        assert_eq!(did_you_mean("disturbanse", &c), Some("disturbance"));
+        assert_eq!(did_you_mean("t_en", &c), Some("t_end"));
+        assert_eq!(did_you_mean("colour", &c), None);
+        let e = unknown_field("scenario", "disturbanse", &c);
+        assert_eq!(e.path, "scenario.disturbanse");
+        assert!(e.message.contains("did you mean 'disturbance'"));
+    }
+}

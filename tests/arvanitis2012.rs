@@ -16,12 +16,12 @@ fn boiler() -> Process {
 }
 
 fn gains(t: &rules::Tuning) -> (f64, f64, f64) {
-    let g = |n: &str| t.named[n].as_f64().unwrap();
+    let g = |n: &str| pidlab::api::tuning_json(&t)["named"][n].as_f64().unwrap();
     (g("kp"), g("ki"), g("kd"))
 }
 
 fn printed(t: &rules::Tuning) -> (f64, f64, f64) {
-    let pc = &t.details["printed_convention"];
+    let pc = &pidlab::api::tuning_json(&t)["details"]["printed_convention"];
     let g = |n: &str| pc[n].as_f64().unwrap();
     (g("kp"), g("ki"), g("kd"))
 }
@@ -103,7 +103,10 @@ fn section6_printed_settings() {
             .with("td_source", "table"),
     )
     .unwrap();
-    let w = t.details["warnings"].as_array().unwrap();
+    let w = pidlab::api::tuning_json(&t)["details"]["warnings"]
+        .as_array()
+        .unwrap()
+        .clone();
     assert!(
         w.iter()
             .any(|x| x.as_str().unwrap().contains("misses its printed M.N.E.")),
@@ -166,11 +169,17 @@ fn method2_beta() {
     let w34 = wu_eq34(d, tz);
     assert!((w34 - wu).abs() / wu < 0.05 && w34 != wu);
     let t = tune("arvanitis_m2_beta", Params::default()).unwrap();
-    let beta = t.details["beta"].as_f64().unwrap();
-    let theta = t.details["theta"].as_f64().unwrap();
+    let beta = pidlab::api::tuning_json(&t)["details"]["beta"]
+        .as_f64()
+        .unwrap();
+    let theta = pidlab::api::tuning_json(&t)["details"]["theta"]
+        .as_f64()
+        .unwrap();
     assert!((theta - 2.0 * std::f64::consts::PI / (w34 * beta)).abs() < 1e-12);
     let t2 = tune("arvanitis_m2_beta", Params::default().with("wu", "exact")).unwrap();
-    let theta2 = t2.details["theta"].as_f64().unwrap();
+    let theta2 = pidlab::api::tuning_json(&t2)["details"]["theta"]
+        .as_f64()
+        .unwrap();
     assert!((theta2 - 2.0 * std::f64::consts::PI / (wu * beta)).abs() < 1e-12);
     // The β Table 8 approximates, computed by simulation: within the box's printed M.N.E.
     // (4.26 %) of the fit at the boiler point, and what beta_source = "optimize" uses.
@@ -185,7 +194,14 @@ fn method2_beta() {
         Params::default().with("beta_source", "optimize"),
     )
     .unwrap();
-    assert!((t3.details["beta"].as_f64().unwrap() - b_opt).abs() < 1e-12);
+    assert!(
+        (pidlab::api::tuning_json(&t3)["details"]["beta"]
+            .as_f64()
+            .unwrap()
+            - b_opt)
+            .abs()
+            < 1e-12
+    );
     // Table 8 (ISENSCOD-L, d < 1) at the boiler point, computed by hand from the printed row
     let (b, w) = table8("isenscod", tz, d);
     assert!((b - 1.7820).abs() < 5e-4 && w.is_empty(), "{b}");
@@ -470,7 +486,10 @@ fn errors_name_the_field() {
         &Params::default().with("td_source", "table"),
     )
     .unwrap();
-    let w = t.details["warnings"].as_array().unwrap();
+    let w = pidlab::api::tuning_json(&t)["details"]["warnings"]
+        .as_array()
+        .unwrap()
+        .clone();
     assert!(
         w.iter().any(|x| x.as_str().unwrap().contains("Table 3")),
         "{w:?}"
@@ -543,7 +562,7 @@ fn methods_and_presets() {
     assert_eq!(names("arvanitis_m2_xi"), ["xi"]);
     assert_eq!(names("arvanitis_m2_theta"), ["theta_design"]);
     assert!(ms.iter().all(|m| m.families == ["ipdt_ir"]));
-    let ps = presets();
+    let ps = legacy_presets();
     for id in [
         "luyben2003",
         "shamsuzzoha_lee2006",
@@ -563,7 +582,7 @@ fn methods_and_presets() {
         .filter(|p| p.tune != Value::Null && p.id != "arvanitis2012/boiler/alg3")
     {
         let m = p.tune["method"].as_str().unwrap();
-        let prm = Params::from_value(&p.tune["params"]).unwrap();
+        let prm = pidlab::api::params_from_json(&p.tune["params"]).unwrap();
         assert!(tune(m, prm).is_ok(), "{}", p.id);
     }
 }
@@ -621,7 +640,7 @@ fn extreme_plants_never_panic() {
 /// Through the JSON API: a preset's rule call tunes, and its controller simulates its scenario.
 #[wasm_bindgen_test(unsupported = test)]
 fn json_api_round_trip() {
-    let ps = presets();
+    let ps = legacy_presets();
     for id in ["alg2", "m2_xi", "gu2006"] {
         let p = ps
             .iter()

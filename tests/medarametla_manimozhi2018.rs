@@ -347,11 +347,27 @@ fn tune_through_the_registry() {
         &Params::default().with("lambda", 2.4776).with("p", 1.7),
     )
     .unwrap();
-    assert!((t.named["kp"].as_f64().unwrap() - 0.2247).abs() < 5e-5);
-    assert_eq!(t.named["p"].as_f64().unwrap(), 1.7);
+    assert!(
+        (pidlab::api::tuning_json(&t)["named"]["kp"]
+            .as_f64()
+            .unwrap()
+            - 0.2247)
+            .abs()
+            < 5e-5
+    );
+    assert_eq!(
+        pidlab::api::tuning_json(&t)["named"]["p"].as_f64().unwrap(),
+        1.7
+    );
     let t = rules::tune(mm::ID, &f.plant(), &Params::default().with("fit_ms", 3.0)).unwrap();
-    assert_eq!(t.details["lambda_source"], "fit_ms");
-    assert!(!t.details["warnings"].as_array().unwrap().is_empty());
+    assert_eq!(
+        pidlab::api::tuning_json(&t)["details"]["lambda_source"],
+        "fit_ms"
+    );
+    assert!(!pidlab::api::tuning_json(&t)["details"]["warnings"]
+        .as_array()
+        .unwrap()
+        .is_empty());
     let e = rules::tune(mm::ID, &f.plant(), &Params::default()).unwrap_err();
     assert_eq!(e.path, "params.lambda");
     let e = rules::tune(
@@ -361,7 +377,7 @@ fn tune_through_the_registry() {
     )
     .unwrap_err();
     assert_eq!(e.path, "params.p");
-    assert!(mm::presets().len() >= 12);
+    assert!(mm::legacy_presets().len() >= 12);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -671,9 +687,26 @@ fn ms_of_the_examples_and_lambda_for_target_ms() {
         &Params::default().with("target_ms", 2.0),
     )
     .unwrap();
-    assert_eq!(t.details["lambda_source"], "target_ms");
-    assert!((t.details["ms"].as_f64().unwrap() - 2.0).abs() < 1e-6);
-    assert!((t.named["lambda"].as_f64().unwrap() - l).abs() < 1e-9);
+    assert_eq!(
+        pidlab::api::tuning_json(&t)["details"]["lambda_source"],
+        "target_ms"
+    );
+    assert!(
+        (pidlab::api::tuning_json(&t)["details"]["ms"]
+            .as_f64()
+            .unwrap()
+            - 2.0)
+            .abs()
+            < 1e-6
+    );
+    assert!(
+        (pidlab::api::tuning_json(&t)["named"]["lambda"]
+            .as_f64()
+            .unwrap()
+            - l)
+            .abs()
+            < 1e-9
+    );
 }
 
 /// Every preset loads: method presets tune from their plant object, literal controllers parse,
@@ -683,7 +716,7 @@ fn presets_load_and_simulate() {
     use pidlab::model::controller::Controller;
     use pidlab::model::plant::Plant;
     use pidlab::sim::{simulate, Scenario};
-    let presets = mm::presets();
+    let presets = mm::legacy_presets();
     assert_eq!(
         presets.len(),
         16,
@@ -732,7 +765,7 @@ fn presets_load_and_simulate() {
             );
             full
         } else {
-            let params = Params::from_value(&p.tune["params"]).unwrap();
+            let params = pidlab::api::params_from_json(&p.tune["params"]).unwrap();
             rules::tune(p.tune["method"].as_str().unwrap(), &plant, &params)
                 .unwrap()
                 .controller

@@ -43,11 +43,26 @@ fn table1_parameters_to_printed_digits() {
         )
         .unwrap();
         let ours = [
-            num(&t.named, "kp"),
-            num(&t.named, "ki"),
-            num(&t.named, "kd"),
-            num(&t.named, "alpha"),
-            num(&t.named, "beta"),
+            num(
+                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+                "kp",
+            ),
+            num(
+                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+                "ki",
+            ),
+            num(
+                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+                "kd",
+            ),
+            num(
+                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+                "alpha",
+            ),
+            num(
+                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+                "beta",
+            ),
         ];
         // Every entry of Table 1 is printed with 4 decimals (α = 0.05 exactly): half a unit
         // of the last printed digit.
@@ -166,12 +181,18 @@ fn random_plants_give_a_stable_filter_or_a_named_error() {
         ) {
             Ok(t) => {
                 ok += 1;
-                let beta = num(&t.named, "beta");
+                let beta = num(
+                    pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+                    "beta",
+                );
                 assert!(
                     beta > 0.0 && beta.is_finite(),
                     "{p:?} λ = {lambda}: β = {beta}"
                 );
-                let linf = num(&t.details, "l_inf");
+                let linf = num(
+                    pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
+                    "l_inf",
+                );
                 assert!(linf < 1.0, "{p:?} λ = {lambda}: |L(j∞)| = {linf}");
                 let r = char_residual(&p, &t.controller, lambda);
                 assert!(r <= 1e-9, "{p:?} λ = {lambda}: residual {r}");
@@ -337,7 +358,10 @@ fn design_ms_and_lambda_for_ms_2() {
         &Params::default().with("lambda", 0.8),
     )
     .unwrap();
-    let ms = num(&t.details, "ms");
+    let ms = num(
+        pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
+        "ms",
+    );
     assert!(ms >= 3.9051 - 0.00005 && ms - 3.9051 <= 5e-4, "Ms {ms}");
     // Example 1 (λ = 1.9): the supremum is the high-frequency limit 1/(1 − |L(j∞)|), with
     // |L(j∞)| = |k z k_d α/(τ β)| ≈ 0.8194; printed 5.53 (ERRATA: 5.52 near 8,700 rad/s).
@@ -347,7 +371,16 @@ fn design_ms_and_lambda_for_ms_2() {
         &Params::default().with("lambda", 1.9),
     )
     .unwrap();
-    let (ms, linf) = (num(&t.details, "ms"), num(&t.details, "l_inf"));
+    let (ms, linf) = (
+        num(
+            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
+            "ms",
+        ),
+        num(
+            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
+            "l_inf",
+        ),
+    );
     assert!(
         (ms - 1.0 / (1.0 - linf)).abs() <= 1e-6 * ms,
         "Ms {ms}, |L∞| {linf}"
@@ -368,7 +401,10 @@ fn design_ms_and_lambda_for_ms_2() {
             &Params::default().with("target_ms", 2.0),
         )
         .unwrap();
-        let l = num(&t.details, "lambda");
+        let l = num(
+            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
+            "lambda",
+        );
         assert!((l - printed).abs() <= tol, "λ(Ms = 2) {l} vs {printed}");
         // and the returned design has Ms = 2 on the exact-delay loop
         let a = analyze(&p.plant(), &t.controller).unwrap();
@@ -386,13 +422,38 @@ fn derivative_on_error_is_filtered_and_simulates() {
     let t = rules::tune(pk::ID, &pk::EX1.plant(), &params).unwrap();
     // Both paths proper (no impulse on a set-point step), filter T_f = k_d/(k_p N).
     assert!(t.controller.cr.relative_degree() >= 0 && t.controller.cy.relative_degree() >= 0);
-    let (kp, kd) = (num(&t.named, "kp"), num(&t.named, "kd"));
-    assert!((num(&t.details, "tf") - kd / kp / 10.0).abs() <= 1e-15);
+    let (kp, kd) = (
+        num(
+            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+            "kp",
+        ),
+        num(
+            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+            "kd",
+        ),
+    );
+    assert!(
+        (num(
+            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
+            "tf"
+        ) - kd / kp / 10.0)
+            .abs()
+            <= 1e-15
+    );
     // Cr at s = 1 equals (ε k_p + k_i + k_d/(T_f + 1))·(α + 1)/(β + 1)
     let (ki, a, b) = (
-        num(&t.named, "ki"),
-        num(&t.named, "alpha"),
-        num(&t.named, "beta"),
+        num(
+            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+            "ki",
+        ),
+        num(
+            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+            "alpha",
+        ),
+        num(
+            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
+            "beta",
+        ),
     );
     let tf = kd / kp / 10.0;
     let want = (0.2 * kp + ki + kd / (tf + 1.0)) * (a + 1.0) / (b + 1.0);
@@ -400,12 +461,17 @@ fn derivative_on_error_is_filtered_and_simulates() {
     let sc = Scenario::steps(30.0, 0.01, 0.0, 0.2, 15.0, 0.2);
     let r = simulate(&pk::EX1.plant(), &t.controller, &sc).unwrap();
     assert!(!r.diverged);
-    assert!(num(&t.details, "l_inf") == 0.0);
+    assert!(
+        num(
+            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
+            "l_inf"
+        ) == 0.0
+    );
 }
 
 #[wasm_bindgen_test(unsupported = test)]
 fn presets_load_and_tune_through_the_api() {
-    let ps = pk::presets();
+    let ps = pk::legacy_presets();
     assert!(ps.len() >= 8);
     for p in &ps {
         assert!(p.id.starts_with("praveen_kumar_narayana/"));

@@ -138,7 +138,12 @@ fn printed_parameters_and_filters() {
             .with("zeta", r.zeta)
             .with("gamma", r.gamma);
         let t = rules::tune("shamsuzzoha_lee", &r.family.plant(), &params).unwrap();
-        assert_eq!(t.named["kc"].as_f64(), Some(d.pid.kc), "{}", r.cite);
+        assert_eq!(
+            pidlab::api::tuning_json(&t)["named"]["kc"].as_f64(),
+            Some(d.pid.kc),
+            "{}",
+            r.cite
+        );
     }
 }
 
@@ -412,7 +417,9 @@ fn target_ms_solves_lambda() {
         &Params::default().with("target_ms", 1.65),
     )
     .unwrap();
-    let l = t.details["lambda"].as_f64().unwrap();
+    let l = pidlab::api::tuning_json(&t)["details"]["lambda"]
+        .as_f64()
+        .unwrap();
     let a = analyze(&f.plant(), &t.controller).unwrap();
     assert!(
         (a.ms.unwrap() - 1.65).abs() < 1e-4,
@@ -583,7 +590,7 @@ fn tables2to5_proposed_rows_simulated_iae() {
 /// (Cr, Cy)), then its scenario simulates without diverging.
 #[wasm_bindgen_test(unsupported = test)]
 fn presets_load_and_simulate() {
-    let ps = pidlab::rules::shamsuzzoha_lee2008::presets();
+    let ps = pidlab::rules::shamsuzzoha_lee2008::legacy_presets();
     assert_eq!(
         ps.len(),
         2 * 14,

@@ -71,9 +71,13 @@ pub fn report() -> String {
     for (what, id, prm, pr, note) in rows {
         match rules::tune(id, &plant, &prm) {
             Ok(t) => {
-                let g = |n: &str| t.named[n].as_f64().unwrap_or(f64::NAN);
+                let g = |n: &str| {
+                    pidlab::api::tuning_json(&t)["named"][n]
+                        .as_f64()
+                        .unwrap_or(f64::NAN)
+                };
                 let pc = |n: &str| {
-                    t.details["printed_convention"][n]
+                    pidlab::api::tuning_json(&t)["details"]["printed_convention"][n]
                         .as_f64()
                         .unwrap_or(f64::NAN)
                 };
@@ -185,7 +189,7 @@ pub fn report() -> String {
     o.push_str("| controller | servo overshoot | initial jump | servo IAE | servo settling | load peak error | load IAE | load settling | Ms |\n|---|---|---|---|---|---|---|---|---|\n");
     let sc = Scenario::steps(60.0, 0.01, 0.0, 1.0, 30.0, 1.0);
     let mut ctrls: Vec<(String, String, Controller)> = vec![];
-    for pr in presets() {
+    for pr in legacy_presets() {
         let c = if pr.tune.is_null() {
             let g = |k: &str, q: &str| -> Vec<f64> {
                 pr.controller[k][q]
@@ -202,7 +206,7 @@ pub fn report() -> String {
             .ok()
         } else {
             let m = pr.tune["method"].as_str().unwrap_or("");
-            Params::from_value(&pr.tune["params"])
+            pidlab::api::params_from_json(&pr.tune["params"])
                 .ok()
                 .and_then(|prm| rules::tune(m, &plant, &prm).ok())
                 .map(|t| t.controller)

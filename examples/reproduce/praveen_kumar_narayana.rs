@@ -235,9 +235,24 @@ pub fn report() -> String {
         );
         let (l2, msmin, lmsmin) = match &t2 {
             Ok(t2) => (
-                num(&t2.details, "lambda"),
-                num(&t2.details, "ms_min"),
-                num(&t2.details, "lambda_ms_min"),
+                num(
+                    pidlab::api::tuning_json(&t2)["details"]
+                        .as_object()
+                        .unwrap(),
+                    "lambda",
+                ),
+                num(
+                    pidlab::api::tuning_json(&t2)["details"]
+                        .as_object()
+                        .unwrap(),
+                    "ms_min",
+                ),
+                num(
+                    pidlab::api::tuning_json(&t2)["details"]
+                        .as_object()
+                        .unwrap(),
+                    "lambda_ms_min",
+                ),
             ),
             Err(_) => (f64::NAN, f64::NAN, f64::NAN),
         };
@@ -246,7 +261,9 @@ pub fn report() -> String {
             .unwrap_or_else(|e| e.to_string());
         match t {
             Ok(t) => {
-                let w = t.details.get("w_ms").and_then(|v| v.as_f64());
+                let w = pidlab::api::tuning_json(&t)["details"]
+                    .get("w_ms")
+                    .and_then(|v| v.as_f64());
                 let _ =
                     writeln!(
                     s,
@@ -255,10 +272,10 @@ pub fn report() -> String {
                     l2,
                     printed_l2[i],
                     pk::LAMBDA_PAPER[i],
-                    num(&t.details, "ms"),
+                    num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "ms"),
                     printed_ms[i],
                     w.map_or("ω → ∞ (limit 1/(1 − abs L∞))".to_string(), |w| format!("{w:.4}")),
-                    num(&t.details, "l_inf"),
+                    num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "l_inf"),
                     msmin,
                     lmsmin
                 );
@@ -277,7 +294,7 @@ pub fn report() -> String {
          admissible interval (the gains blow up at λ_b, abs L(j∞) → 1 at its upper end); the λ for a \
          target Ms is taken on the rising, fast branch, which is the branch the paper reads.\n",
         rules::tune(pk::ID, &pk::EX1.plant(), &Params::default().with("lambda", 1.9))
-            .map(|t| num(&t.details, "ms"))
+            .map(|t| num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "ms"))
             .unwrap_or(f64::NAN)
     );
 
@@ -448,7 +465,7 @@ pub fn report() -> String {
          (1 − (z/τ)ŝ)e^{{−(θ/τ)ŝ}}/(ŝ(ŝ + 1)), ŝ = τs; the gain k does not affect λ. Example 1 is \
          θ/τ = 0.094, z/τ = 0.394 (λτ = {:.4}).\n",
         1.06 * rules::tune(pk::ID, &pk::EX1.plant(), &Params::default().with("target_ms", 2.0))
-            .map(|t| num(&t.details, "lambda"))
+            .map(|t| num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "lambda"))
             .unwrap_or(f64::NAN)
     );
     let zs = [0.1, 0.2, 0.4, 0.6, 0.8, 1.0];
@@ -473,7 +490,13 @@ pub fn report() -> String {
                 &p.plant(),
                 &Params::default().with("target_ms", 2.0),
             ) {
-                Ok(t) => format!("{:.4}", num(&t.details, "lambda")),
+                Ok(t) => format!(
+                    "{:.4}",
+                    num(
+                        pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
+                        "lambda"
+                    )
+                ),
                 Err(_) => "—".into(),
             };
             let _ = write!(s, " {cell} |");

@@ -316,7 +316,68 @@ pub fn methods() -> Value {
 
 /// Every paper preset: `{ presets: [...] }`.
 pub fn presets() -> Value {
-    json!({ "presets": rules::presets().iter().map(|p| serde_json::to_value(p).unwrap_or(Value::Null)).collect::<Vec<_>>() })
+    json!({ "presets": rules::presets().iter().map(preset_json).collect::<Vec<_>>() })
+}
+
+/// A preset as JSON: `{id, title, description, citation, plant, tune, controller, scenario}`.
+pub fn preset_json(p: &rules::AnyPreset) -> Value {
+    match p {
+        rules::AnyPreset::Legacy(l) => serde_json::to_value(l).unwrap_or(Value::Null),
+        rules::AnyPreset::Typed(t) => {
+            let plant = match t.plant.family {
+                Some(f) => family_json(&f),
+                None => plant_json(&t.plant),
+            };
+            let (tune, controller) = match &t.design {
+                rules::Design::Rule { method, params } => {
+                    (json!({ "method": method, "params": params }), Value::Null)
+                }
+                rules::Design::Controller(c) => (Value::Null, controller_json(c)),
+            };
+            json!({
+                "id": t.id, "title": t.title, "description": t.description,
+                "citation": t.citation, "plant": plant, "tune": tune,
+                "controller": controller, "scenario": scenario_json(&t.scenario),
+            })
+        }
+    }
+}
+
+/// `{t_end, dt, setpoint, disturbance}` (and `settling_band` when not the default 0.02).
+pub fn scenario_json(sc: &Scenario) -> Value {
+    let mut v = json!({
+        "t_end": sc.t_end, "dt": sc.dt,
+        "setpoint": { "time": sc.setpoint.time, "size": sc.setpoint.size },
+        "disturbance": { "time": sc.disturbance.time, "size": sc.disturbance.size },
+    });
+    if sc.settling_band != 0.02 {
+        v["settling_band"] = json!(sc.settling_band);
+    }
+    v
+}
+
+/// Method parameters from JSON (`params` of `tune`): an object of numbers and strings.
+pub fn params_from_json(v: &Value) -> Result<Params> {
+    params(Some(v))
+}
+
+fn params(v: Option<&Value>) -> Result<Params> {
+    match v {
+        None | Some(Value::Null) => Ok(Params::default()),
+        Some(Value::Object(m)) => {
+            let mut p = Params::default();
+            for (k, x) in m {
+                let path = format!("params.{k}");
+                p = match x {
+                    Value::String(s) => p.with(k, s.as_str()),
+                    Value::Null => p,
+                    x => p.with(k, number(x, &path)?),
+                };
+            }
+            Ok(p)
+        }
+        Some(_) => Err(Error::new("params", "must be an object")),
+    }
 }
 
 /// `tune({method, plant, params})` of API.md.
@@ -325,19 +386,19 @@ pub fn tune(input: &Value) -> Result<Value> {
         .as_str()
         .ok_or_else(|| Error::new("method", "must be a string"))?;
     let plant = parse_plant(field(input, "plant", "")?, "plant")?;
-    let params = Params::from_value(opt_field(input, "params").unwrap_or(&Value::Null))?;
+    let params = params(opt_field(input, "params"))?;
     let t = rules::tune(method, &plant, &params)?;
     let mut c = match controller_json(&t.controller) {
         Value::Object(m) => m,
         _ => Map::new(),
     };
     for (k, v) in &t.named {
-        c.insert(k.clone(), v.clone());
+        c.insert(k.clone(), json!(v));
     }
     Ok(json!({
         "method": t.method,
         "controller": Value::Object(c),
-        "details": Value::Object(t.details.clone()),
+        "details": serde_json::to_value(&t.details).unwrap_or(Value::Null),
         "plant": plant_json(&plant),
     }))
 }
@@ -377,4 +438,40 @@ pub fn analyze(input: &Value) -> Result<Value> {
     let c = parse_controller(field(input, "controller", "")?, "controller")?;
     let a = analyze_loop(&plant, &c)?;
     Ok(analysis_json(&a))
+}
+
+/// A tuning as JSON: `{method, named: {…}, details: {…}}` (what `tune` returns, with the
+/// named parameters apart), for Rust callers that want the JSON view.
+pub fn tuning_json(t: &impl ToTuning) -> Value {
+    let t = t.to_tuning();
+    let named: Map<String, Value> = t.named.iter().map(|(k, x)| (k.clone(), json!(x))).collect();
+    json!({
+        "method": t.method,
+        "named": Value::Object(named),
+        "details": serde_json::to_value(&t.details).unwrap_or(Value::Null),
+    })
+}
+
+/// A tuning of the typed interface or of a paper not yet converted to it (transitional).
+pub trait ToTuning {
+    /// The typed tuning.
+    fn to_tuning(&self) -> rules::Tuning;
+}
+
+impl ToTuning for rules::Tuning {
+    fn to_tuning(&self) -> rules::Tuning {
+        self.clone()
+    }
+}
+
+impl ToTuning for rules::LegacyTuning {
+    fn to_tuning(&self) -> rules::Tuning {
+        self.clone().into()
+    }
+}
+
+impl<T: ToTuning + ?Sized> ToTuning for &T {
+    fn to_tuning(&self) -> rules::Tuning {
+        (**self).to_tuning()
+    }
 }

@@ -1,90 +1,30 @@
-//! Tuning rules, one module per paper, and the registry the JS API lists and dispatches.
+//! Tuning rules, a folder per paper, behind one interface ([`Rule`]) and one registry that
+//! `methods()` lists and `tune` dispatches.
 //!
-//! Each paper module exposes:
-//! - `pub fn methods() -> Vec<MethodInfo>`: the method ids it implements (API.md table);
-//! - `pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>>`:
-//!   `None` when `id` is not one of its methods;
-//! - `pub fn presets() -> Vec<Preset>`: the paper's examples and the comparison settings it
-//!   quotes, each a plant plus either a method call or a literal controller.
+//! A paper folder holds the paper only: its rules (the formulas with the paper's equation
+//! numbers), its printed tables as named data, the comparison settings it quotes and its
+//! simulation studies. Rules return typed values ([`Tuning`] with the paper's own
+//! `Details`, [`Preset`]); only the `api` layer turns them into JSON. Generic numerics live in
+//! [`crate::numerics`].
+//!
+//! Each paper module exposes `pub fn rules() -> Vec<Box<dyn Rule>>` and
+//! `pub fn presets() -> Vec<Preset>`.
 
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
+use crate::sim::Scenario;
 use serde::Serialize;
 use serde_json::{Map, Value};
+
+mod params;
+pub use params::{ParamDefault, ParamInfo, ParamValue, Params};
 
 pub mod arvanitis2012;
 pub mod kaya2020;
 pub mod medarametla_manimozhi2018;
 pub mod praveen_kumar_narayana;
 pub mod shamsuzzoha_lee2008;
-
-/// Default of a method parameter: a number or one of several strings.
-#[derive(Debug, Clone, Serialize, PartialEq)]
-#[serde(untagged)]
-pub enum ParamDefault {
-    /// Numeric parameter.
-    Number(f64),
-    /// Choice parameter.
-    Text(String),
-    /// No default: the caller must give it (or it is derived, e.g. λ for a target Ms).
-    None,
-}
-
-/// One tunable parameter of a method (drives a slider or a select on the page).
-#[derive(Debug, Clone, Serialize, PartialEq)]
-pub struct ParamInfo {
-    /// Field name in `params`.
-    pub name: String,
-    /// Human label with units/symbol.
-    pub label: String,
-    /// Default value.
-    pub default: ParamDefault,
-    /// Slider minimum (numeric parameters).
-    pub min: Option<f64>,
-    /// Slider maximum (numeric parameters).
-    pub max: Option<f64>,
-    /// Allowed values (choice parameters).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub choices: Vec<String>,
-    /// One-line help.
-    #[serde(skip_serializing_if = "String::is_empty")]
-    pub help: String,
-}
-
-impl ParamInfo {
-    /// A numeric parameter.
-    pub fn number(name: &str, label: &str, default: Option<f64>, min: f64, max: f64) -> ParamInfo {
-        ParamInfo {
-            name: name.into(),
-            label: label.into(),
-            default: default.map_or(ParamDefault::None, ParamDefault::Number),
-            min: Some(min),
-            max: Some(max),
-            choices: vec![],
-            help: String::new(),
-        }
-    }
-
-    /// A choice parameter.
-    pub fn choice(name: &str, label: &str, default: &str, choices: &[&str]) -> ParamInfo {
-        ParamInfo {
-            name: name.into(),
-            label: label.into(),
-            default: ParamDefault::Text(default.into()),
-            min: None,
-            max: None,
-            choices: choices.iter().map(|c| c.to_string()).collect(),
-            help: String::new(),
-        }
-    }
-
-    /// With a help line.
-    pub fn help(mut self, h: &str) -> ParamInfo {
-        self.help = h.into();
-        self
-    }
-}
 
 /// What `methods()` lists for one rule (API.md `MethodInfo`).
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -101,110 +41,6 @@ pub struct MethodInfo {
     pub structure: String,
     /// Tunable parameters.
     pub params: Vec<ParamInfo>,
-}
-
-/// The result of a tuning rule.
-#[derive(Debug, Clone)]
-pub struct Tuning {
-    /// Method id.
-    pub method: String,
-    /// The controller as (Cr, Cy).
-    pub controller: Controller,
-    /// Named parameters of the structure (e.g. `kp, ki, kd`, `kc, ti, td`, `b1, b2`, `p`).
-    pub named: Map<String, Value>,
-    /// Everything else worth showing: intermediate quantities, printed-convention values,
-    /// iterations, warnings (`details.warnings`: array of strings).
-    pub details: Map<String, Value>,
-}
-
-/// A paper example or comparison setting, ready to load.
-#[derive(Debug, Clone, Serialize)]
-pub struct Preset {
-    /// Unique id, e.g. `arvanitis2012/boiler/luyben2003`.
-    pub id: String,
-    /// Short title.
-    pub title: String,
-    /// One-line description.
-    pub description: String,
-    /// Citation of the source.
-    pub citation: String,
-    /// Plant as an API.md plant object (`{family, …}` or `{num, den, delay}`).
-    pub plant: Value,
-    /// For a rule: `{ method, params }`; for a literature setting: `null`.
-    pub tune: Value,
-    /// For a literature setting: the controller `{cr:{num,den}, cy:{num,den}}` (descending).
-    pub controller: Value,
-    /// Suggested scenario (`{t_end, dt, setpoint, disturbance}`).
-    pub scenario: Value,
-}
-
-/// Method parameters as given by the caller (a JSON object), with typed, validated getters
-/// whose errors name `params.<name>`.
-#[derive(Debug, Clone, Default)]
-pub struct Params(pub Map<String, Value>);
-
-impl Params {
-    /// From a JSON object (anything else is an error naming `params`).
-    pub fn from_value(v: &Value) -> Result<Params> {
-        match v {
-            Value::Null => Ok(Params::default()),
-            Value::Object(m) => Ok(Params(m.clone())),
-            _ => Err(Error::new("params", "must be an object")),
-        }
-    }
-
-    /// Builder for Rust callers.
-    pub fn with(mut self, name: &str, v: impl Into<Value>) -> Params {
-        self.0.insert(name.into(), v.into());
-        self
-    }
-
-    /// Optional number: `None` when absent or null; error when not a finite number.
-    pub fn opt_f64(&self, name: &str) -> Result<Option<f64>> {
-        match self.0.get(name) {
-            None | Some(Value::Null) => Ok(None),
-            Some(Value::Number(n)) => match n.as_f64() {
-                Some(x) if x.is_finite() => Ok(Some(x)),
-                _ => Err(Error::new(
-                    format!("params.{name}"),
-                    "must be a finite number",
-                )),
-            },
-            Some(_) => Err(Error::new(format!("params.{name}"), "must be a number")),
-        }
-    }
-
-    /// Number with a default, checked to lie in `[min, max]`.
-    pub fn f64_in(&self, name: &str, default: f64, min: f64, max: f64) -> Result<f64> {
-        let x = self.opt_f64(name)?.unwrap_or(default);
-        if !(x >= min && x <= max) {
-            return Err(Error::new(
-                format!("params.{name}"),
-                format!("must lie in [{min}, {max}] (got {x})"),
-            ));
-        }
-        Ok(x)
-    }
-
-    /// Required number in `[min, max]`.
-    pub fn req_f64_in(&self, name: &str, min: f64, max: f64) -> Result<f64> {
-        match self.opt_f64(name)? {
-            None => Err(Error::new(format!("params.{name}"), "is required")),
-            Some(_) => self.f64_in(name, f64::NAN, min, max),
-        }
-    }
-
-    /// A choice among `choices`, with a default.
-    pub fn choice(&self, name: &str, default: &str, choices: &[&str]) -> Result<String> {
-        match self.0.get(name) {
-            None | Some(Value::Null) => Ok(default.to_string()),
-            Some(Value::String(s)) if choices.contains(&s.as_str()) => Ok(s.clone()),
-            Some(v) => Err(Error::new(
-                format!("params.{name}"),
-                format!("must be one of {} (got {v})", choices.join(", ")),
-            )),
-        }
-    }
 }
 
 /// Adds the exact-delay frequency analysis of a design to `details` (stable, verdict, ms, w_ms,
@@ -236,18 +72,251 @@ pub fn add_analysis(
     }
 }
 
-/// Every implemented method.
-pub fn methods() -> Vec<MethodInfo> {
-    let mut v = arvanitis2012::methods();
-    v.extend(shamsuzzoha_lee2008::methods());
-    v.extend(kaya2020::methods());
-    v.extend(medarametla_manimozhi2018::methods());
-    v.extend(praveen_kumar_narayana::methods());
+/// One tuning rule: what `methods()` lists for it, and the rule itself.
+pub trait Rule: Send + Sync {
+    /// Id, title, citation, families, structure and the parameter declarations.
+    fn info(&self) -> MethodInfo;
+    /// Tunes for `plant` (a family the rule declares) with `params` already validated against
+    /// the declarations.
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning>;
+    /// Checks `params` against the declarations (names, kinds, ranges, choices).
+    fn validate(&self, params: &Params, info: &MethodInfo) -> Result<()> {
+        params.validate(&info.id, &info.params)
+    }
+}
+
+/// The result of a tuning rule.
+#[derive(Debug, Clone)]
+pub struct Tuning {
+    /// Method id.
+    pub method: String,
+    /// The controller as (Cr, Cy).
+    pub controller: Controller,
+    /// Named parameters of the structure (e.g. `kp, ki, kd`, `kc, ti, td`, `b1, b2`, `p`).
+    pub named: Vec<(String, f64)>,
+    /// Everything else worth showing (intermediate quantities, printed-convention values,
+    /// iterations, `warnings`), typed by each paper.
+    pub details: Details,
+}
+
+impl Tuning {
+    /// The named parameter `name`.
+    pub fn named(&self, name: &str) -> Option<f64> {
+        self.named.iter().find(|(n, _)| n == name).map(|(_, x)| *x)
+    }
+}
+
+/// The details of a tuning, one typed record per paper.
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum Details {
+    /// A paper not yet moved to typed details (transitional).
+    Legacy(Map<String, Value>),
+}
+
+/// How a preset designs its controller.
+#[derive(Debug, Clone)]
+pub enum Design {
+    /// A rule of the registry with these parameters.
+    Rule {
+        /// Method id.
+        method: String,
+        /// Its parameters.
+        params: Params,
+    },
+    /// A literal controller (a literature setting mapped onto (Cr, Cy)).
+    Controller(Controller),
+}
+
+/// A paper example or comparison setting, ready to load.
+#[derive(Debug, Clone)]
+pub struct Preset {
+    /// Unique id, e.g. `arvanitis2012/boiler/luyben2003`.
+    pub id: String,
+    /// Short title.
+    pub title: String,
+    /// One-line description.
+    pub description: String,
+    /// Citation of the source.
+    pub citation: String,
+    /// The plant.
+    pub plant: Plant,
+    /// The rule call or the literal controller.
+    pub design: Design,
+    /// Suggested scenario.
+    pub scenario: Scenario,
+}
+
+/// The exact-delay frequency analysis of a design as rules report it in their details
+/// (`stable, verdict, ms, w_ms, ms_at_infinity, l_inf_analysis, gm, pm, w_gc, delay_margin`,
+/// or `analysis_error`).
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(untagged)]
+pub enum DesignCheck {
+    /// The analysis.
+    Done {
+        /// Nyquist verdict.
+        stable: bool,
+        /// Verdict in words.
+        verdict: String,
+        /// Ms.
+        ms: Option<f64>,
+        /// Its frequency.
+        w_ms: Option<f64>,
+        /// Ms is the ω → ∞ limit.
+        ms_at_infinity: bool,
+        /// |L(j∞)|.
+        l_inf_analysis: f64,
+        /// Gain margin.
+        gm: Option<f64>,
+        /// Phase margin (degrees).
+        pm: Option<f64>,
+        /// Gain-crossover frequency.
+        w_gc: Option<f64>,
+        /// Delay margin.
+        delay_margin: Option<f64>,
+    },
+    /// The analysis failed.
+    Failed {
+        /// Why.
+        analysis_error: String,
+    },
+}
+
+impl DesignCheck {
+    /// Analyses `c` on `plant`.
+    pub fn of(plant: &Plant, c: &Controller) -> DesignCheck {
+        match crate::analysis::freq::analyze(plant, c) {
+            Ok(a) => DesignCheck::Done {
+                stable: a.stable,
+                verdict: a.verdict.clone(),
+                ms: a.ms,
+                w_ms: a.w_ms,
+                ms_at_infinity: a.ms_at_infinity,
+                l_inf_analysis: a.l_inf,
+                gm: a.gm,
+                pm: a.pm,
+                w_gc: a.w_gc,
+                delay_margin: a.delay_margin,
+            },
+            Err(e) => DesignCheck::Failed {
+                analysis_error: e.to_string(),
+            },
+        }
+    }
+}
+
+// ------------------------------------------------------------------------------------------
+// Transitional: papers not yet moved to the Rule interface keep their free functions; these
+// adapters put them behind it. Removed once every paper is converted.
+
+/// The result of a paper not yet converted (named parameters and details as JSON maps).
+#[derive(Debug, Clone)]
+pub struct LegacyTuning {
+    /// Method id.
+    pub method: String,
+    /// The controller as (Cr, Cy).
+    pub controller: Controller,
+    /// Named parameters.
+    pub named: Map<String, Value>,
+    /// Details.
+    pub details: Map<String, Value>,
+}
+
+impl From<LegacyTuning> for Tuning {
+    fn from(t: LegacyTuning) -> Tuning {
+        Tuning {
+            method: t.method,
+            controller: t.controller,
+            named: t
+                .named
+                .iter()
+                .filter_map(|(k, v)| v.as_f64().map(|x| (k.clone(), x)))
+                .collect(),
+            details: Details::Legacy(t.details),
+        }
+    }
+}
+
+/// A preset of a paper not yet converted (JSON fields).
+#[derive(Debug, Clone, Serialize)]
+pub struct LegacyPreset {
+    /// Unique id.
+    pub id: String,
+    /// Short title.
+    pub title: String,
+    /// One-line description.
+    pub description: String,
+    /// Citation.
+    pub citation: String,
+    /// Plant JSON.
+    pub plant: Value,
+    /// `{ method, params }` or null.
+    pub tune: Value,
+    /// Controller JSON or null.
+    pub controller: Value,
+    /// Scenario JSON.
+    pub scenario: Value,
+}
+
+/// A preset, typed or not yet (transitional).
+#[derive(Debug, Clone)]
+pub enum AnyPreset {
+    /// Typed.
+    Typed(Preset),
+    /// Not yet converted.
+    Legacy(LegacyPreset),
+}
+
+type LegacyTune = fn(&str, &Plant, &Params) -> Option<Result<LegacyTuning>>;
+
+struct LegacyRule {
+    info: MethodInfo,
+    tune: LegacyTune,
+}
+
+impl Rule for LegacyRule {
+    fn info(&self) -> MethodInfo {
+        self.info.clone()
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        (self.tune)(&self.info.id, plant, params)
+            .unwrap_or_else(|| Err(Error::new("method", "has no implementation")))
+            .map(Tuning::from)
+    }
+    /// Names and kinds only: a paper not yet converted still checks its own ranges.
+    fn validate(&self, params: &Params, info: &MethodInfo) -> Result<()> {
+        params.validate_names(&info.id, &info.params)
+    }
+}
+
+/// Puts a paper's `methods()` and `tune()` free functions behind [`Rule`] (transitional).
+pub fn legacy_rules(methods: Vec<MethodInfo>, tune: LegacyTune) -> Vec<Box<dyn Rule>> {
+    methods
+        .into_iter()
+        .map(|info| Box::new(LegacyRule { info, tune }) as Box<dyn Rule>)
+        .collect()
+}
+
+// ------------------------------------------------------------------------------------------
+
+/// Every rule of every paper, in the order `methods()` lists them.
+pub fn registry() -> Vec<Box<dyn Rule>> {
+    let mut v = arvanitis2012::rules();
+    v.extend(shamsuzzoha_lee2008::rules());
+    v.extend(kaya2020::rules());
+    v.extend(medarametla_manimozhi2018::rules());
+    v.extend(praveen_kumar_narayana::rules());
     v
 }
 
+/// Every implemented method.
+pub fn methods() -> Vec<MethodInfo> {
+    registry().iter().map(|r| r.info()).collect()
+}
+
 /// Every preset of every paper.
-pub fn presets() -> Vec<Preset> {
+pub fn presets() -> Vec<AnyPreset> {
     let mut v = arvanitis2012::presets();
     v.extend(shamsuzzoha_lee2008::presets());
     v.extend(kaya2020::presets());
@@ -257,15 +326,25 @@ pub fn presets() -> Vec<Preset> {
 }
 
 /// Runs method `id` on `plant`. Errors: `method` (unknown id), `plant.family` (a family the
-/// method does not support), `params.*` (bad parameters), or the rule's own errors.
+/// method does not support), `params.*` (unknown names, values outside the declarations), or
+/// the rule's own errors.
 pub fn tune(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
-    let info = methods().into_iter().find(|m| m.id == id).ok_or_else(|| {
-        let ids: Vec<String> = methods().into_iter().map(|m| m.id).collect();
+    let rules = registry();
+    let rule = rules.iter().find(|r| r.info().id == id).ok_or_else(|| {
+        let ids: Vec<String> = rules.iter().map(|r| r.info().id).collect();
+        let refs: Vec<&str> = ids.iter().map(String::as_str).collect();
+        let hint = crate::error::did_you_mean(id, &refs)
+            .map(|c| format!(" (did you mean '{c}'?)"))
+            .unwrap_or_default();
         Error::new(
             "method",
-            format!("unknown method '{id}' (implemented: {})", ids.join(", ")),
+            format!(
+                "unknown method '{id}'{hint}; implemented: {}",
+                ids.join(", ")
+            ),
         )
     })?;
+    let info = rule.info();
     let fam = plant.family.map(|f| f.id()).unwrap_or("custom");
     if !info.families.iter().any(|f| f == fam) {
         return Err(Error::new(
@@ -276,15 +355,6 @@ pub fn tune(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
             ),
         ));
     }
-    let r = arvanitis2012::tune(id, plant, params)
-        .or_else(|| shamsuzzoha_lee2008::tune(id, plant, params))
-        .or_else(|| kaya2020::tune(id, plant, params))
-        .or_else(|| medarametla_manimozhi2018::tune(id, plant, params))
-        .or_else(|| praveen_kumar_narayana::tune(id, plant, params));
-    r.unwrap_or_else(|| {
-        Err(Error::new(
-            "method",
-            format!("method '{id}' has no implementation"),
-        ))
-    })
+    rule.validate(params, &info)?;
+    rule.tune(plant, params)
 }

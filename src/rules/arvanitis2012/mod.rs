@@ -42,7 +42,7 @@
 //!   units with K = K̄, τ_P = τ̄_P (the simulator's `isens_k`, `isens_tau`); Table 7's fits,
 //!   built on the normalized process, reproduce it within their printed errors.
 
-use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
 use crate::api::controller_json;
 use crate::error::{Error, Result};
 use crate::model::controller::{lead_lag, Pid};
@@ -2291,7 +2291,21 @@ pub const PRINTED: [(&str, &str, f64, f64, f64); 6] = [
 
 /// Presets of this paper: every Section 6 setting (rule calls), the printed settings as literal
 /// controllers, and the comparison controllers.
-pub fn presets() -> Vec<Preset> {
+/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    super::legacy_rules(methods(), tune)
+}
+
+/// Every preset of this paper.
+pub fn presets() -> Vec<super::AnyPreset> {
+    legacy_presets()
+        .into_iter()
+        .map(super::AnyPreset::Legacy)
+        .collect()
+}
+
+/// The presets as JSON records (transitional).
+pub fn legacy_presets() -> Vec<Preset> {
     let plant = boiler_plant_json();
     let sc = boiler_scenario();
     let rule = |id: &str, title: &str, desc: &str, method: &str, params: Value| Preset {

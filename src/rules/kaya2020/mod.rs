@@ -30,7 +30,7 @@
 //! first-order Taylor approximations of the smaller lags, reproduces the printed models of
 //! Examples 2 and 3.
 
-use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
 use crate::api::{controller_json, family_json, plant_json};
 use crate::error::{Error, Result};
 use crate::model::controller::Pid;
@@ -1016,7 +1016,21 @@ pub fn example_ipd(example: usize, criterion: Criterion, n: Option<f64>) -> Resu
 
 /// Presets: the three examples (the rule, each criterion for Example 1; the +20 % plant of
 /// Fig. 5) and every comparison setting, with the paper's scenario.
-pub fn presets() -> Vec<Preset> {
+/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    super::legacy_rules(methods(), tune)
+}
+
+/// Every preset of this paper.
+pub fn presets() -> Vec<super::AnyPreset> {
+    legacy_presets()
+        .into_iter()
+        .map(super::AnyPreset::Legacy)
+        .collect()
+}
+
+/// The presets as JSON records (transitional).
+pub fn legacy_presets() -> Vec<Preset> {
     let mut v = Vec::new();
     for crit in [Criterion::Iste, Criterion::Ist2e, Criterion::Ist3e] {
         v.push(Preset {

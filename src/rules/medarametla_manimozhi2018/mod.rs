@@ -65,7 +65,7 @@
 //!   Example 4, printed 1.07). That fit has no z argument: it was made for one z/τ which the
 //!   paper does not state, so its use always adds a warning.
 
-use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
 pub mod cstr;
 
 use crate::api::{controller_json, family_json, plant_json};
@@ -1218,7 +1218,21 @@ fn scenario_json(e: &Example) -> Value {
 /// Presets of this paper: Examples 1-6 (the proposed design), Example 5's design applied to
 /// the higher-order process of Eq. (49), and the Anil & Padma Sree and Ajmeri & Ali settings
 /// of Table 2.
-pub fn presets() -> Vec<Preset> {
+/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    super::legacy_rules(methods(), tune)
+}
+
+/// Every preset of this paper.
+pub fn presets() -> Vec<super::AnyPreset> {
+    legacy_presets()
+        .into_iter()
+        .map(super::AnyPreset::Legacy)
+        .collect()
+}
+
+/// The presets as JSON records (transitional).
+pub fn legacy_presets() -> Vec<Preset> {
     let mut v = Vec::new();
     for e in examples() {
         let order_note = if e.p_order == 3 {

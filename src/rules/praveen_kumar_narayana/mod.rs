@@ -71,7 +71,7 @@
 //! simulated on Eq. (21) (the printed servo rows match that). Pai et al. 2010's settings are
 //! presets with our reconstruction of their structure ([`pai2010_controller`]).
 
-use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
 use crate::error::{Error, Result};
 use crate::model::controller::{lead_lag, Controller, Pid};
 use crate::model::plant::{Family, Plant};
@@ -813,7 +813,21 @@ fn scenario(t_end: f64, d_time: f64) -> Value {
 
 /// Presets of this paper: both examples with the proposed design (also for Ms = 2), the
 /// +40 % delay perturbation with the nominal controller, and Pai et al. 2010's settings.
-pub fn presets() -> Vec<Preset> {
+/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    super::legacy_rules(methods(), tune)
+}
+
+/// Every preset of this paper.
+pub fn presets() -> Vec<super::AnyPreset> {
+    legacy_presets()
+        .into_iter()
+        .map(super::AnyPreset::Legacy)
+        .collect()
+}
+
+/// The presets as JSON records (transitional).
+pub fn legacy_presets() -> Vec<Preset> {
     let mut v = vec![];
     let pre = "praveen_kumar_narayana";
     // Example 1

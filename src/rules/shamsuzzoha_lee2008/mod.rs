@@ -37,7 +37,7 @@
 //! (no derivative filter) acts on the filtered error, so `Cr = f_R·G_c·F_t`, `Cy = G_c·F_t`.
 //! With this loop the nominal set-point response is exactly Eq. (10) for the IMC controller.
 
-use super::{MethodInfo, ParamInfo, Params, Preset, Tuning};
+use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
 use crate::api::{controller_json, family_json, plant_json, tf_json};
 use crate::error::{Error, Result};
 use crate::model::controller::{lag, Controller, Pid};
@@ -1414,7 +1414,21 @@ fn scenario_json(s: &Scenario) -> Value {
 /// Presets of this paper: every row of Tables 1-5 that maps onto (Cr, Cy), on the nominal
 /// plant (the proposed rows as a method call) and on the example's worst-case mismatch plant
 /// (the controller designed for the nominal model, as a literal).
-pub fn presets() -> Vec<Preset> {
+/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    super::legacy_rules(methods(), tune)
+}
+
+/// Every preset of this paper.
+pub fn presets() -> Vec<super::AnyPreset> {
+    legacy_presets()
+        .into_iter()
+        .map(super::AnyPreset::Legacy)
+        .collect()
+}
+
+/// The presets as JSON records (transitional).
+pub fn legacy_presets() -> Vec<Preset> {
     let mut out = vec![];
     for s in studies() {
         for r in &s.rows {
