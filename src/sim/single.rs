@@ -1,0 +1,338 @@
+//! The one-delay integrator: the loop as a neutral delay system, stepped piece by piece (see
+//! the module docs of [`crate::sim`]).
+
+use super::scenario::Scenario;
+use super::trajectory::{interpolation_inverse, piece_exponential, Trajectory, DEG, NODES};
+use crate::error::{Error, Result};
+use crate::model::controller::Controller;
+use crate::model::plant::Plant;
+use crate::model::ss::{balance, realize};
+use nalgebra::{DMatrix, DVector};
+
+/// Hard cap on the number of pieces of one simulation.
+const MAX_PIECES: usize = 1_000_000;
+
+/// The loop in the form the stepper integrates (see the module docs).
+#[derive(Debug, Clone)]
+pub(crate) struct LoopModel {
+    pub a: DMatrix<f64>,
+    pub bw: DVector<f64>,
+    pub br: DVector<f64>,
+    pub bd: DVector<f64>,
+    pub g: DVector<f64>,
+    pub h: f64,
+    pub hd: f64,
+    pub e: f64,
+    pub yx: DVector<f64>,
+    pub yw: f64,
+    pub yr: f64,
+    pub yd: f64,
+    pub delay: f64,
+}
+
+impl LoopModel {
+    /// Builds the loop; the errors explain ill-posed and impulsive loops.
+    pub(crate) fn new(plant: &Plant, c: &Controller, setpoint_step: bool) -> Result<LoopModel> {
+        if c.model_loop.is_some() {
+            return Err(Error::new(
+                "controller.model_loop",
+                "a model-based structure is simulated by sim::simulate, not this one-delay loop",
+            ));
+        }
+        let cs = c.realize().map_err(|e| e.within("controller"))?;
+        let ps = realize(&plant.tf).map_err(|e| e.within("plant"))?;
+        let dp = ps.d[(0, 0)];
+        if cs.k_dy != 0.0 && dp != 0.0 {
+            return Err(Error::new(
+                "controller.cy",
+                "ideal derivative on a biproper plant: the loop is ill-posed (|L(j∞)| = ∞) and a \
+                 load step would give an impulse; add a derivative filter (N)",
+            ));
+        }
+        if cs.k_dr != 0.0 && setpoint_step {
+            return Err(Error::new(
+                "controller.cr",
+                "ideal derivative on the set point: a set-point step gives an impulse in u; use \
+                 set-point weight c = 0, a set-point filter, or a derivative filter (N)",
+            ));
+        }
+        let nc = cs.ss.order();
+        let np = ps.order();
+        let n = nc + np;
+        let ac = &cs.ss.a;
+        let bcr = cs.ss.b.column(0).into_owned();
+        let bcy = cs.ss.b.column(1).into_owned();
+        let cc = cs.ss.c.row(0).transpose();
+        let (dcr, dcy) = (cs.ss.d[(0, 0)], cs.ss.d[(0, 1)]);
+        let ap = &ps.a;
+        let bp = ps.b.column(0).into_owned();
+        let cp = ps.c.row(0).transpose();
+        let mut a = DMatrix::zeros(n, n);
+        a.view_mut((0, 0), (nc, nc)).copy_from(ac);
+        a.view_mut((0, nc), (nc, np))
+            .copy_from(&(&bcy * cp.transpose()));
+        a.view_mut((nc, nc), (np, np)).copy_from(ap);
+        let mut bw = DVector::zeros(n);
+        bw.rows_mut(0, nc).copy_from(&(&bcy * dp));
+        bw.rows_mut(nc, np).copy_from(&bp);
+        let mut br = DVector::zeros(n);
+        br.rows_mut(0, nc).copy_from(&bcr);
+        let mut g = DVector::zeros(n);
+        g.rows_mut(0, nc).copy_from(&cc);
+        // v = … + Dcy·y − k_dy·ẏ, y = Cp xp + Dp w, ẏ = Cp Ap xp + Cp Bp w (Dp = 0 then)
+        let cpap = ap.transpose() * &cp;
+        g.rows_mut(nc, np).copy_from(&(&cp * dcy - cpap * cs.k_dy));
+        let cpbp = cp.dot(&bp);
+        let e = dcy * dp - cs.k_dy * cpbp;
+        let mut yx = DVector::zeros(n);
+        yx.rows_mut(nc, np).copy_from(&cp);
+        let mut m = LoopModel {
+            a,
+            bw,
+            br,
+            bd: DVector::zeros(n),
+            g,
+            h: dcr,
+            hd: 1.0,
+            e,
+            yx,
+            yw: dp,
+            yr: 0.0,
+            yd: 0.0,
+            delay: plant.delay,
+        };
+        if plant.delay == 0.0 {
+            // No delay: w = v, solve the algebraic loop v = G x + H r + H_d d + E v.
+            let f = 1.0 - m.e;
+            if f.abs() < 1e-12 {
+                return Err(Error::new(
+                    "controller",
+                    "the loop is ill-posed: 1 + L(j∞) = 0 with no dead time",
+                ));
+            }
+            let g2 = &m.g / f;
+            m.a += &m.bw * g2.transpose();
+            m.br += &m.bw * (m.h / f);
+            m.bd = &m.bw / f;
+            m.yx += &g2 * m.yw;
+            m.yr = m.yw * m.h / f;
+            m.yd = m.yw / f;
+            m.g = g2;
+            m.h /= f;
+            m.hd = 1.0 / f;
+            m.e = 0.0;
+            m.bw = DVector::zeros(n);
+            m.yw = 0.0;
+        }
+        // Balance the state coordinates (x = S x̃) for a well-scaled exponential.
+        let s = balance(&m.a);
+        for i in 0..n {
+            for j in 0..n {
+                m.a[(i, j)] *= s[j] / s[i];
+            }
+            m.bw[i] /= s[i];
+            m.br[i] /= s[i];
+            m.bd[i] /= s[i];
+            m.g[i] *= s[i];
+            m.yx[i] *= s[i];
+        }
+        Ok(m)
+    }
+
+    /// Spectral radius of A (fastest open-loop mode).
+    fn rho(&self) -> f64 {
+        if self.a.nrows() == 0 {
+            return 0.0;
+        }
+        self.a
+            .complex_eigenvalues()
+            .iter()
+            .fold(0.0, |m: f64, z| m.max(z.norm()))
+    }
+}
+
+/// Propagators of one piece length ℓ, flattened for the hot loop. With the stacked input
+/// `z = [x₀ (n); w (6 node values); r; d]` (length `n + 8`), node i = 1..=DEG (τ_i = iℓ/DEG):
+/// `x_i = M_i z`, `v_i = vrow_i·z + E w_i`, `y_i = yrow_i·z + Y_w w_i` (the constant r, d terms
+/// are inside the rows). Only `M_DEG` (the end state) is kept as a matrix.
+struct Prop {
+    /// `M_DEG`, row-major n × (n + 8).
+    m_end: Vec<f64>,
+    /// `vrow_i`, i = 1..=DEG, each of length n + 8.
+    vrows: Vec<Vec<f64>>,
+    /// `yrow_i`, i = 1..=DEG.
+    yrows: Vec<Vec<f64>>,
+}
+
+fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
+    let n = m.a.nrows();
+    let (ir, id) = (n + NODES, n + NODES + 1);
+    let e1 = piece_exponential(&m.a, std::slice::from_ref(&m.bw), &m.br, &m.bd, len)?;
+    let width = n + NODES + 2;
+    let mut p = Prop {
+        m_end: vec![],
+        vrows: vec![],
+        yrows: vec![],
+    };
+    let mut ei = e1.clone();
+    for i in 1..=DEG {
+        if i > 1 {
+            ei = &ei * &e1;
+        }
+        // M_i = [Φ_i | K_i V⁻¹ | R_i | D_i]
+        let mut mi = DMatrix::zeros(n, width);
+        mi.view_mut((0, 0), (n, n))
+            .copy_from(&ei.view((0, 0), (n, n)));
+        mi.view_mut((0, n), (n, NODES))
+            .copy_from(&(ei.view((0, n), (n, NODES)) * vinv));
+        mi.view_mut((0, ir), (n, 1))
+            .copy_from(&ei.view((0, ir), (n, 1)));
+        mi.view_mut((0, id), (n, 1))
+            .copy_from(&ei.view((0, id), (n, 1)));
+        let mut vrow: Vec<f64> = (0..width).map(|j| m.g.dot(&mi.column(j))).collect();
+        let mut yrow: Vec<f64> = (0..width).map(|j| m.yx.dot(&mi.column(j))).collect();
+        // direct terms: E w_i, Y_w w_i (node i of w), H r, H_d d, Y_r r, Y_d d
+        vrow[n + i] += m.e;
+        yrow[n + i] += m.yw;
+        vrow[ir] += m.h;
+        vrow[id] += m.hd;
+        yrow[ir] += m.yr;
+        yrow[id] += m.yd;
+        p.vrows.push(vrow);
+        p.yrows.push(yrow);
+        if i == DEG {
+            p.m_end = (0..n)
+                .flat_map(|r| (0..width).map(move |c| (r, c)))
+                .map(|(r, c)| mi[(r, c)])
+                .collect();
+        }
+    }
+    Ok(p)
+}
+
+/// Integrates the loop and returns the continuous response, or the error that explains why
+/// it cannot be simulated. `diverged_at` is set when the response left the bounds.
+pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
+    let mut hmax = sc.dt;
+    let rho = m.rho();
+    if rho > 0.0 {
+        hmax = hmax.min(0.5 / rho);
+    }
+    let h = if m.delay > 0.0 {
+        let n = (m.delay / hmax - 1e-9).ceil().max(1.0);
+        m.delay / n
+    } else {
+        sc.dt / (sc.dt / hmax - 1e-9).ceil().max(1.0)
+    };
+    let n_delay = if m.delay > 0.0 {
+        (m.delay / h).round() as usize
+    } else {
+        0
+    };
+    let tol = 1e-9 * h;
+    // piece offsets within a step: 0 and the event offsets
+    let mut offs = vec![0.0];
+    for ev in [&sc.setpoint, &sc.disturbance] {
+        if ev.size == 0.0 || ev.time > sc.t_end {
+            continue;
+        }
+        let q = ev.time / h;
+        let f = q - q.floor();
+        let o = f * h;
+        if o > tol && o < h - tol && !offs.iter().any(|x: &f64| (x - o).abs() <= tol) {
+            offs.push(o);
+        }
+    }
+    offs.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+    let lens: Vec<f64> = (0..offs.len())
+        .map(|i| {
+            if i + 1 < offs.len() {
+                offs[i + 1] - offs[i]
+            } else {
+                h - offs[i]
+            }
+        })
+        .collect();
+    let pps = offs.len();
+    let n_steps = ((sc.t_end + tol) / h).ceil().max(1.0) as usize;
+    let total = n_steps.saturating_mul(pps);
+    if total > MAX_PIECES {
+        return Err(Error::new(
+            "dt",
+            format!(
+                "the loop needs an internal step of {h:.3e} (dead time {} / fast dynamics); \
+                 {total} pieces exceed the limit {MAX_PIECES}: shorten t_end",
+                m.delay
+            ),
+        ));
+    }
+    let vinv = interpolation_inverse()?;
+    let props: Vec<Prop> = lens
+        .iter()
+        .map(|&l| propagators(m, l, &vinv))
+        .collect::<Result<_>>()?;
+    let n = m.a.nrows();
+    let mut traj = Trajectory {
+        h,
+        offsets: offs,
+        lens,
+        starts: None,
+        n_pieces: 0,
+        v: Vec::with_capacity(total * NODES),
+        y: Vec::with_capacity(total * NODES),
+        setpoint: sc.setpoint,
+        disturbance: sc.disturbance,
+        tol,
+    };
+    let scale = sc.setpoint.size.abs().max(sc.disturbance.size.abs());
+    let limit = 1e8 * scale.max(f64::MIN_POSITIVE);
+    let width = n + NODES + 2;
+    let gx: Vec<f64> = m.g.iter().copied().collect();
+    let yxv: Vec<f64> = m.yx.iter().copied().collect();
+    // z = [x; w; r; d]
+    let mut z = vec![0.0; width];
+    let mut xn = vec![0.0; n];
+    let lag = n_delay * pps;
+    let mut diverged_at = None;
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).fold(0.0, |s, (x, y)| s + x * y);
+    for k in 0..total {
+        let (t0, _) = traj.piece(k);
+        let r = traj.step_at(&sc.setpoint, t0);
+        let d = traj.step_at(&sc.disturbance, t0);
+        if m.delay > 0.0 && k >= lag {
+            let base = (k - lag) * NODES;
+            z[n..n + NODES].copy_from_slice(&traj.v[base..base + NODES]);
+        } else {
+            z[n..n + NODES].fill(0.0);
+        }
+        z[n + NODES] = r;
+        z[n + NODES + 1] = d;
+        let p = &props[k % pps];
+        let w0 = z[n];
+        let v0 = dot(&gx, &z[..n]) + m.h * r + m.hd * d + m.e * w0;
+        let y0 = dot(&yxv, &z[..n]) + m.yw * w0 + m.yr * r + m.yd * d;
+        let mut bad = !(v0.abs() <= limit && y0.abs() <= limit);
+        traj.v.push(v0);
+        traj.y.push(y0);
+        for i in 0..DEG {
+            let v = dot(&p.vrows[i], &z);
+            let y = dot(&p.yrows[i], &z);
+            if !(v.abs() <= limit && y.abs() <= limit) {
+                bad = true;
+            }
+            traj.v.push(v);
+            traj.y.push(y);
+        }
+        for (row, xr) in xn.iter_mut().enumerate() {
+            *xr = dot(&p.m_end[row * width..(row + 1) * width], &z);
+        }
+        z[..n].copy_from_slice(&xn);
+        traj.n_pieces = k + 1;
+        if bad || !xn.iter().all(|q| q.is_finite()) {
+            diverged_at = Some(t0);
+            traj.keep_pieces(k);
+            break;
+        }
+    }
+    Ok((traj, diverged_at))
+}

@@ -1,0 +1,241 @@
+//! The continuous response as pieces of degree-5 polynomials (node values of the plant input
+//! and the output), the interpolation on a piece, and the piece exponential shared by the
+//! one- and the two-delay integrators.
+
+use super::scenario::Step;
+use crate::error::{Error, Result};
+use nalgebra::{DMatrix, DVector};
+
+/// Interpolation degree on each piece (nodes per piece = DEG + 1).
+pub const DEG: usize = 5;
+/// Nodes per piece.
+pub const NODES: usize = DEG + 1;
+
+/// `exp(M·ℓ/DEG)` for one piece of length ℓ of the augmented system over
+/// `[x (n); ξ_j (NODES per delayed channel j); r; d]`: `ẋ = A x + Σ_j b_j ξ_{j,0} + b_r r + b_d d`,
+/// where `ξ_j` are the monomial coefficients of channel j's delayed input on the piece
+/// (`w_j(τ) = Σ_k ξ_{j,k} σ^k`, `σ = τ/ℓ`, so `dξ_{j,k}/dτ = (k+1)/ℓ·ξ_{j,k+1}`). Its powers give
+/// the state at the piece's nodes `iℓ/DEG` (shared by the one- and the several-delay
+/// integrators).
+pub(crate) fn piece_exponential(
+    a: &DMatrix<f64>,
+    bw: &[DVector<f64>],
+    br: &DVector<f64>,
+    bd: &DVector<f64>,
+    len: f64,
+) -> Result<DMatrix<f64>> {
+    let (n, m) = (a.nrows(), bw.len());
+    let sz = n + NODES * m + 2;
+    let (ir, id) = (n + NODES * m, n + NODES * m + 1);
+    let mut big = DMatrix::zeros(sz, sz);
+    big.view_mut((0, 0), (n, n)).copy_from(a);
+    for i in 0..n {
+        for (j, b) in bw.iter().enumerate() {
+            big[(i, n + NODES * j)] = b[i];
+        }
+        big[(i, ir)] = br[i];
+        big[(i, id)] = bd[i];
+    }
+    for j in 0..m {
+        for k in 0..DEG {
+            big[(n + NODES * j + k, n + NODES * j + k + 1)] = (k + 1) as f64 / len;
+        }
+    }
+    let e1 = (big * (len / DEG as f64)).exp();
+    if !e1.iter().all(|x| x.is_finite()) {
+        return Err(Error::new(
+            "controller",
+            "loop matrix exponential overflowed (gains too large?)",
+        ));
+    }
+    Ok(e1)
+}
+
+/// `V⁻¹` of the interpolation nodes: `V[j][k] = σ_j^k`, `σ_j = j/DEG`; coefficients `c = V⁻¹ w`.
+pub(crate) fn interpolation_inverse() -> Result<DMatrix<f64>> {
+    DMatrix::from_fn(NODES, NODES, |j, k| (j as f64 / DEG as f64).powi(k as i32))
+        .try_inverse()
+        .ok_or_else(|| Error::new("", "internal: interpolation matrix singular"))
+}
+
+/// The continuous response: pieces with node values of `v` (plant input) and `y`.
+#[derive(Debug, Clone)]
+pub struct Trajectory {
+    /// Internal step h.
+    pub h: f64,
+    /// Piece offsets within a step (first is 0) and lengths.
+    pub offsets: Vec<f64>,
+    /// Lengths matching `offsets` (or, with `starts`, one per piece).
+    pub lens: Vec<f64>,
+    /// Explicit piece start times (a non-periodic piece list, the several-delay integrator);
+    /// `None`: pieces repeat `offsets` every `h`.
+    pub starts: Option<Vec<f64>>,
+    /// Number of pieces computed.
+    pub n_pieces: usize,
+    /// Node values of the plant input `v = u + d`, `NODES` per piece.
+    pub v: Vec<f64>,
+    /// Node values of `y`, `NODES` per piece.
+    pub y: Vec<f64>,
+    /// Set-point event.
+    pub setpoint: Step,
+    /// Load event.
+    pub disturbance: Step,
+    /// Time of the events' tolerance (1e-9·h).
+    pub tol: f64,
+}
+
+impl Trajectory {
+    /// Start time and length of piece `k`.
+    pub fn piece(&self, k: usize) -> (f64, f64) {
+        if let Some(st) = &self.starts {
+            return (st[k], self.lens[k]);
+        }
+        let p = self.offsets.len();
+        (
+            (k / p) as f64 * self.h + self.offsets[k % p],
+            self.lens[k % p],
+        )
+    }
+
+    /// Value of a step signal at `t` (right-hand limit).
+    pub fn step_at(&self, s: &Step, t: f64) -> f64 {
+        if s.size != 0.0 && t >= s.time - self.tol {
+            s.size
+        } else {
+            0.0
+        }
+    }
+
+    /// Piece containing `t` (right-continuous) and the local coordinate σ ∈ [0, 1].
+    pub fn locate(&self, t: f64) -> (usize, f64) {
+        if let Some(st) = &self.starts {
+            let k = st[..self.n_pieces.max(1).min(st.len())]
+                .partition_point(|s| *s <= t + self.tol)
+                .saturating_sub(1);
+            let (t0, len) = self.piece(k);
+            return (k, ((t - t0) / len).clamp(0.0, 1.0));
+        }
+        let p = self.offsets.len();
+        let ns = ((t + self.tol) / self.h).floor().max(0.0) as usize;
+        let o = t - ns as f64 * self.h;
+        let mut j = 0;
+        for (i, off) in self.offsets.iter().enumerate() {
+            if *off <= o + self.tol {
+                j = i;
+            }
+        }
+        let k = (ns * p + j).min(self.n_pieces.saturating_sub(1));
+        let (t0, len) = self.piece(k);
+        (k, ((t - t0) / len).clamp(0.0, 1.0))
+    }
+
+    /// Node values of `y` on piece `k`.
+    pub fn y_nodes(&self, k: usize) -> &[f64] {
+        &self.y[k * NODES..(k + 1) * NODES]
+    }
+
+    /// Node values of `v` on piece `k`.
+    pub fn v_nodes(&self, k: usize) -> &[f64] {
+        &self.v[k * NODES..(k + 1) * NODES]
+    }
+
+    /// `y(t)` (right-hand limit).
+    pub fn y_at(&self, t: f64) -> f64 {
+        let (k, s) = self.locate(t);
+        lagrange(self.y_nodes(k), s)
+    }
+
+    /// `u(t) = v(t) − d(t)` (right-hand limit).
+    pub fn u_at(&self, t: f64) -> f64 {
+        let (k, s) = self.locate(t);
+        lagrange(self.v_nodes(k), s) - self.step_at(&self.disturbance, t)
+    }
+
+    /// Keeps only the first `k` pieces (the response before divergence was detected).
+    pub fn keep_pieces(&mut self, k: usize) {
+        self.n_pieces = k;
+        self.v.truncate(k * NODES);
+        self.y.truncate(k * NODES);
+    }
+
+    /// End time of the computed response.
+    pub fn end(&self) -> f64 {
+        if self.n_pieces == 0 {
+            return 0.0;
+        }
+        let (t0, l) = self.piece(self.n_pieces - 1);
+        t0 + l
+    }
+}
+
+/// Barycentric Lagrange interpolation on DEG+1 equispaced nodes of [0, 1].
+pub fn lagrange(vals: &[f64], s: f64) -> f64 {
+    const W: [f64; NODES] = [1.0, -5.0, 10.0, -10.0, 5.0, -1.0];
+    let mut num = 0.0;
+    let mut den = 0.0;
+    for (j, (&v, &w)) in vals.iter().zip(W.iter()).enumerate() {
+        let d = s - j as f64 / DEG as f64;
+        if d == 0.0 {
+            return v;
+        }
+        let q = w / d;
+        num += q * v;
+        den += q;
+    }
+    num / den
+}
+
+/// Derivative d/dσ of the interpolant (σ ∈ [0, 1]).
+pub fn lagrange_deriv(vals: &[f64], s: f64) -> f64 {
+    // differentiate the monomial form c = V⁻¹ vals (small, fixed size)
+    let c = monomial_coeffs(vals);
+    let mut d = 0.0;
+    for k in (1..NODES).rev() {
+        d = d * s + k as f64 * c[k];
+    }
+    d
+}
+
+/// Monomial coefficients (ascending in σ) of the interpolant through the 6 equispaced nodes.
+pub fn monomial_coeffs(vals: &[f64]) -> [f64; NODES] {
+    // Newton forward differences → monomial coefficients
+    let mut a = [0.0; NODES];
+    a.copy_from_slice(vals);
+    let hn = 1.0 / DEG as f64;
+    // divided differences
+    for j in 1..NODES {
+        for i in (j..NODES).rev() {
+            a[i] = (a[i] - a[i - 1]) / (j as f64 * hn);
+        }
+    }
+    // Newton form → monomial
+    let mut c = [0.0; NODES];
+    for i in (0..NODES).rev() {
+        // c ← c·(s − x_i) + a_i
+        let xi = i as f64 * hn;
+        let mut nc = [0.0; NODES];
+        for k in 0..NODES - 1 {
+            nc[k + 1] += c[k];
+            nc[k] -= xi * c[k];
+        }
+        nc[0] += a[i];
+        c = nc;
+    }
+    c
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn lagrange_is_exact_on_quintics() {
+        let f = |s: f64| 1.0 - 2.0 * s + 3.0 * s.powi(3) - s.powi(5);
+        let vals: Vec<f64> = (0..NODES).map(|j| f(j as f64 / DEG as f64)).collect();
+        for s in [0.0, 0.13, 0.5, 0.77, 1.0] {
+            assert!((lagrange(&vals, s) - f(s)).abs() < 1e-13);
+            let df = -2.0 + 9.0 * s * s - 5.0 * s.powi(4);
+            assert!((lagrange_deriv(&vals, s) - df).abs() < 1e-11);
+        }
+    }
+}
