@@ -5,13 +5,14 @@
 
 use crate::analysis::freq::{analyze as analyze_loop, Analysis};
 use crate::analysis::metrics::Metrics;
+use crate::analysis::{simulate as simulate_loop, SimResult};
 use crate::error::{Error, Result};
 use crate::model::controller::{Controller, ModelLoop};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use crate::model::tf::Tf;
 use crate::rules::{self, Params};
-use crate::sim::{simulate as simulate_loop, Scenario, SimResult, Step};
+use crate::sim::{Scenario, Step};
 use serde_json::{json, Map, Value};
 
 /// Largest polynomial accepted at the boundary (coefficients).
@@ -195,12 +196,6 @@ pub fn parse_scenario(v: &Value, path: &str) -> Result<Scenario> {
     if let Some(b) = opt_field(v, "settling_band") {
         sc.settling_band = number(b, &join(path, "settling_band"))?;
     }
-    if let Some(k) = opt_field(v, "isens_k") {
-        sc.isens_k = Some(number(k, &join(path, "isens_k"))?);
-    }
-    if let Some(t) = opt_field(v, "isens_tau") {
-        sc.isens_tau = Some(number(t, &join(path, "isens_tau"))?);
-    }
     sc.validate().map_err(|e| e.within(path))?;
     Ok(sc)
 }
@@ -264,7 +259,6 @@ pub fn metrics_json(m: &Metrics) -> Value {
     json!({
         "t_start": m.t_start, "t_end": m.t_end, "step": m.step,
         "iae": m.iae, "ise": m.ise, "itae": m.itae, "iste": m.iste, "ist2e": m.ist2e, "ist3e": m.ist3e,
-        "isenscod": num_or_null(m.isenscod), "isensdco": num_or_null(m.isensdco),
         "overshoot": num_or_null(m.overshoot), "undershoot": num_or_null(m.undershoot),
         "peak_error": m.peak_error, "settling_time": num_or_null(m.settling_time),
         "rise_time": num_or_null(m.rise_time), "tv": m.tv,

@@ -42,15 +42,18 @@ pub(crate) use single::LoopModel;
 pub(crate) use trajectory::{interpolation_inverse, piece_exponential};
 pub use trajectory::{lagrange, lagrange_deriv, monomial_coeffs, Trajectory, DEG, NODES};
 
-use crate::analysis::metrics::{self, Windows};
 use crate::error::Result;
 use crate::model::controller::Controller;
-use crate::model::plant::{Family, Plant};
+use crate::model::plant::Plant;
 use single::integrate;
 
-/// Simulation output.
+/// The loop's steady state `(y∞, u∞)` (`None`: it has none) for constant inputs `(r, d)`.
+pub type SteadyPoint = ((f64, f64), Option<(f64, f64)>);
+
+/// The simulated response: output samples, the continuous response they come from, and the
+/// loop's steady state for the inputs of each window (what metrics need to know of the loop).
 #[derive(Debug, Clone, PartialEq)]
-pub struct SimResult {
+pub struct Response {
     /// Sample times `k·dt`.
     pub t: Vec<f64>,
     /// Set point (right-hand limits).
@@ -61,39 +64,39 @@ pub struct SimResult {
     pub y: Vec<f64>,
     /// Controller output (plant input is `u + d`).
     pub u: Vec<f64>,
-    /// True when the response grew beyond bounds; samples stop there.
-    pub diverged: bool,
-    /// Time at which divergence was detected.
+    /// Time at which divergence was detected (the samples stop there).
     pub diverged_at: Option<f64>,
-    /// Servo and regulatory metrics.
-    pub metrics: Windows,
-    /// The internal step h = θ/N used.
-    pub internal_step: f64,
+    /// The continuous response.
+    pub trajectory: Trajectory,
+    /// The loop's steady state `(y∞, u∞)` for constant `(r, d)`, at the inputs in force from
+    /// each event on (`None`: the loop has none).
+    pub steady: Vec<SteadyPoint>,
 }
 
-/// Default weights (K, τ_P) of the Arvanitis criteria from the plant family.
-fn isens_weights(plant: &Plant, sc: &Scenario) -> (Option<f64>, Option<f64>) {
-    let (fk, ft) = match plant.family {
-        Some(Family::IpdtIr { k, tau, .. })
-        | Some(Family::FopdtIr { k, tau, .. })
-        | Some(Family::Ifoptd { k, tau, .. })
-        | Some(Family::IfoptdZero { k, tau, .. })
-        | Some(Family::IfoptdZeroUnstable { k, tau, .. }) => (Some(k), Some(tau)),
-        Some(Family::Piptd { k, .. }) | Some(Family::Diptd { k, .. }) => (Some(k), None),
-        None => (None, None),
-    };
-    (sc.isens_k.or(fk), sc.isens_tau.or(ft))
+impl Response {
+    /// The internal step h used.
+    pub fn internal_step(&self) -> f64 {
+        self.trajectory.h
+    }
+
+    /// The steady state for the inputs `(r, d)` of one of the scenario's windows.
+    pub fn steady_state(&self, r: f64, d: f64) -> Option<(f64, f64)> {
+        self.steady
+            .iter()
+            .find(|(k, _)| *k == (r, d))
+            .and_then(|(_, v)| *v)
+    }
 }
 
 /// Simulates the closed loop (see the module docs for the method and conventions).
 ///
 /// Errors: invalid scenario fields (`scenario.dt`, …), ill-posed loops (ideal derivative on a
 /// biproper plant: `controller.cy`), impulsive set-point paths (`controller.cr`).
-/// Divergence is not an error: `diverged`/`diverged_at` are set and the samples stop there.
-pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResult> {
+/// Divergence is not an error: `diverged_at` is set and the samples stop there.
+pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<Response> {
     sc.validate().map_err(|e| e.within("scenario"))?;
     if c.model_loop.is_some() {
-        return crate::sim::model_loop::simulate(plant, c, sc);
+        return model_loop::simulate(plant, c, sc);
     }
     let m = LoopModel::new(
         plant,
@@ -101,31 +104,30 @@ pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResul
         sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
     )?;
     let (traj, diverged_at) = integrate(&m, sc)?;
-    let steady = |r: f64, d: f64| metrics::steady_state(&m, r, d);
-    Ok(sample(plant, sc, &traj, diverged_at, &steady))
+    Ok(sample(sc, traj, diverged_at, &|r, d| m.steady_state(r, d)))
 }
 
-/// Output samples and metrics of a computed response (shared by both integrators).
+/// Output samples of a computed response and the steady states at the windows' inputs
+/// (shared by both integrators).
 pub(crate) fn sample(
-    plant: &Plant,
     sc: &Scenario,
-    traj: &Trajectory,
+    traj: Trajectory,
     diverged_at: Option<f64>,
-    steady: metrics::SteadyFn,
-) -> SimResult {
+    steady: &dyn Fn(f64, f64) -> Option<(f64, f64)>,
+) -> Response {
     let kmax = (sc.t_end / sc.dt).round() as usize;
     let t_stop = diverged_at.unwrap_or(f64::INFINITY);
-    let mut res = SimResult {
+    let mut res = Response {
         t: vec![],
         r: vec![],
         d: vec![],
         y: vec![],
         u: vec![],
-        diverged: diverged_at.is_some(),
         diverged_at,
-        metrics: Windows::default(),
-        internal_step: traj.h,
+        steady: vec![],
+        trajectory: traj,
     };
+    let traj = &res.trajectory;
     let t_traj_end = traj.end();
     for k in 0..=kmax {
         let t = k as f64 * sc.dt;
@@ -138,7 +140,14 @@ pub(crate) fn sample(
         res.y.push(traj.y_at(t));
         res.u.push(traj.u_at(t));
     }
-    let (ik, it) = isens_weights(plant, sc);
-    res.metrics = metrics::windows(steady, traj, &res, sc, diverged_at, ik, it);
+    for t in [sc.setpoint.time, sc.disturbance.time] {
+        let key = (
+            traj.step_at(&traj.setpoint, t),
+            traj.step_at(&traj.disturbance, t),
+        );
+        if !res.steady.iter().any(|(k, _)| *k == key) {
+            res.steady.push((key, steady(key.0, key.1)));
+        }
+    }
     res
 }

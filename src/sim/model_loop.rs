@@ -23,7 +23,7 @@ use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::model::ss::{balance, realize, realize_paths, Ss};
 use crate::sim::{
-    interpolation_inverse, lagrange, piece_exponential, sample, Scenario, SimResult, Trajectory,
+    interpolation_inverse, lagrange, piece_exponential, sample, Response, Scenario, Trajectory,
     DEG, NODES,
 };
 use nalgebra::{DMatrix, DVector};
@@ -660,13 +660,12 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
 }
 
 /// Simulates a loop whose controller has a model loop (called by [`crate::sim::simulate`]).
-pub(crate) fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResult> {
+pub(crate) fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<Response> {
     let mm = MultiModel::new(
         plant,
         c,
         sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
     )?;
     let (traj, diverged_at) = integrate(&mm, sc)?;
-    let steady = |r: f64, d: f64| mm.steady_state(r, d);
-    Ok(sample(plant, sc, &traj, diverged_at, &steady))
+    Ok(sample(sc, traj, diverged_at, &|r, d| mm.steady_state(r, d)))
 }

@@ -24,10 +24,6 @@ pub struct Scenario {
     pub disturbance: Step,
     /// Settling band as a fraction (default 0.02).
     pub settling_band: f64,
-    /// Process gain K of Arvanitis Eqs. (13)-(14) (default: the plant family's k).
-    pub isens_k: Option<f64>,
-    /// Process time constant τ_P of Eq. (14) (default: the plant family's τ).
-    pub isens_tau: Option<f64>,
 }
 
 impl Scenario {
@@ -52,8 +48,6 @@ impl Scenario {
                 size: d_size,
             },
             settling_band: 0.02,
-            isens_k: None,
-            isens_tau: None,
         }
     }
 
@@ -73,12 +67,6 @@ impl Scenario {
         crate::error::finite("disturbance.size", self.disturbance.size)?;
         if !(self.settling_band > 0.0 && self.settling_band < 1.0) {
             return Err(Error::new("settling_band", "must lie in (0, 1)"));
-        }
-        if let Some(k) = self.isens_k {
-            crate::error::finite("isens_k", k)?;
-        }
-        if let Some(t) = self.isens_tau {
-            crate::error::finite("isens_tau", t)?;
         }
         Ok(())
     }

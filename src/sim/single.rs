@@ -31,6 +31,38 @@ pub(crate) struct LoopModel {
 }
 
 impl LoopModel {
+    /// Steady state (y∞, u∞) of the loop for constant r, d; `None` when the loop has none.
+    pub(crate) fn steady_state(&self, r: f64, d: f64) -> Option<(f64, f64)> {
+        let n = self.a.nrows();
+        let mut big = DMatrix::zeros(n + 1, n + 1);
+        big.view_mut((0, 0), (n, n)).copy_from(&self.a);
+        let mut rhs = DVector::zeros(n + 1);
+        for i in 0..n {
+            big[(i, n)] = self.bw[i];
+            big[(n, i)] = self.g[i];
+            rhs[i] = -(self.br[i] * r + self.bd[i] * d);
+        }
+        // v = G x + H r + H_d d + E v  (w = v at steady state)
+        big[(n, n)] = self.e - 1.0;
+        rhs[n] = -(self.h * r + self.hd * d);
+        let norm = big.amax().max(1e-300);
+        let lu = big.clone().lu();
+        let sol = lu.solve(&rhs)?;
+        if !sol.iter().all(|z| z.is_finite()) {
+            return None;
+        }
+        // reject near-singular solves: residual check and size sanity
+        let res = &big * &sol - &rhs;
+        if res.amax() > 1e-8 * norm * sol.amax().max(1.0) {
+            return None;
+        }
+        let x = sol.rows(0, n);
+        let v = sol[n];
+        let y = self.yx.dot(&x) + self.yw * v + self.yr * r + self.yd * d;
+        let u = v - d;
+        (y.is_finite() && u.is_finite()).then_some((y, u))
+    }
+
     /// Builds the loop; the errors explain ill-posed and impulsive loops.
     pub(crate) fn new(plant: &Plant, c: &Controller, setpoint_step: bool) -> Result<LoopModel> {
         if c.model_loop.is_some() {

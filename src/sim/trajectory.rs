@@ -59,7 +59,7 @@ pub(crate) fn interpolation_inverse() -> Result<DMatrix<f64>> {
 }
 
 /// The continuous response: pieces with node values of `v` (plant input) and `y`.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Trajectory {
     /// Internal step h.
     pub h: f64,

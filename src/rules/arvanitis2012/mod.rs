@@ -39,17 +39,20 @@
 //!   and the β optimization report that as an error naming `params.criterion` (the paper's
 //!   simulation must have filtered the derivative; it does not say how).
 //! - **Algorithm III, criterion units**: criterion (13) is evaluated on the process in its own
-//!   units with K = K̄, τ_P = τ̄_P (the simulator's `isens_k`, `isens_tau`); Table 7's fits,
+//!   units with K = K̄, τ_P = τ̄_P ([`criteria`]); Table 7's fits,
 //!   built on the normalized process, reproduce it within their printed errors.
 
+pub mod criteria;
+
 use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
+use crate::analysis::simulate;
 use crate::api::controller_json;
 use crate::error::{Error, Result};
 use crate::model::controller::{lead_lag, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use crate::numerics::{brent, golden_min, positive_real_roots};
-use crate::sim::{simulate, Scenario};
+use crate::sim::Scenario;
 use serde_json::{json, Map, Value};
 use std::f64::consts::PI;
 
@@ -934,22 +937,13 @@ pub fn load_criterion(
     .plant();
     let c = Pid::ipd(kp, ki, kd).to_controller()?;
     let dt = (t_end / 1500.0).max(p.theta / 4.0).min(t_end / 200.0);
-    let mut sc = Scenario::steps(t_end, dt, 0.0, 0.0, 0.0, 1.0);
-    sc.isens_k = Some(p.k);
-    sc.isens_tau = Some(p.tau_p);
+    let sc = Scenario::steps(t_end, dt, 0.0, 0.0, 0.0, 1.0);
     let res = simulate(&plant, &c, &sc)?;
     if res.diverged {
         return Ok(f64::INFINITY);
     }
-    let m = res
-        .metrics
-        .regulatory
+    let j = criteria::regulatory(&res, p.k, p.tau_p, criterion)
         .ok_or_else(|| Error::new("params.criterion", "no regulatory window in the simulation"))?;
-    let j = if criterion == "isensdco" {
-        m.isensdco
-    } else {
-        m.isenscod
-    };
     match j {
         Some(v) if v.is_finite() => Ok(v),
         Some(_) => Ok(f64::INFINITY),

@@ -1,0 +1,63 @@
+//! Simulate, then measure: the one place that joins the simulator and the metrics.
+
+use super::metrics::{windows, Windows};
+use crate::error::Result;
+use crate::model::controller::Controller;
+use crate::model::plant::Plant;
+use crate::sim::{self, Response, Scenario, Trajectory};
+
+/// A simulation with its metrics.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimResult {
+    /// Sample times `k·dt`.
+    pub t: Vec<f64>,
+    /// Set point (right-hand limits).
+    pub r: Vec<f64>,
+    /// Load disturbance.
+    pub d: Vec<f64>,
+    /// Process output.
+    pub y: Vec<f64>,
+    /// Controller output (plant input is `u + d`).
+    pub u: Vec<f64>,
+    /// True when the response grew beyond bounds; samples stop there.
+    pub diverged: bool,
+    /// Time at which divergence was detected.
+    pub diverged_at: Option<f64>,
+    /// Servo and regulatory metrics.
+    pub metrics: Windows,
+    /// The internal step h = θ/N used.
+    pub internal_step: f64,
+    /// The continuous response the samples and metrics come from (what a paper's own
+    /// criteria integrate, see [`crate::analysis::metrics::quadrature`]).
+    pub trajectory: Trajectory,
+}
+
+/// Simulates the closed loop ([`crate::sim::simulate`]) and computes the metrics of its
+/// windows ([`crate::analysis::metrics`]).
+pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResult> {
+    let res = sim::simulate(plant, c, sc)?;
+    let metrics = windows(&res, sc);
+    let internal_step = res.internal_step();
+    let Response {
+        t,
+        r,
+        d,
+        y,
+        u,
+        diverged_at,
+        trajectory,
+        ..
+    } = res;
+    Ok(SimResult {
+        t,
+        r,
+        d,
+        y,
+        u,
+        diverged: diverged_at.is_some(),
+        diverged_at,
+        metrics,
+        internal_step,
+        trajectory,
+    })
+}
