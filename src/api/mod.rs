@@ -7,131 +7,21 @@ use crate::analysis::freq::{analyze as analyze_loop, Analysis};
 use crate::analysis::metrics::Metrics;
 use crate::analysis::{simulate as simulate_loop, SimResult};
 use crate::error::{Error, Result};
-use crate::model::controller::{Controller, ModelLoop};
+use crate::model::controller::Controller;
 use crate::model::plant::{Family, Plant};
-use crate::model::poly::Poly;
 use crate::model::tf::Tf;
 use crate::rules::{self, Params};
-use crate::sim::{Scenario, Step};
+use crate::sim::Scenario;
 use serde_json::{json, Map, Value};
 
-/// Largest polynomial accepted at the boundary (coefficients).
-pub const MAX_COEFFS: usize = 21;
+pub mod input;
 
-fn field<'a>(v: &'a Value, name: &str, path: &str) -> Result<&'a Value> {
-    match v {
-        Value::Object(m) => m
-            .get(name)
-            .filter(|x| !x.is_null())
-            .ok_or_else(|| Error::new(join(path, name), "is required")),
-        _ => Err(Error::new(
-            if path.is_empty() { "input" } else { path },
-            "must be an object",
-        )),
-    }
-}
-
-fn opt_field<'a>(v: &'a Value, name: &str) -> Option<&'a Value> {
-    v.as_object()
-        .and_then(|m| m.get(name))
-        .filter(|x| !x.is_null())
-}
-
-fn join(path: &str, name: &str) -> String {
-    if path.is_empty() {
-        name.to_string()
-    } else {
-        format!("{path}.{name}")
-    }
-}
-
-fn number(v: &Value, path: &str) -> Result<f64> {
-    match v.as_f64() {
-        Some(x) if x.is_finite() => Ok(x),
-        _ => Err(Error::new(
-            path,
-            format!("must be a finite number (got {})", short(v)),
-        )),
-    }
-}
-
-fn short(v: &Value) -> String {
-    let s = v.to_string();
-    if s.len() > 40 {
-        format!(
-            "{}…",
-            &s[..s.char_indices().nth(40).map(|c| c.0).unwrap_or(s.len())]
-        )
-    } else {
-        s
-    }
-}
-
-fn poly(v: &Value, path: &str) -> Result<Poly> {
-    let arr = v
-        .as_array()
-        .ok_or_else(|| Error::new(path, "must be an array of numbers (descending powers of s)"))?;
-    if arr.is_empty() {
-        return Err(Error::new(path, "must have at least one coefficient"));
-    }
-    if arr.len() > MAX_COEFFS {
-        return Err(Error::new(
-            path,
-            format!("at most {MAX_COEFFS} coefficients are accepted"),
-        ));
-    }
-    let mut c = Vec::with_capacity(arr.len());
-    for (i, x) in arr.iter().enumerate() {
-        c.push(number(x, &format!("{path}[{i}]"))?);
-    }
-    Poly::parse_desc(path, &c)
-}
-
-fn tf(v: &Value, path: &str) -> Result<Tf> {
-    let num = poly(field(v, "num", path)?, &join(path, "num"))?;
-    let den = poly(field(v, "den", path)?, &join(path, "den"))?;
-    if den.is_zero() {
-        return Err(Error::new(
-            join(path, "den"),
-            "must not be the zero polynomial",
-        ));
-    }
-    Ok(Tf { num, den })
-}
+pub use input::MAX_COEFFS;
+use input::{from_json, AnalyzeIn, ReduceIn, SimulateIn, TuneIn};
 
 /// Parses an API.md plant: `{num, den, delay}` or `{family, …params}`.
 pub fn parse_plant(v: &Value, path: &str) -> Result<Plant> {
-    if !v.is_object() {
-        return Err(Error::new(
-            path,
-            "must be an object ({num, den, delay} or {family, …})",
-        ));
-    }
-    if let Some(f) = opt_field(v, "family") {
-        let id = f
-            .as_str()
-            .ok_or_else(|| Error::new(join(path, "family"), "must be a string"))?;
-        let names = Family::param_names(id).ok_or_else(|| {
-            Error::new(
-                join(path, "family"),
-                format!("unknown family '{id}' (one of {})", Family::IDS.join(", ")),
-            )
-        })?;
-        // type-check every parameter first so the error names it
-        for n in names {
-            let x = field(v, n, path)?;
-            number(x, &join(path, n))?;
-        }
-        let fam = Family::from_params(id, |n| opt_field(v, n).and_then(|x| x.as_f64()))
-            .map_err(|e| e.within(path))?;
-        return Ok(fam.plant());
-    }
-    let t = tf(v, path)?;
-    let delay = match opt_field(v, "delay") {
-        None => 0.0,
-        Some(d) => number(d, &join(path, "delay"))?,
-    };
-    Plant::new(t, delay).map_err(|e| e.within(path))
+    input::plant(v, path)
 }
 
 /// Parses an API.md controller `{cr: {num, den}, cy: {num, den}}`.
@@ -140,64 +30,12 @@ pub fn parse_plant(v: &Value, path: &str) -> Result<Plant> {
 /// [`crate::model::controller::ModelLoop`]): `u = Cr·r − Cy·y + u₁ + Cy·y_m`, `u₁ = cr·r − cy·y_m`,
 /// `y_m` = the model plant (dead time included) driven by `u₁`.
 pub fn parse_controller(v: &Value, path: &str) -> Result<Controller> {
-    let cr = tf(field(v, "cr", path)?, &join(path, "cr"))?;
-    let cy = tf(field(v, "cy", path)?, &join(path, "cy"))?;
-    let c = Controller::new(cr, cy).map_err(|e| e.within(path))?;
-    match opt_field(v, "model_loop") {
-        None | Some(Value::Null) => Ok(c),
-        Some(ml) => {
-            let mp = join(path, "model_loop");
-            if !ml.is_object() {
-                return Err(Error::new(mp, "must be an object {plant, cr, cy} or null"));
-            }
-            let model = parse_plant(field(ml, "plant", &mp)?, &join(&mp, "plant"))?;
-            let mcr = tf(field(ml, "cr", &mp)?, &join(&mp, "cr"))?;
-            let mcy = tf(field(ml, "cy", &mp)?, &join(&mp, "cy"))?;
-            let m = ModelLoop::new(model, mcr, mcy).map_err(|e| e.within(path))?;
-            Ok(c.with_model_loop(m))
-        }
-    }
-}
-
-fn step(v: Option<&Value>, path: &str) -> Result<Step> {
-    match v {
-        None => Ok(Step {
-            time: 0.0,
-            size: 0.0,
-        }),
-        Some(s) => Ok(Step {
-            time: opt_field(s, "time")
-                .map(|x| number(x, &join(path, "time")))
-                .transpose()?
-                .unwrap_or(0.0),
-            size: number(field(s, "size", path)?, &join(path, "size"))?,
-        }),
-    }
+    input::controller(v, path)
 }
 
 /// Parses an API.md scenario.
 pub fn parse_scenario(v: &Value, path: &str) -> Result<Scenario> {
-    if !v.is_object() {
-        return Err(Error::new(
-            path,
-            "must be an object {t_end, dt, setpoint, disturbance}",
-        ));
-    }
-    let mut sc = Scenario::steps(
-        number(field(v, "t_end", path)?, &join(path, "t_end"))?,
-        number(field(v, "dt", path)?, &join(path, "dt"))?,
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-    );
-    sc.setpoint = step(opt_field(v, "setpoint"), &join(path, "setpoint"))?;
-    sc.disturbance = step(opt_field(v, "disturbance"), &join(path, "disturbance"))?;
-    if let Some(b) = opt_field(v, "settling_band") {
-        sc.settling_band = number(b, &join(path, "settling_band"))?;
-    }
-    sc.validate().map_err(|e| e.within(path))?;
-    Ok(sc)
+    input::scenario(v, path)
 }
 
 /// `{num, den}` in descending powers.
@@ -352,36 +190,18 @@ pub fn scenario_json(sc: &Scenario) -> Value {
 
 /// Method parameters from JSON (`params` of `tune`): an object of numbers and strings.
 pub fn params_from_json(v: &Value) -> Result<Params> {
-    params(Some(v))
-}
-
-fn params(v: Option<&Value>) -> Result<Params> {
-    match v {
-        None | Some(Value::Null) => Ok(Params::default()),
-        Some(Value::Object(m)) => {
-            let mut p = Params::default();
-            for (k, x) in m {
-                let path = format!("params.{k}");
-                p = match x {
-                    Value::String(s) => p.with(k, s.as_str()),
-                    Value::Null => p,
-                    x => p.with(k, number(x, &path)?),
-                };
-            }
-            Ok(p)
-        }
-        Some(_) => Err(Error::new("params", "must be an object")),
+    if v.is_null() {
+        return Ok(Params::default());
     }
+    Ok(input::params(&Some(from_json(v, "params")?)))
 }
 
 /// `tune({method, plant, params})` of API.md.
 pub fn tune(input: &Value) -> Result<Value> {
-    let method = field(input, "method", "")?
-        .as_str()
-        .ok_or_else(|| Error::new("method", "must be a string"))?;
-    let plant = parse_plant(field(input, "plant", "")?, "plant")?;
-    let params = params(opt_field(input, "params"))?;
-    let t = rules::tune(method, &plant, &params)?;
+    let inp: TuneIn = from_json(input, "")?;
+    let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
+    let params = input::params(&inp.params);
+    let t = rules::tune(&inp.method, &plant, &params)?;
     let mut c = match controller_json(&t.controller) {
         Value::Object(m) => m,
         _ => Map::new(),
@@ -401,10 +221,11 @@ pub fn tune(input: &Value) -> Result<Value> {
 /// zero to FOPDT-IR (`rule`: "paper" (default), "taylor", "half_rule").
 pub fn reduce(input: &Value) -> Result<Value> {
     use crate::rules::kaya2020::{reduce_to_fopdt_ir_with, Reduction};
-    let plant = parse_plant(field(input, "plant", "")?, "plant")?;
-    let rule = match opt_field(input, "rule") {
+    let inp: ReduceIn = from_json(input, "")?;
+    let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
+    let rule = match &inp.rule {
         None => Reduction::Paper,
-        Some(v) => v.as_str().and_then(Reduction::from_id).ok_or_else(|| {
+        Some(v) => Reduction::from_id(v).ok_or_else(|| {
             Error::new(
                 "rule",
                 format!("must be one of {}", Reduction::IDS.join(", ")),
@@ -419,17 +240,25 @@ pub fn reduce(input: &Value) -> Result<Value> {
 
 /// `simulate({plant, controller, scenario})` of API.md.
 pub fn simulate(input: &Value) -> Result<Value> {
-    let plant = parse_plant(field(input, "plant", "")?, "plant")?;
-    let c = parse_controller(field(input, "controller", "")?, "controller")?;
-    let sc = parse_scenario(field(input, "scenario", "")?, "scenario")?;
+    let inp: SimulateIn = from_json(input, "")?;
+    let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
+    let c = input::controller(
+        input::required(&inp.controller, "controller")?,
+        "controller",
+    )?;
+    let sc = input::scenario(input::required(&inp.scenario, "scenario")?, "scenario")?;
     let r = simulate_loop(&plant, &c, &sc)?;
     Ok(sim_json(&r))
 }
 
 /// `analyze({plant, controller})` of API.md.
 pub fn analyze(input: &Value) -> Result<Value> {
-    let plant = parse_plant(field(input, "plant", "")?, "plant")?;
-    let c = parse_controller(field(input, "controller", "")?, "controller")?;
+    let inp: AnalyzeIn = from_json(input, "")?;
+    let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
+    let c = input::controller(
+        input::required(&inp.controller, "controller")?,
+        "controller",
+    )?;
     let a = analyze_loop(&plant, &c)?;
     Ok(analysis_json(&a))
 }

@@ -234,3 +234,21 @@ test('tune(): the boiler methods give finite controllers with default parameters
     assertTf(r.controller.cy, `${m.id} controller.cy`);
   }
 });
+
+test('unknown or misspelt fields are errors naming the field, at the JS boundary too', () => {
+  // issue 11: `disturbanse` used to run with no load step and no error
+  const { disturbance, ...rest } = SCENARIO;
+  const controller = { cr: IPD.cr, cy: IPD.cy };
+  assert.throws(
+    () => pidlab.simulate({ plant: BOILER, controller, scenario: { ...rest, disturbanse: disturbance } }),
+    (e) => e instanceof Error && /^scenario\.disturbanse: unknown field \(did you mean 'disturbance'\?\); allowed: /.test(e.message),
+  );
+  assert.throws(
+    () => pidlab.tune({ method: 'praveen_kumar', plant: BOILER, params: { lamda: 1.9 } }),
+    (e) => /^params\.lamda: unknown field \(did you mean 'lambda'\?\)/.test(e.message),
+  );
+  assert.throws(() => pidlab.analyze({ plant: BOILER, controller, extra: 1 }), (e) => /^extra: unknown field/.test(e.message));
+  // what tune returns (controller with named gains, plant with num/den/delay) goes back in
+  const t = pidlab.tune({ method: 'praveen_kumar', plant: BOILER, params: { lambda: 1.9 } });
+  assert.equal(typeof pidlab.analyze({ plant: t.plant, controller: t.controller }).stable, 'boolean');
+});

@@ -16,17 +16,11 @@ use crate::analysis::SimResult;
 pub fn isens(res: &SimResult, w: &Metrics, k: f64, tau: f64) -> (f64, Option<f64>) {
     let u_inf = w.u_final;
     let (mut cod, mut dco) = (0.0, 0.0);
-    let scan = quadrature(
-        &res.trajectory,
-        w.t_start,
-        w.t_end,
-        u_scale(&res.u),
-        |q| {
-            let e2 = q.e * q.e;
-            cod += q.w * (e2 + k * k * (q.u - u_inf).powi(2));
-            dco += q.w * (e2 + k * k * tau * tau * q.du * q.du);
-        },
-    );
+    let scan = quadrature(&res.trajectory, w.t_start, w.t_end, u_scale(&res.u), |q| {
+        let e2 = q.e * q.e;
+        cod += q.w * (e2 + k * k * (q.u - u_inf).powi(2));
+        dco += q.w * (e2 + k * k * tau * tau * q.du * q.du);
+    });
     (cod, (!scan.u_jumps).then_some(dco))
 }
 
