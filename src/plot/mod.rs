@@ -1379,6 +1379,239 @@ mod tests {
         assert_eq!(on, 50);
     }
 
+    /// A drawing backend that writes every call it receives, with its coordinates and style,
+    /// as one line of text: two renderings are the same picture when their tapes are equal.
+    struct Tape {
+        w: u32,
+        h: u32,
+        log: String,
+    }
+
+    thread_local! {
+        static TAPE: std::cell::RefCell<String> = const { std::cell::RefCell::new(String::new()) };
+    }
+
+    fn colour(c: BackendColor) -> String {
+        format!("rgba({},{},{},{:?})", c.rgb.0, c.rgb.1, c.rgb.2, c.alpha)
+    }
+
+    fn stroke<S: BackendStyle>(s: &S) -> String {
+        format!("{} w{}", colour(s.color()), s.stroke_width())
+    }
+
+    impl Tape {
+        fn put(&mut self, line: String) {
+            self.log.push_str(&line);
+            self.log.push('\n');
+        }
+    }
+
+    impl DrawingBackend for Tape {
+        type ErrorType = NoErr;
+        fn get_size(&self) -> (u32, u32) {
+            (self.w, self.h)
+        }
+        fn ensure_prepared(&mut self) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            Ok(())
+        }
+        fn present(&mut self) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            self.put("present".to_string());
+            let log = std::mem::take(&mut self.log);
+            TAPE.with(|t| *t.borrow_mut() = log);
+            Ok(())
+        }
+        fn draw_pixel(
+            &mut self,
+            p: BackendCoord,
+            c: BackendColor,
+        ) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            self.put(format!("pixel {p:?} {}", colour(c)));
+            Ok(())
+        }
+        fn draw_line<S: BackendStyle>(
+            &mut self,
+            from: BackendCoord,
+            to: BackendCoord,
+            style: &S,
+        ) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            self.put(format!("line {from:?} {to:?} {}", stroke(style)));
+            Ok(())
+        }
+        fn draw_rect<S: BackendStyle>(
+            &mut self,
+            a: BackendCoord,
+            b: BackendCoord,
+            style: &S,
+            fill: bool,
+        ) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            self.put(format!("rect {a:?} {b:?} {} fill={fill}", stroke(style)));
+            Ok(())
+        }
+        fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+            &mut self,
+            path: I,
+            style: &S,
+        ) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            let pts: Vec<BackendCoord> = path.into_iter().collect();
+            self.put(format!("path {} {pts:?}", stroke(style)));
+            Ok(())
+        }
+        fn draw_circle<S: BackendStyle>(
+            &mut self,
+            c: BackendCoord,
+            r: u32,
+            style: &S,
+            fill: bool,
+        ) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            self.put(format!("circle {c:?} r{r} {} fill={fill}", stroke(style)));
+            Ok(())
+        }
+        fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+            &mut self,
+            vert: I,
+            style: &S,
+        ) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            let pts: Vec<BackendCoord> = vert.into_iter().collect();
+            self.put(format!("polygon {} {pts:?}", stroke(style)));
+            Ok(())
+        }
+        fn draw_text<TStyle: BackendTextStyle>(
+            &mut self,
+            text: &str,
+            style: &TStyle,
+            pos: BackendCoord,
+        ) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            use plotters_backend::text_anchor::{HPos, VPos};
+            use plotters_backend::FontTransform;
+            let a = style.anchor();
+            let h = match a.h_pos {
+                HPos::Left => "left",
+                HPos::Center => "center",
+                HPos::Right => "right",
+            };
+            let v = match a.v_pos {
+                VPos::Top => "top",
+                VPos::Center => "center",
+                VPos::Bottom => "bottom",
+            };
+            let t = match style.transform() {
+                FontTransform::None => "none",
+                FontTransform::Rotate90 => "rot90",
+                FontTransform::Rotate180 => "rot180",
+                FontTransform::Rotate270 => "rot270",
+            };
+            self.put(format!(
+                "text {text:?} at {pos:?} {} {:?} {} {} anchor={h}/{v} transform={t}",
+                style.family().as_str(),
+                style.size(),
+                style.style().as_str(),
+                colour(style.color()),
+            ));
+            Ok(())
+        }
+        fn estimate_text_size<TStyle: BackendTextStyle>(
+            &self,
+            text: &str,
+            _style: &TStyle,
+        ) -> std::result::Result<(u32, u32), DrawingErrorKind<NoErr>> {
+            Ok((text.len() as u32 * 7, 12))
+        }
+        fn blit_bitmap(
+            &mut self,
+            pos: BackendCoord,
+            size: (u32, u32),
+            src: &[u8],
+        ) -> std::result::Result<(), DrawingErrorKind<NoErr>> {
+            self.put(format!("blit {pos:?} {size:?} {} bytes", src.len()));
+            Ok(())
+        }
+    }
+
+    /// Renders `v` on a [`Tape`] and returns the tape.
+    fn tape(v: &Value, w: u32, h: u32) -> String {
+        let s = Spec::from_json(v).expect("valid spec");
+        let area = Tape {
+            w,
+            h,
+            log: String::new(),
+        }
+        .into_drawing_area();
+        render(&s, &area).expect("renders");
+        TAPE.with(|t| t.take())
+    }
+
+    /// The whole drawing of two representative plots, call by call, against a tape recorded
+    /// from the code before the plot module was split into files (`render_golden.txt`). The
+    /// plots have no log axis (the module has none). Time plot: two labelled series (one
+    /// dense enough to be decimated, solid; one dashed with a gap and a point outside the
+    /// fixed y range), a faint dotted unlabelled series, two vertical markers (one outside the
+    /// range), a point marker, title, captions and legend. Nyquist plot at dpr 2: the loop with
+    /// an integrator's far branch, the Ms circle in the legend, the critical point, equal aspect.
+    #[wasm_bindgen_test(unsupported = test)]
+    fn full_drawing_matches_the_golden_tape() {
+        let t: Vec<f64> = (0..600).map(|i| f64::from(i) * 0.05).collect();
+        let y: Vec<f64> = t
+            .iter()
+            .map(|v| 1.0 - (-v / 4.0).exp() * (2.0 * v).cos())
+            .collect();
+        let u: Vec<Value> = t
+            .iter()
+            .step_by(20)
+            .enumerate()
+            .map(|(i, v)| {
+                if i == 7 {
+                    Value::Null
+                } else if i == 20 {
+                    json!(3.5)
+                } else {
+                    json!(0.5 + 0.3 * (v / 3.0).sin())
+                }
+            })
+            .collect();
+        let tu: Vec<f64> = t.iter().step_by(20).copied().collect();
+        let time = json!({"canvas": "c", "title": "Set-point response", "xlabel": "t",
+            "ylabel": "y", "yrange": [-0.2, 1.8],
+            "series": [
+                {"label": "y (PID)", "x": t, "y": y},
+                {"label": "u / 10", "x": tu, "y": u, "dash": "dash", "color": "#009E73"},
+                {"x": [0, 10, 20, 30], "y": [0, 1, 1, 1], "dash": "dot", "faint": true}],
+            "vlines": [{"x": 12.5, "label": "load step"}, {"x": 99}],
+            "points": [{"x": 20, "y": 1, "label": "settled", "color": "#CC79A7"}]});
+        let w: Vec<f64> = (1..300).map(|i| 0.01 * 1.03f64.powi(i)).collect();
+        // L(jw) = e^{-jw} / (jw (1 + jw)) * 0.6
+        let (re, im): (Vec<f64>, Vec<f64>) = w
+            .iter()
+            .map(|&w| {
+                let (c, s) = (w.cos(), -w.sin());
+                // 1 / (jw (1 + jw)) = 1 / (-w^2 + jw)
+                let (a, b) = (-w * w, w);
+                let d = a * a + b * b;
+                let (gr, gi) = (0.6 * a / d, -0.6 * b / d);
+                (gr * c - gi * s, gr * s + gi * c)
+            })
+            .unzip();
+        let nyquist = json!({"canvas": "c", "kind": "nyquist", "dpr": 2, "title": "Nyquist",
+            "xlabel": "Re L", "ylabel": "Im L",
+            "series": [{"label": "L(jω)", "x": re, "y": im}],
+            "circle": {"cx": -1, "cy": 0, "r": 0.625, "label": "Ms = 1.6"},
+            "points": [{"x": -1, "y": 0, "label": "−1"}]});
+        let got = format!(
+            "# time 420x260\n{}# nyquist 700x500\n{}",
+            tape(&time, 420, 260),
+            tape(&nyquist, 700, 500)
+        );
+        // To look at a differing tape: PIDLAB_PLOT_TAPE=/tmp/tape.txt cargo test ... (native).
+        if let Ok(path) = std::env::var("PIDLAB_PLOT_TAPE") {
+            let _ = std::fs::write(path, &got);
+        }
+        let want = include_str!("render_golden.txt");
+        for (i, (g, w)) in got.lines().zip(want.lines()).enumerate() {
+            assert_eq!(g, w, "tape line {}", i + 1);
+        }
+        assert_eq!(got.lines().count(), want.lines().count(), "tape length");
+        assert_eq!(got, want);
+    }
+
     #[wasm_bindgen_test(unsupported = test)]
     fn draw_natively_says_it_needs_a_canvas() {
         let e = draw(&json!({"canvas": "c"})).expect_err("no canvas natively");
