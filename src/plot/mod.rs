@@ -30,13 +30,17 @@
 
 mod axes;
 mod color;
+mod layout;
 mod legend;
 mod lines;
+mod marks;
 mod parse;
 #[cfg(test)]
 mod recorders;
 mod render;
+mod series;
 mod spec;
+mod style;
 
 pub use color::{Rgba, OKABE_ITO};
 pub use render::render;

@@ -1,24 +1,18 @@
-//! Drawing a validated spec on any plotters drawing area.
+//! Drawing a validated spec on any plotters drawing area: the order of the parts.
 
-use super::axes::{decimals, fmt_tick, pad_range};
-use super::color::Rgba;
-use super::legend::{legend_entries, legend_layout};
-use super::lines::{clip, dashes, decimate, polylines};
+use super::axes::{data_ranges, draw_mesh, equal_aspect};
+use super::layout::Layout;
+use super::marks::{draw_points, draw_title, draw_vlines, draw_zero_axes};
 use super::parse::err;
-use super::spec::{Dash, Kind, Series, Spec};
-use crate::error::{Error, Result};
+use super::series::{draw_circle, draw_series};
+use super::spec::{Kind, Spec};
+use super::style::{derr, Style};
+use crate::error::Result;
 use plotters::coord::Shift;
 use plotters::prelude::*;
-use plotters::style::text_anchor::{HPos, Pos, VPos};
-
-fn derr<E: std::error::Error + Send + Sync>(e: DrawingAreaErrorKind<E>) -> Error {
-    err("spec.canvas", format!("drawing failed: {e}"))
-}
 
 /// Renders a validated spec on any plotters drawing area.
 pub fn render<DB: DrawingBackend>(s: &Spec, root: &DrawingArea<DB, Shift>) -> Result<()> {
-    let k = s.dpr;
-    let px = |v: f64| (v * k).round() as i32;
     let (w, h) = root.dim_in_pixel();
     if w < 40 || h < 40 {
         return Err(err(
@@ -27,215 +21,23 @@ pub fn render<DB: DrawingBackend>(s: &Spec, root: &DrawingArea<DB, Shift>) -> Re
         ));
     }
     root.fill(&WHITE).map_err(derr)?;
-    let font = (13.0 * k).max(6.0);
-    let small = (11.0 * k).max(5.0);
-    let fg = RGBColor(0x22, 0x22, 0x22);
-
-    // Data bounds.
-    let mut xb = (f64::INFINITY, f64::NEG_INFINITY);
-    let mut yb = (f64::INFINITY, f64::NEG_INFINITY);
-    let widen = |b: &mut (f64, f64), v: f64| {
-        if v.is_finite() {
-            b.0 = b.0.min(v);
-            b.1 = b.1.max(v);
-        }
-    };
-    let (xr, yr) = match s.kind {
-        Kind::Time => {
-            for sr in &s.series {
-                for (x, y) in sr.x.iter().zip(sr.y.iter()) {
-                    if let (Some(x), Some(y)) = (x, y) {
-                        widen(&mut xb, *x);
-                        if s.xrange.is_none_or(|(lo, hi)| *x >= lo && *x <= hi) {
-                            widen(&mut yb, *y);
-                        }
-                    }
-                }
-            }
-            let xr = s.xrange.unwrap_or(if xb.0 <= xb.1 {
-                (xb.0, xb.1)
-            } else {
-                (0.0, 1.0)
-            });
-            let xr = if xr.1 > xr.0 {
-                xr
-            } else {
-                pad_range(xr.0, xr.1, 0.0)
-            };
-            let yr = s.yrange.unwrap_or_else(|| pad_range(yb.0, yb.1, 0.06));
-            (xr, yr)
-        }
-        Kind::Nyquist => {
-            // The view: the critical region. Points with |L| beyond `reach` are not used
-            // for the automatic bounds (an integrator's branch goes to infinity).
-            let mut reach: f64 = 3.0;
-            if let Some(c) = &s.circle {
-                reach = reach.max(1.5 * (c.cx.hypot(c.cy) + c.r));
-            }
-            reach = reach.min(50.0);
-            widen(&mut xb, -1.0);
-            widen(&mut yb, 0.0);
-            for sr in &s.series {
-                for (x, y) in sr.x.iter().zip(sr.y.iter()) {
-                    if let (Some(x), Some(y)) = (x, y) {
-                        if x.hypot(*y) <= reach {
-                            widen(&mut xb, *x);
-                            widen(&mut yb, *y);
-                        }
-                    }
-                }
-            }
-            if let Some(c) = &s.circle {
-                widen(&mut xb, c.cx - c.r);
-                widen(&mut xb, c.cx + c.r);
-                widen(&mut yb, c.cy - c.r);
-                widen(&mut yb, c.cy + c.r);
-            }
-            for p in &s.points {
-                widen(&mut xb, p.x);
-                widen(&mut yb, p.y);
-            }
-            let xr = s.xrange.unwrap_or_else(|| pad_range(xb.0, xb.1, 0.08));
-            let yr = s.yrange.unwrap_or_else(|| pad_range(yb.0, yb.1, 0.08));
-            (xr, yr)
-        }
-    };
-
-    // Layout.
-    let left = px(58.0);
-    let right = px(12.0);
-    let legend = if s.legend {
-        legend_entries(s)
-    } else {
-        Vec::new()
-    };
-    let line_h = (small * 1.4).round() as i32;
-    let sample = px(22.0);
-    let (legend_pos, rows) =
-        legend_layout(&legend, (w as i32 - left - right).max(10), sample, small, k);
-    let title_h = if s.title.is_empty() {
-        0
-    } else {
-        (font * 1.5).round() as i32
-    };
-    let legend_top = px(6.0) + title_h;
-    let top = legend_top + line_h * rows + px(6.0);
-    let bottom = px(44.0);
-    let pw = (w as i32 - left - right).max(10);
-    let ph = (h as i32 - top - bottom).max(10);
-    // Equal aspect for Nyquist: widen the shorter range.
-    let (xr, yr) = if s.kind == Kind::Nyquist && s.xrange.is_none() && s.yrange.is_none() {
-        let sx = (xr.1 - xr.0) / f64::from(pw);
-        let sy = (yr.1 - yr.0) / f64::from(ph);
-        if sx > sy {
-            let c = 0.5 * (yr.0 + yr.1);
-            let half = 0.5 * sx * f64::from(ph);
-            (xr, (c - half, c + half))
-        } else {
-            let c = 0.5 * (xr.0 + xr.1);
-            let half = 0.5 * sy * f64::from(pw);
-            ((c - half, c + half), yr)
-        }
-    } else {
-        (xr, yr)
-    };
-
-    if !s.title.is_empty() {
-        let st = ("sans-serif", font)
-            .into_font()
-            .style(FontStyle::Bold)
-            .color(&fg)
-            .pos(Pos::new(HPos::Left, VPos::Top));
-        root.draw_text(&s.title, &st, (left, px(6.0)))
-            .map_err(derr)?;
-    }
-
-    let mut chart = ChartBuilder::on(root)
-        .margin_top(top.max(0) as u32)
-        .margin_right(right.max(0) as u32)
-        .x_label_area_size(bottom.max(0) as u32)
-        .y_label_area_size(left.max(0) as u32)
-        .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
-        .map_err(derr)?;
-    let nx = (f64::from(pw) / (70.0 * k)).clamp(2.0, 10.0);
-    let ny = (f64::from(ph) / (40.0 * k)).clamp(2.0, 10.0);
-    let dx = decimals(xr.0, xr.1, nx);
-    let dy = decimals(yr.0, yr.1, ny);
-    let xf = move |v: &f64| fmt_tick(*v, dx);
-    let yf = move |v: &f64| fmt_tick(*v, dy);
-    chart
-        .configure_mesh()
-        .x_labels(nx as usize)
-        .y_labels(ny as usize)
-        .x_label_formatter(&xf)
-        .y_label_formatter(&yf)
-        .label_style(("sans-serif", small).into_font().color(&fg))
-        .axis_desc_style(("sans-serif", font).into_font().color(&fg))
-        .x_desc(s.xlabel.as_str())
-        .y_desc(s.ylabel.as_str())
-        .bold_line_style(RGBAColor(0, 0, 0, 0.12).stroke_width(px(1.0).max(1) as u32))
-        .light_line_style(RGBAColor(0, 0, 0, 0.0))
-        .axis_style(fg.stroke_width(px(1.0).max(1) as u32))
-        .set_tick_mark_size(LabelAreaPosition::Left, px(4.0))
-        .set_tick_mark_size(LabelAreaPosition::Bottom, px(4.0))
-        .draw()
-        .map_err(derr)?;
+    let st = Style::new(s.dpr);
+    let k = st.k;
+    let lay = Layout::new(s, &st, w, h);
+    let ranges = equal_aspect(s, data_ranges(s), lay.pw, lay.ph);
+    let (xr, yr) = ranges;
+    draw_title(root, s, &st, lay.left)?;
+    let chart = draw_mesh(root, s, &st, &lay, ranges)?;
 
     let bx = (xr.0, xr.1, yr.0, yr.1);
     let to_px = |p: (f64, f64)| chart.backend_coord(&p);
-
-    // Reference lines: zero axes for Nyquist.
     if s.kind == Kind::Nyquist {
-        let ax = RGBAColor(0, 0, 0, 0.35).stroke_width(px(1.0).max(1) as u32);
-        for seg in [((xr.0, 0.0), (xr.1, 0.0)), ((0.0, yr.0), (0.0, yr.1))] {
-            if let Some((a, b)) = clip(seg.0, seg.1, bx) {
-                root.draw(&PathElement::new(vec![to_px(a), to_px(b)], ax))
-                    .map_err(derr)?;
-            }
-        }
+        draw_zero_axes(root, &st, ranges, &to_px)?;
     }
-
-    // Vertical markers.
-    for v in &s.vlines {
-        if v.x >= xr.0 && v.x <= xr.1 {
-            let a = to_px((v.x, yr.0));
-            let b = to_px((v.x, yr.1));
-            let st = v.color.style().stroke_width(px(1.0).max(1) as u32);
-            for d in dashes(&[a, b], 4.0 * k, 4.0 * k) {
-                root.draw(&PathElement::new(d, st)).map_err(derr)?;
-            }
-            if !v.label.is_empty() {
-                let ts = ("sans-serif", small)
-                    .into_font()
-                    .color(&v.color.style())
-                    .pos(Pos::new(HPos::Left, VPos::Top));
-                root.draw_text(&v.label, &ts, (b.0 + px(3.0), b.1 + px(2.0)))
-                    .map_err(derr)?;
-            }
-        }
-    }
-
-    // Circle (as a polygon through the clipper).
+    draw_vlines(root, s, &st, ranges, &to_px)?;
     if let Some(c) = &s.circle {
-        let n = 180;
-        let xs: Vec<Option<f64>> = (0..=n)
-            .map(|i| Some(c.cx + c.r * (f64::from(i) * std::f64::consts::TAU / f64::from(n)).cos()))
-            .collect();
-        let ys: Vec<Option<f64>> = (0..=n)
-            .map(|i| Some(c.cy + c.r * (f64::from(i) * std::f64::consts::TAU / f64::from(n)).sin()))
-            .collect();
-        let cs = Series {
-            label: c.label.clone(),
-            x: xs,
-            y: ys,
-            color: c.color,
-            dash: Dash::Dash,
-            faint: false,
-            width: 1.5,
-        };
-        draw_series(root, &cs, bx, &to_px, k, false)?;
+        draw_circle(root, c, bx, &to_px, k)?;
     }
-
     // Faint series first, so the emphasised ones lie on top.
     for sr in s.series.iter().filter(|x| x.faint) {
         draw_series(root, sr, bx, &to_px, k, s.kind == Kind::Time)?;
@@ -243,102 +45,15 @@ pub fn render<DB: DrawingBackend>(s: &Spec, root: &DrawingArea<DB, Shift>) -> Re
     for sr in s.series.iter().filter(|x| !x.faint) {
         draw_series(root, sr, bx, &to_px, k, s.kind == Kind::Time)?;
     }
-
-    // Points.
-    for p in &s.points {
-        if p.x >= xr.0 && p.x <= xr.1 && p.y >= yr.0 && p.y <= yr.1 {
-            let c = to_px((p.x, p.y));
-            let st = p.color.style().stroke_width(px(2.0).max(1) as u32);
-            let r = px(5.0);
-            root.draw(&PathElement::new(vec![(c.0 - r, c.1), (c.0 + r, c.1)], st))
-                .map_err(derr)?;
-            root.draw(&PathElement::new(vec![(c.0, c.1 - r), (c.0, c.1 + r)], st))
-                .map_err(derr)?;
-            if !p.label.is_empty() {
-                let ts = ("sans-serif", small)
-                    .into_font()
-                    .color(&p.color.style())
-                    .pos(Pos::new(HPos::Left, VPos::Bottom));
-                root.draw_text(&p.label, &ts, (c.0 + r, c.1 - r))
-                    .map_err(derr)?;
-            }
-        }
-    }
-
-    // Legend: a band between the title and the plotting box, entries flowing left to right
-    // (never covers the curves). Text width is estimated from the number of characters (no
-    // text measurement, see the module documentation).
-    for (i, (label, color, dash, width)) in legend.iter().enumerate() {
-        let Some(&(lx, row)) = legend_pos.get(i) else {
-            break;
-        };
-        let cy = legend_top + line_h * row + line_h / 2;
-        let a = (left + lx, cy);
-        let b = (left + lx + sample, cy);
-        let st = color.style().stroke_width(px(*width).max(1) as u32);
-        let segs = match dash {
-            Dash::Solid => vec![vec![a, b]],
-            Dash::Dash => dashes(&[a, b], 6.0 * k, 4.0 * k),
-            Dash::Dot => dashes(&[a, b], 2.0 * k, 3.0 * k),
-        };
-        for seg in segs {
-            root.draw(&PathElement::new(seg, st)).map_err(derr)?;
-        }
-        let ts = ("sans-serif", small)
-            .into_font()
-            .color(&fg)
-            .pos(Pos::new(HPos::Left, VPos::Center));
-        root.draw_text(label, &ts, (b.0 + px(4.0), cy))
-            .map_err(derr)?;
-    }
+    draw_points(root, s, &st, ranges, &to_px)?;
+    lay.legend.draw(root, &st, lay.left, lay.legend_top)?;
     root.present().map_err(derr)?;
-    Ok(())
-}
-
-fn draw_series<DB: DrawingBackend, F: Fn((f64, f64)) -> (i32, i32)>(
-    root: &DrawingArea<DB, Shift>,
-    sr: &Series,
-    bx: (f64, f64, f64, f64),
-    to_px: &F,
-    k: f64,
-    dense: bool,
-) -> Result<()> {
-    let color = if sr.faint {
-        Rgba {
-            alpha: sr.color.alpha * 0.45,
-            ..sr.color
-        }
-    } else {
-        sr.color
-    };
-    let st = color
-        .style()
-        .stroke_width((sr.width * k).round().max(1.0) as u32);
-    for line in polylines(sr, bx) {
-        let mut pts: Vec<(i32, i32)> = line.into_iter().map(to_px).collect();
-        pts.dedup();
-        if dense {
-            pts = decimate(&pts);
-        }
-        if pts.len() < 2 {
-            continue;
-        }
-        let segs = match sr.dash {
-            Dash::Solid => vec![pts],
-            Dash::Dash => dashes(&pts, 7.0 * k, 5.0 * k),
-            Dash::Dot => dashes(&pts, 2.0 * k, 3.5 * k),
-        };
-        for seg in segs {
-            if seg.len() > 1 {
-                root.draw(&PathElement::new(seg, st)).map_err(derr)?;
-            }
-        }
-    }
     Ok(())
 }
 
 #[cfg(test)]
 mod tests {
+    use super::super::lines::clip;
     use super::super::recorders::{rec, Recorder, Tape, LOG, TAPE};
     use super::*;
     use serde_json::{json, Value};
