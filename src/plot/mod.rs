@@ -27,6 +27,12 @@
 //! Text is placed with canvas anchors only (no text measurement: plotters' web font backend
 //! measures text by inserting a span into the document, which forces a layout per label and
 //! would cost milliseconds per frame).
+//!
+//! Files: `spec` (the types and `Spec::from_json`), `parse` (field readers naming the path),
+//! `color` (`#hex` colours, the palette); `render` (the order of the parts), `style` (sizes
+//! scaled by the pixel ratio), `layout` (title, legend band, plotting box), `axes` (ranges,
+//! ticks, mesh), `series` (lines and the circle), `marks` (title, zero axes, markers, points),
+//! `legend`, `lines` (clipping, decimation, dashes in data and pixel space).
 
 mod axes;
 mod color;
