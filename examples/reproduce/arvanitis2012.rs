@@ -1,11 +1,11 @@
 //! Reproduction section: Arvanitis, Bekiaris-Liberis, Pasgianos & Pantelous (2012), I-PD tuning
 //! for IPDT-IR processes — Section 6 (boiler steam drum), Section 3 limits, Tables 2-8 against
-//! the exact computation, the responses of Figs. 8-12 with their metrics, and timings.
+//! the exact computation, the responses of Figs. 8-12 with their metrics (timings go to stderr).
 
 use pidlab::analysis::freq::analyze;
 use pidlab::model::controller::{Controller, Pid};
 use pidlab::rules::arvanitis2012::*;
-use pidlab::rules::{self, Params};
+use pidlab::rules::{self, Design, Params};
 use pidlab::sim::{simulate, Scenario};
 use std::fmt::Write;
 use std::time::Instant;
@@ -71,15 +71,14 @@ pub fn report() -> String {
     for (what, id, prm, pr, note) in rows {
         match rules::tune(id, &plant, &prm) {
             Ok(t) => {
-                let g = |n: &str| {
-                    pidlab::api::tuning_json(&t)["named"][n]
-                        .as_f64()
-                        .unwrap_or(f64::NAN)
-                };
+                let g = |n: &str| t.named(n).unwrap_or(f64::NAN);
+                let printed = Details::of(&t).map(|d| d.printed_convention());
                 let pc = |n: &str| {
-                    pidlab::api::tuning_json(&t)["details"]["printed_convention"][n]
-                        .as_f64()
-                        .unwrap_or(f64::NAN)
+                    printed.map_or(f64::NAN, |c| match n {
+                        "kp" => c.kp,
+                        "ki" => c.ki,
+                        _ => c.kd,
+                    })
                 };
                 let _ = writeln!(
                     o,
@@ -189,27 +188,12 @@ pub fn report() -> String {
     o.push_str("| controller | servo overshoot | initial jump | servo IAE | servo settling | load peak error | load IAE | load settling | Ms |\n|---|---|---|---|---|---|---|---|---|\n");
     let sc = Scenario::steps(60.0, 0.01, 0.0, 1.0, 30.0, 1.0);
     let mut ctrls: Vec<(String, String, Controller)> = vec![];
-    for pr in legacy_presets() {
-        let c = if pr.tune.is_null() {
-            let g = |k: &str, q: &str| -> Vec<f64> {
-                pr.controller[k][q]
-                    .as_array()
-                    .map(|a| a.iter().filter_map(|x| x.as_f64()).collect())
-                    .unwrap_or_default()
-            };
-            Controller::from_desc(
-                &g("cr", "num"),
-                &g("cr", "den"),
-                &g("cy", "num"),
-                &g("cy", "den"),
-            )
-            .ok()
-        } else {
-            let m = pr.tune["method"].as_str().unwrap_or("");
-            pidlab::api::params_from_json(&pr.tune["params"])
+    for pr in boiler_presets() {
+        let c = match &pr.design {
+            Design::Controller(c) => Some(c.clone()),
+            Design::Rule { method, params } => rules::tune(method, &plant, params)
                 .ok()
-                .and_then(|prm| rules::tune(m, &plant, &prm).ok())
-                .map(|t| t.controller)
+                .map(|t| t.controller),
         };
         if let Some(c) = c {
             ctrls.push((
@@ -356,8 +340,7 @@ pub fn report() -> String {
         }
     }
 
-    // ---- timing
-    o.push_str("\n### Timings (this machine, release build)\n\n");
+    // ---- timing: to stderr, not into the committed report (issue 11, item 6)
     let time = |f: &dyn Fn()| {
         let n = 20;
         let t = Instant::now();
@@ -378,6 +361,6 @@ pub fn report() -> String {
     let t = Instant::now();
     let _ = algorithm3(&p, 0.6, "isenscod", None);
     let t3 = t.elapsed().as_secs_f64() * 1e3;
-    let _ = writeln!(o, "Algorithm I {t1:.3} ms, Algorithm II {t2:.3} ms, Method II {tm:.4} ms, Algorithm III {t3:.0} ms (boiler).\n");
+    eprintln!("Arvanitis 2012 timings (this machine, release build): Algorithm I {t1:.3} ms, Algorithm II {t2:.3} ms, Method II {tm:.4} ms, Algorithm III {t3:.0} ms (boiler).");
     o
 }

@@ -42,15 +42,14 @@
 //!   units with K = K̄, τ_P = τ̄_P (the simulator's `isens_k`, `isens_tau`); Table 7's fits,
 //!   built on the normalized process, reproduce it within their printed errors.
 
-use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
-use crate::api::controller_json;
+use super::{Design, MethodInfo, ParamInfo, Params, Preset, Tuning};
 use crate::error::{Error, Result};
 use crate::model::controller::{lead_lag, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use crate::numerics::{brent, golden_min, positive_real_roots};
 use crate::sim::{simulate, Scenario};
-use serde_json::{json, Map, Value};
+use serde::Serialize;
 use std::f64::consts::PI;
 
 /// Citation of the paper.
@@ -1858,91 +1857,312 @@ pub fn table8(criterion: &str, tz: f64, d: f64) -> (f64, Vec<String>) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The rule interface (rules/mod.rs)
+// The rule interface (rules/mod.rs): typed details, one Rule per method
 // ---------------------------------------------------------------------------------------------
 
 const FAMILIES: [&str; 1] = ["ipdt_ir"];
 
-/// Methods of this paper (ids and parameters as in API.md).
-pub fn methods() -> Vec<MethodInfo> {
-    let fam: Vec<String> = FAMILIES.iter().map(|s| s.to_string()).collect();
-    let zeta = ParamInfo::number("zeta", "ζ_des (damping of Eq. 17)", Some(0.6), 0.3, 2.0)
-        .help("desired damping ratio of the second-order approximation (17)");
-    let m = |id: &str, title: &str, params: Vec<ParamInfo>| MethodInfo {
-        id: id.into(),
-        title: title.into(),
-        citation: CITATION.into(),
-        families: fam.clone(),
-        structure: "I-PD".into(),
-        params,
-    };
-    vec![
-        m(
-            "arvanitis_alg1",
-            "Arvanitis 2012, Method I, Algorithm I (max phase margin, τ_D = min τ_D,maxGM,I-P)",
-            vec![
-                zeta.clone(),
-                ParamInfo::number("td_factor", "τ_D factor (1; 1.25 for the variant)", Some(1.0), 0.5, 2.0)
-                    .help("τ_D = factor × min τ_D,maxGM,I-P(τ_Z, d)"),
-                ParamInfo::choice("td_source", "min τ_D,maxGM,I-P from", "exact", &["exact", "table"])
-                    .help("exact limit (PD vs P ultimate gains) or Table 3's fit"),
-            ],
-        ),
-        m(
-            "arvanitis_alg2",
-            "Arvanitis 2012, Method I, Algorithm II (τ_D = 2 τ_D,GMmax(τ_I))",
-            vec![zeta.clone()],
-        ),
-        m(
-            "arvanitis_alg3",
-            "Arvanitis 2012, Method I, Algorithm III (τ_D minimizing ISENSCOD/ISENSDCO of a load step)",
-            vec![
-                zeta,
-                ParamInfo::choice("criterion", "criterion", "isenscod", &["isenscod", "isensdco"])
-                    .help("Eq. (13) ISENSCOD or Eq. (14) ISENSDCO of a unit load step"),
-            ],
-        ),
-        m(
-            "arvanitis_m2_xi",
-            "Arvanitis 2012, Method II (direct synthesis) by damping ratio ξ",
-            vec![ParamInfo::number("xi", "ξ_des (damping of Eq. 28)", Some(0.707), 0.3, 3.0)],
-        ),
-        m(
-            "arvanitis_m2_theta",
-            "Arvanitis 2012, Method II (direct synthesis), θ = K_P/K_I set directly",
-            vec![ParamInfo::number("theta_design", "θ (normalized, > θ_min)", None, 0.0, 1000.0)
-                .help("θ = K_P/K_I in normalized units; must exceed θ_min = (d + τ_Z + max(1,d) + 1)/2")],
-        ),
-        m(
-            "arvanitis_m2_beta",
-            "Arvanitis 2012, Method II by β (Table 8, θ = 2π/(w_u β))",
-            vec![
-                ParamInfo::choice("criterion", "criterion", "isenscod", &["isenscod", "isensdco"])
-                    .help("β of Table 8 minimizing ISENSCOD-L (13) or ISENSDCO-L (14)"),
-                ParamInfo::choice("wu", "w_u from", "eq34", &["eq34", "exact"])
-                    .help("Eq. (34) approximation (as the paper) or the exact root of Eq. (33)"),
-                ParamInfo::choice("beta_source", "β from", "table", &["table", "optimize"])
-                    .help("Table 8's fit, or the β minimizing the criterion by simulation (what Table 8 approximates; ~0.1-0.5 s)"),
-            ],
-        ),
-    ]
+/// Method I details as printed beside the series PID of Eq. (4) (time units).
+const SERIES_NOTE: &str = "series PID K_C(1 + 1/(τ_I s))(1 + τ_D s) with pre-filter 1/((τ_I s+1)(τ_D s+1)), Eq. (4), time units";
+/// Why the printed Method I settings differ from ours by τ̄_P (Table 1, ERRATA).
+const PRINTED_NOTE_I: &str = "the paper's Table 1 prints K_C = K̄·K̄_C; the consistent row is K_C = K̄·τ̄_P·K̄_C, so the printed Method I settings are τ̄_P times these gains";
+/// Method II settings need no Table 1 factor.
+const PRINTED_NOTE_II: &str =
+    "Method II settings of the paper are physically consistent (no Table 1 factor)";
+
+/// The details of an Arvanitis et al. (2012) tuning (API.md `details` of the six methods).
+#[derive(Debug, Clone, Serialize)]
+pub struct Details {
+    /// What the method computed (Method I or Method II).
+    #[serde(flatten)]
+    pub setting: Setting,
+    /// Warnings: outside the paper's range, a table used outside its box or missing its M.N.E.
+    pub warnings: Vec<String>,
 }
 
-fn num(x: f64) -> Value {
-    if x.is_finite() {
-        json!(x)
-    } else {
-        Value::Null
+impl Details {
+    /// The details of `t` when it is a tuning of this paper.
+    pub fn of(t: &super::Tuning) -> Option<&Details> {
+        match &t.details {
+            super::Details::Arvanitis2012(d) => Some(d),
+            #[allow(unreachable_patterns)]
+            _ => None,
+        }
     }
+
+    /// The gains in the paper's printed convention (both methods).
+    pub fn printed_convention(&self) -> &PrintedConvention {
+        match &self.setting {
+            Setting::MethodI(m) => &m.printed_convention,
+            Setting::MethodII(m) => &m.printed_convention,
+        }
+    }
+
+    /// Method I details, if the tuning is a Method I one.
+    pub fn method_i(&self) -> Option<&MethodIDetails> {
+        match &self.setting {
+            Setting::MethodI(m) => Some(m),
+            Setting::MethodII(_) => None,
+        }
+    }
+
+    /// Method II details, if the tuning is a Method II one.
+    pub fn method_ii(&self) -> Option<&MethodIIDetails> {
+        match &self.setting {
+            Setting::MethodII(m) => Some(m),
+            Setting::MethodI(_) => None,
+        }
+    }
+}
+
+/// Method I (Algorithms I-III) or Method II (direct synthesis).
+#[derive(Debug, Clone, Serialize)]
+#[serde(untagged)]
+pub enum Setting {
+    /// Section 4.
+    MethodI(Box<MethodIDetails>),
+    /// Section 5.
+    MethodII(Box<MethodIIDetails>),
+}
+
+/// The gains as the paper prints them (Method I: τ̄_P times the consistent ones).
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct PrintedConvention {
+    /// K̄_P as printed.
+    pub kp: f64,
+    /// K̄_I as printed.
+    pub ki: f64,
+    /// K̄_D as printed.
+    pub kd: f64,
+    /// Printed / consistent (τ̄_P for Method I, 1 for Method II).
+    pub factor: f64,
+    /// Why.
+    pub note: &'static str,
+}
+
+/// Method I normalized quantities (Table 1).
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct MethodINormalized {
+    /// d = d̄/τ̄_P.
+    pub d: f64,
+    /// τ_Z = τ̄_Z/τ̄_P.
+    pub tau_z: f64,
+    /// K_C (Eq. 11).
+    pub kc: f64,
+    /// τ_I (Eq. 20).
+    pub ti: f64,
+    /// τ_D.
+    pub td: f64,
+    /// K_P (Eq. 4).
+    pub kp: f64,
+    /// K_I (Eq. 4).
+    pub ki: f64,
+    /// K_D (Eq. 4).
+    pub kd: f64,
+    /// w_P (Eq. 10).
+    pub w_p: f64,
+}
+
+/// The series PID with pre-filter equivalent to a Method I setting (Eq. 4), time units.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct SeriesPid {
+    /// K̄_C.
+    pub kc: f64,
+    /// τ̄_I.
+    pub ti: f64,
+    /// τ̄_D.
+    pub td: f64,
+    /// The form.
+    pub note: &'static str,
+}
+
+/// Residuals of the defining equations at a Method I solution.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Residuals {
+    /// Eq. (10) at w_P.
+    pub eq10: f64,
+    /// K_C·A_L(w_P) − 1 (Eq. 11).
+    pub eq11: f64,
+}
+
+/// Details of a Method I tuning (Algorithms I-III).
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct MethodIDetails {
+    /// Normalized quantities.
+    pub normalized: MethodINormalized,
+    /// Series-PID equivalent (Eq. 4).
+    pub series_pid: SeriesPid,
+    /// K̄_C (corrected Table 1).
+    pub kc: f64,
+    /// τ̄_I.
+    pub ti: f64,
+    /// τ̄_D.
+    pub td: f64,
+    /// w_P/τ̄_P (rad per time unit).
+    pub w_p: f64,
+    /// PM_max (Eq. 12), rad.
+    pub pm_max_rad: f64,
+    /// PM_max, degrees.
+    pub pm_max_deg: f64,
+    /// Fixed-point iterations.
+    pub iterations: usize,
+    /// Outer iterations.
+    pub outer_iterations: usize,
+    /// Initial τ_I (normalized).
+    pub ti_init: f64,
+    /// Initial τ_D (normalized).
+    pub td_init: f64,
+    /// Printed-convention gains.
+    pub printed_convention: PrintedConvention,
+    /// Residuals of Eqs. (10)-(11).
+    pub residuals: Residuals,
+    /// What the algorithm adds.
+    #[serde(flatten)]
+    pub algorithm: Algorithm,
+}
+
+/// What each Method I algorithm adds to the details.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(untagged)]
+pub enum Algorithm {
+    /// Algorithm I.
+    I {
+        /// "exact" or "table".
+        td_source: String,
+        /// τ_D factor.
+        td_factor: f64,
+        /// min τ_D,maxGM,I-P used (normalized).
+        min_td_max_gm_ip: f64,
+    },
+    /// Algorithm II.
+    II {
+        /// τ_D,GMmax(τ_I) at the solution (normalized).
+        td_gm_max: f64,
+    },
+    /// Algorithm III.
+    III {
+        /// "isenscod" or "isensdco".
+        criterion: String,
+        /// Criterion value at the solution.
+        j: f64,
+        /// Simulations run.
+        simulations: usize,
+    },
+}
+
+/// Method II normalized quantities.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct MethodIINormalized {
+    /// d.
+    pub d: f64,
+    /// τ_Z.
+    pub tau_z: f64,
+    /// θ = K_P/K_I (Eq. 30).
+    pub theta: f64,
+    /// θ_min (Eq. 31).
+    pub theta_min: f64,
+    /// K_P (Eq. 31).
+    pub kp: f64,
+    /// K_I (Eq. 31).
+    pub ki: f64,
+    /// K_D (Eq. 31).
+    pub kd: f64,
+    /// ξ (under Eq. 28).
+    pub xi: f64,
+    /// λ (under Eq. 28).
+    pub lambda: f64,
+    /// min{1, d}.
+    pub d_min: f64,
+    /// max{1, d}.
+    pub d_max: f64,
+}
+
+/// Normalized series form of a Method II setting.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct SeriesNormalized {
+    /// K_C.
+    pub kc: f64,
+    /// τ_I.
+    pub ti: f64,
+    /// τ_D.
+    pub td: f64,
+}
+
+/// The series PID equivalent to a Method II setting (inverse of Eq. 4), when one exists.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct SeriesPidII {
+    /// K̄_C.
+    pub kc: f64,
+    /// τ̄_I.
+    pub ti: f64,
+    /// τ̄_D.
+    pub td: f64,
+    /// Normalized.
+    pub normalized: SeriesNormalized,
+}
+
+/// Details of a Method II tuning.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct MethodIIDetails {
+    /// Normalized quantities.
+    pub normalized: MethodIINormalized,
+    /// θ (normalized).
+    pub theta: f64,
+    /// ξ.
+    pub xi: f64,
+    /// λ τ̄_P.
+    pub lambda: f64,
+    /// Printed-convention gains (factor 1).
+    pub printed_convention: PrintedConvention,
+    /// Series-PID equivalent, absent when K_P² < 4 K_I K_D.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub series_pid: Option<SeriesPidII>,
+    /// How θ was chosen.
+    #[serde(flatten)]
+    pub by: MethodIIBy,
+}
+
+/// How a Method II θ was chosen.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+#[serde(untagged)]
+pub enum MethodIIBy {
+    /// From ξ (`arvanitis_m2_xi`).
+    Xi {
+        /// ξ_des.
+        xi_des: f64,
+    },
+    /// Directly (`arvanitis_m2_theta`).
+    Theta {},
+    /// From β (`arvanitis_m2_beta`).
+    Beta(BetaDetails),
+}
+
+/// What `arvanitis_m2_beta` adds.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct BetaDetails {
+    /// β used.
+    pub beta: f64,
+    /// "table" or "optimize".
+    pub beta_source: String,
+    /// Table 8's β.
+    pub beta_table8: f64,
+    /// w_u/τ̄_P.
+    pub w_u: f64,
+    /// w_u used (normalized).
+    pub w_u_normalized: f64,
+    /// Exact w_u (Eq. 33), normalized (NaN: no root).
+    pub w_u_exact_normalized: f64,
+    /// Eq. (34) w_u, normalized.
+    pub w_u_eq34_normalized: f64,
+    /// "isenscod" or "isensdco".
+    pub criterion: String,
 }
 
 /// Builds the Tuning for physically consistent I-PD gains.
 fn tuning_from_ipd(
     id: &str,
-    kp: f64,
-    ki: f64,
-    kd: f64,
-    mut details: Map<String, Value>,
+    (kp, ki, kd): (f64, f64, f64),
+    setting: Setting,
     warnings: Vec<String>,
 ) -> Result<Tuning> {
     for (n, v) in [("kp", kp), ("ki", ki), ("kd", kd)] {
@@ -1954,16 +2174,11 @@ fn tuning_from_ipd(
         }
     }
     let controller = Pid::ipd(kp, ki, kd).to_controller()?;
-    let mut named = Map::new();
-    named.insert("kp".into(), num(kp));
-    named.insert("ki".into(), num(ki));
-    named.insert("kd".into(), num(kd));
-    details.insert("warnings".into(), json!(warnings));
     Ok(Tuning {
         method: id.into(),
         controller,
-        named,
-        details,
+        named: vec![("kp".into(), kp), ("ki".into(), ki), ("kd".into(), kd)],
+        details: super::Details::Arvanitis2012(Details { setting, warnings }),
     })
 }
 
@@ -1972,116 +2187,110 @@ fn method1_tuning(
     p: &Process,
     s: &MethodISolution,
     mut warnings: Vec<String>,
-    extra: Map<String, Value>,
+    algorithm: Algorithm,
 ) -> Result<Tuning> {
     let (kp, ki, kd) = p.ipd_from_series(s.kc, s.ti, s.td);
     let (nkp, nki, nkd) = series_to_ipd(s.kc, s.ti, s.td);
     let f = p.tau_p;
-    let mut det = Map::new();
-    det.insert(
-        "normalized".into(),
-        json!({"d": p.d(), "tau_z": p.tz(), "kc": s.kc, "ti": s.ti, "td": s.td,
-               "kp": nkp, "ki": nki, "kd": nkd, "w_p": s.w_p}),
-    );
-    det.insert(
-        "series_pid".into(),
-        json!({"kc": s.kc / (p.k * p.tau_p), "ti": s.ti * p.tau_p, "td": s.td * p.tau_p,
-               "note": "series PID K_C(1 + 1/(τ_I s))(1 + τ_D s) with pre-filter 1/((τ_I s+1)(τ_D s+1)), Eq. (4), time units"}),
-    );
-    det.insert("kc".into(), num(s.kc / (p.k * p.tau_p)));
-    det.insert("ti".into(), num(s.ti * p.tau_p));
-    det.insert("td".into(), num(s.td * p.tau_p));
-    det.insert("w_p".into(), num(s.w_p / p.tau_p));
-    det.insert("pm_max_rad".into(), num(s.pm_max));
-    det.insert("pm_max_deg".into(), num(s.pm_max.to_degrees()));
-    det.insert("iterations".into(), json!(s.iterations));
-    det.insert("outer_iterations".into(), json!(s.outer_iterations));
-    det.insert("ti_init".into(), num(s.ti_init));
-    det.insert("td_init".into(), num(s.td_init));
-    det.insert(
-        "printed_convention".into(),
-        json!({"kp": kp * f, "ki": ki * f, "kd": kd * f, "factor": f,
-               "note": "the paper's Table 1 prints K_C = K̄·K̄_C; the consistent row is K_C = K̄·τ̄_P·K̄_C, so the printed Method I settings are τ̄_P times these gains"}),
-    );
+    let kc_bar = s.kc / (p.k * p.tau_p);
     // residuals of the defining equations
     let lp = IpdLoop::new(p.d(), p.tz(), s.ti, s.td);
-    det.insert(
-        "residuals".into(),
-        json!({"eq10": lp.eq10(s.w_p), "eq11": s.kc * lp.magnitude(1.0, s.w_p) - 1.0}),
-    );
-    for (k, v) in extra {
-        det.insert(k, v);
-    }
+    let det = MethodIDetails {
+        normalized: MethodINormalized {
+            d: p.d(),
+            tau_z: p.tz(),
+            kc: s.kc,
+            ti: s.ti,
+            td: s.td,
+            kp: nkp,
+            ki: nki,
+            kd: nkd,
+            w_p: s.w_p,
+        },
+        series_pid: SeriesPid {
+            kc: kc_bar,
+            ti: s.ti * p.tau_p,
+            td: s.td * p.tau_p,
+            note: SERIES_NOTE,
+        },
+        kc: kc_bar,
+        ti: s.ti * p.tau_p,
+        td: s.td * p.tau_p,
+        w_p: s.w_p / p.tau_p,
+        pm_max_rad: s.pm_max,
+        pm_max_deg: s.pm_max.to_degrees(),
+        iterations: s.iterations,
+        outer_iterations: s.outer_iterations,
+        ti_init: s.ti_init,
+        td_init: s.td_init,
+        printed_convention: PrintedConvention {
+            kp: kp * f,
+            ki: ki * f,
+            kd: kd * f,
+            factor: f,
+            note: PRINTED_NOTE_I,
+        },
+        residuals: Residuals {
+            eq10: lp.eq10(s.w_p),
+            eq11: s.kc * lp.magnitude(1.0, s.w_p) - 1.0,
+        },
+        algorithm,
+    };
     if s.pm_max < 0.0 {
         warnings.push("PM_max < 0: the loop is unstable".into());
     }
-    tuning_from_ipd(id, kp, ki, kd, det, warnings)
+    tuning_from_ipd(id, (kp, ki, kd), Setting::MethodI(Box::new(det)), warnings)
 }
 
 fn method2_tuning(
     id: &str,
     p: &Process,
     theta: f64,
-    extra: Map<String, Value>,
+    by: MethodIIBy,
     warnings: Vec<String>,
 ) -> Result<Tuning> {
     let (d, tz) = (p.d(), p.tz());
+    // Eq. (31)
     let (nkp, nki, nkd) = method2_gains(d, tz, theta)?;
     let (kp, ki, kd) = p.ipd_from_normalized(nkp, nki, nkd);
     let (xi, lam) = xi_lambda(d, tz, nkp, nki);
-    let mut det = Map::new();
-    det.insert(
-        "normalized".into(),
-        json!({"d": d, "tau_z": tz, "theta": theta, "theta_min": theta_min(d, tz),
-               "kp": nkp, "ki": nki, "kd": nkd, "xi": num(xi), "lambda": num(lam),
-               "d_min": d.min(1.0), "d_max": d.max(1.0)}),
-    );
-    det.insert("theta".into(), num(theta));
-    det.insert("xi".into(), num(xi));
-    det.insert("lambda".into(), num(lam * p.tau_p));
-    det.insert(
-        "printed_convention".into(),
-        json!({"kp": kp, "ki": ki, "kd": kd, "factor": 1.0,
-               "note": "Method II settings of the paper are physically consistent (no Table 1 factor)"}),
-    );
-    if let Ok(ser) = ipd_to_series(nkp, nki, nkd) {
+    let series_pid = ipd_to_series(nkp, nki, nkd).ok().map(|ser| {
         let (kc, ti, td) = ser[0];
-        det.insert(
-            "series_pid".into(),
-            json!({"kc": kc / (p.k * p.tau_p), "ti": ti * p.tau_p, "td": td * p.tau_p,
-                   "normalized": {"kc": kc, "ti": ti, "td": td}}),
-        );
-    }
-    for (k, v) in extra {
-        det.insert(k, v);
-    }
-    tuning_from_ipd(id, kp, ki, kd, det, warnings)
-}
-
-/// Tunes method `id` if it belongs to this paper.
-pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> {
-    let ids = [
-        "arvanitis_alg1",
-        "arvanitis_alg2",
-        "arvanitis_alg3",
-        "arvanitis_m2_xi",
-        "arvanitis_m2_theta",
-        "arvanitis_m2_beta",
-    ];
-    if !ids.contains(&id) {
-        return None;
-    }
-    // internal solver errors name the normalized τ_I; at the API they are about the plant
-    Some(tune_inner(id, plant, params).map_err(|e| {
-        if e.path == "tau_i" {
-            Error::new(
-                "plant",
-                format!("no admissible setting for this plant: {}", e.message),
-            )
-        } else {
-            e
+        SeriesPidII {
+            kc: kc / (p.k * p.tau_p),
+            ti: ti * p.tau_p,
+            td: td * p.tau_p,
+            normalized: SeriesNormalized { kc, ti, td },
         }
-    }))
+    });
+    let det = MethodIIDetails {
+        normalized: MethodIINormalized {
+            d,
+            tau_z: tz,
+            theta,
+            theta_min: theta_min(d, tz),
+            kp: nkp,
+            ki: nki,
+            kd: nkd,
+            xi,
+            lambda: lam,
+            d_min: d.min(1.0),
+            d_max: d.max(1.0),
+        },
+        theta,
+        xi,
+        lambda: lam * p.tau_p,
+        printed_convention: PrintedConvention {
+            kp,
+            ki,
+            kd,
+            factor: 1.0,
+            note: PRINTED_NOTE_II,
+        },
+        series_pid,
+        by,
+    };
+    tuning_from_ipd(id, (kp, ki, kd), Setting::MethodII(Box::new(det)), warnings)
 }
 
 fn paper_range_warning(p: &Process) -> Vec<String> {
@@ -2095,60 +2304,239 @@ fn paper_range_warning(p: &Process) -> Vec<String> {
     }
 }
 
-fn tune_inner(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
-    let p = Process::from_plant(plant)?;
-    let (d, tz) = (p.d(), p.tz());
-    let mut warnings = paper_range_warning(&p);
-    match id {
-        "arvanitis_alg1" => {
-            let zeta = params.f64_in("zeta", 0.6, 0.3, 2.0)?;
-            let fac = params.f64_in("td_factor", 1.0, 0.5, 2.0)?;
-            let src = params.choice("td_source", "exact", &["exact", "table"])?;
+/// Internal solver errors name the normalized τ_I; at the API they are about the plant.
+fn plant_error(e: Error) -> Error {
+    if e.path == "tau_i" {
+        Error::new(
+            "plant",
+            format!("no admissible setting for this plant: {}", e.message),
+        )
+    } else {
+        e
+    }
+}
+
+fn method_info(id: &str, title: &str, params: Vec<ParamInfo>) -> MethodInfo {
+    MethodInfo {
+        id: id.into(),
+        title: title.into(),
+        citation: CITATION.into(),
+        families: FAMILIES.iter().map(|s| s.to_string()).collect(),
+        structure: "I-PD".into(),
+        params,
+    }
+}
+
+fn zeta_param() -> ParamInfo {
+    ParamInfo::number("zeta", "ζ_des (damping of Eq. 17)", Some(0.6), 0.3, 2.0)
+        .help("desired damping ratio of the second-order approximation (17)")
+}
+
+fn criterion_param(help: &str) -> ParamInfo {
+    ParamInfo::choice(
+        "criterion",
+        "criterion",
+        "isenscod",
+        &["isenscod", "isensdco"],
+    )
+    .help(help)
+}
+
+/// Method I, Algorithm I (`arvanitis_alg1`).
+pub struct Alg1;
+/// Method I, Algorithm II (`arvanitis_alg2`).
+pub struct Alg2;
+/// Method I, Algorithm III (`arvanitis_alg3`).
+pub struct Alg3;
+/// Method II by ξ (`arvanitis_m2_xi`).
+pub struct M2Xi;
+/// Method II by θ (`arvanitis_m2_theta`).
+pub struct M2Theta;
+/// Method II by β (`arvanitis_m2_beta`).
+pub struct M2Beta;
+
+impl super::Rule for Alg1 {
+    fn info(&self) -> MethodInfo {
+        method_info(
+            "arvanitis_alg1",
+            "Arvanitis 2012, Method I, Algorithm I (max phase margin, τ_D = min τ_D,maxGM,I-P)",
+            vec![
+                zeta_param(),
+                ParamInfo::number(
+                    "td_factor",
+                    "τ_D factor (1; 1.25 for the variant)",
+                    Some(1.0),
+                    0.5,
+                    2.0,
+                )
+                .help("τ_D = factor × min τ_D,maxGM,I-P(τ_Z, d)"),
+                ParamInfo::choice(
+                    "td_source",
+                    "min τ_D,maxGM,I-P from",
+                    "exact",
+                    &["exact", "table"],
+                )
+                .help("exact limit (PD vs P ultimate gains) or Table 3's fit"),
+            ],
+        )
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        let info = self.info();
+        let decl = &info.params;
+        (|| {
+            let p = Process::from_plant(plant)?;
+            let mut warnings = paper_range_warning(&p);
+            let zeta = params.number(decl, "zeta")?;
+            let fac = params.number(decl, "td_factor")?;
+            let src = params.text(decl, "td_source")?;
             let source = if src == "table" {
                 TdSource::Table
             } else {
                 TdSource::Exact
             };
-            let (s, w) = algorithm1(d, tz, zeta, fac, source)?;
+            let (s, w) = algorithm1(p.d(), p.tz(), zeta, fac, source)?;
             warnings.extend(w);
-            let mut extra = Map::new();
-            extra.insert("td_source".into(), json!(src));
-            extra.insert("td_factor".into(), json!(fac));
-            extra.insert("min_td_max_gm_ip".into(), num(s.td / fac));
-            method1_tuning(id, &p, &s, warnings, extra)
-        }
-        "arvanitis_alg2" => {
-            let zeta = params.f64_in("zeta", 0.6, 0.3, 2.0)?;
-            let s = algorithm2(d, tz, zeta, None)?;
-            let mut extra = Map::new();
-            extra.insert("td_gm_max".into(), num(s.td / 2.0));
-            method1_tuning(id, &p, &s, warnings, extra)
-        }
-        "arvanitis_alg3" => {
-            let zeta = params.f64_in("zeta", 0.6, 0.3, 2.0)?;
-            let crit = params.choice("criterion", "isenscod", &["isenscod", "isensdco"])?;
-            let (s, info) = algorithm3(&p, zeta, &crit, None)?;
-            let mut extra = Map::new();
-            extra.insert("criterion".into(), json!(crit));
-            extra.insert("j".into(), num(info.j));
-            extra.insert("simulations".into(), json!(info.simulations));
-            method1_tuning(id, &p, &s, warnings, extra)
-        }
-        "arvanitis_m2_xi" => {
-            let xi = params.f64_in("xi", 0.707, 0.3, 3.0)?;
-            let theta = theta_from_xi(d, tz, xi);
-            let mut extra = Map::new();
-            extra.insert("xi_des".into(), json!(xi));
-            method2_tuning(id, &p, theta, extra, warnings)
-        }
-        "arvanitis_m2_theta" => {
-            let theta = params.req_f64_in("theta_design", 0.0, 1000.0)?;
-            method2_tuning(id, &p, theta, Map::new(), warnings)
-        }
-        "arvanitis_m2_beta" => {
-            let crit = params.choice("criterion", "isenscod", &["isenscod", "isensdco"])?;
-            let wsrc = params.choice("wu", "eq34", &["eq34", "exact"])?;
-            let bsrc = params.choice("beta_source", "table", &["table", "optimize"])?;
+            let algorithm = Algorithm::I {
+                td_source: src,
+                td_factor: fac,
+                min_td_max_gm_ip: s.td / fac,
+            };
+            method1_tuning(&info.id, &p, &s, warnings, algorithm)
+        })()
+        .map_err(plant_error)
+    }
+}
+
+impl super::Rule for Alg2 {
+    fn info(&self) -> MethodInfo {
+        method_info(
+            "arvanitis_alg2",
+            "Arvanitis 2012, Method I, Algorithm II (τ_D = 2 τ_D,GMmax(τ_I))",
+            vec![zeta_param()],
+        )
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        let info = self.info();
+        (|| {
+            let p = Process::from_plant(plant)?;
+            let warnings = paper_range_warning(&p);
+            let zeta = params.number(&info.params, "zeta")?;
+            let s = algorithm2(p.d(), p.tz(), zeta, None)?;
+            let algorithm = Algorithm::II {
+                td_gm_max: s.td / 2.0,
+            };
+            method1_tuning(&info.id, &p, &s, warnings, algorithm)
+        })()
+        .map_err(plant_error)
+    }
+}
+
+impl super::Rule for Alg3 {
+    fn info(&self) -> MethodInfo {
+        method_info(
+            "arvanitis_alg3",
+            "Arvanitis 2012, Method I, Algorithm III (τ_D minimizing ISENSCOD/ISENSDCO of a load step)",
+            vec![
+                zeta_param(),
+                criterion_param("Eq. (13) ISENSCOD or Eq. (14) ISENSDCO of a unit load step"),
+            ],
+        )
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        let info = self.info();
+        let decl = &info.params;
+        (|| {
+            let p = Process::from_plant(plant)?;
+            let warnings = paper_range_warning(&p);
+            let zeta = params.number(decl, "zeta")?;
+            let crit = params.text(decl, "criterion")?;
+            let (s, a3) = algorithm3(&p, zeta, &crit, None)?;
+            let algorithm = Algorithm::III {
+                criterion: crit,
+                j: a3.j,
+                simulations: a3.simulations,
+            };
+            method1_tuning(&info.id, &p, &s, warnings, algorithm)
+        })()
+        .map_err(plant_error)
+    }
+}
+
+impl super::Rule for M2Xi {
+    fn info(&self) -> MethodInfo {
+        method_info(
+            "arvanitis_m2_xi",
+            "Arvanitis 2012, Method II (direct synthesis) by damping ratio ξ",
+            vec![ParamInfo::number(
+                "xi",
+                "ξ_des (damping of Eq. 28)",
+                Some(0.707),
+                0.3,
+                3.0,
+            )],
+        )
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        let info = self.info();
+        (|| {
+            let p = Process::from_plant(plant)?;
+            let warnings = paper_range_warning(&p);
+            let xi = params.number(&info.params, "xi")?;
+            // θ from ξ (Eq. 32 as corrected, ERRATA)
+            let theta = theta_from_xi(p.d(), p.tz(), xi);
+            let by = MethodIIBy::Xi { xi_des: xi };
+            method2_tuning(&info.id, &p, theta, by, warnings)
+        })()
+        .map_err(plant_error)
+    }
+}
+
+impl super::Rule for M2Theta {
+    fn info(&self) -> MethodInfo {
+        method_info(
+            "arvanitis_m2_theta",
+            "Arvanitis 2012, Method II (direct synthesis), θ = K_P/K_I set directly",
+            vec![ParamInfo::number("theta_design", "θ (normalized, > θ_min)", None, 0.0, 1000.0)
+                .help("θ = K_P/K_I in normalized units; must exceed θ_min = (d + τ_Z + max(1,d) + 1)/2")],
+        )
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        let info = self.info();
+        (|| {
+            let p = Process::from_plant(plant)?;
+            let warnings = paper_range_warning(&p);
+            let theta = params.number(&info.params, "theta_design")?;
+            method2_tuning(&info.id, &p, theta, MethodIIBy::Theta {}, warnings)
+        })()
+        .map_err(plant_error)
+    }
+}
+
+impl super::Rule for M2Beta {
+    fn info(&self) -> MethodInfo {
+        method_info(
+            "arvanitis_m2_beta",
+            "Arvanitis 2012, Method II by β (Table 8, θ = 2π/(w_u β))",
+            vec![
+                criterion_param("β of Table 8 minimizing ISENSCOD-L (13) or ISENSDCO-L (14)"),
+                ParamInfo::choice("wu", "w_u from", "eq34", &["eq34", "exact"])
+                    .help("Eq. (34) approximation (as the paper) or the exact root of Eq. (33)"),
+                ParamInfo::choice("beta_source", "β from", "table", &["table", "optimize"])
+                    .help("Table 8's fit, or the β minimizing the criterion by simulation (what Table 8 approximates; ~0.1-0.5 s)"),
+            ],
+        )
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        let info = self.info();
+        let decl = &info.params;
+        (|| {
+            let p = Process::from_plant(plant)?;
+            let (d, tz) = (p.d(), p.tz());
+            let mut warnings = paper_range_warning(&p);
+            let crit = params.text(decl, "criterion")?;
+            let wsrc = params.text(decl, "wu")?;
+            let bsrc = params.text(decl, "beta_source")?;
+            // w_u: Eq. (33) exactly or Eq. (34)
             let wu = if wsrc == "exact" {
                 wu_exact(d, tz)?
             } else {
@@ -2168,22 +2556,37 @@ fn tune_inner(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
                 ));
             }
             let theta = 2.0 * PI / (wu * beta);
-            let mut extra = Map::new();
-            extra.insert("beta".into(), num(beta));
-            extra.insert("beta_source".into(), json!(bsrc));
-            extra.insert("beta_table8".into(), num(table_beta));
-            extra.insert("w_u".into(), num(wu / p.tau_p));
-            extra.insert("w_u_normalized".into(), num(wu));
-            extra.insert(
-                "w_u_exact_normalized".into(),
-                num(wu_exact(d, tz).unwrap_or(f64::NAN)),
-            );
-            extra.insert("w_u_eq34_normalized".into(), num(wu_eq34(d, tz)));
-            extra.insert("criterion".into(), json!(crit));
-            method2_tuning(id, &p, theta, extra, warnings)
-        }
-        _ => Err(Error::new("method", format!("unknown method '{id}'"))),
+            let by = MethodIIBy::Beta(BetaDetails {
+                beta,
+                beta_source: bsrc,
+                beta_table8: table_beta,
+                w_u: wu / p.tau_p,
+                w_u_normalized: wu,
+                w_u_exact_normalized: wu_exact(d, tz).unwrap_or(f64::NAN),
+                w_u_eq34_normalized: wu_eq34(d, tz),
+                criterion: crit,
+            });
+            method2_tuning(&info.id, &p, theta, by, warnings)
+        })()
+        .map_err(plant_error)
     }
+}
+
+/// The rules of this paper, in the order `methods()` lists them.
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    vec![
+        Box::new(Alg1),
+        Box::new(Alg2),
+        Box::new(Alg3),
+        Box::new(M2Xi),
+        Box::new(M2Theta),
+        Box::new(M2Beta),
+    ]
+}
+
+/// Methods of this paper (ids and parameters as in API.md).
+pub fn methods() -> Vec<MethodInfo> {
+    rules().iter().map(|r| r.info()).collect()
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -2199,13 +2602,8 @@ pub const BOILER: Family = Family::IpdtIr {
 };
 
 /// The scenario of Figs. 8-12: unit set-point step at t = 0, load L = 1 at t = 30.
-pub fn boiler_scenario() -> Value {
-    json!({"t_end": 60.0, "dt": 0.01, "setpoint": {"time": 0.0, "size": 1.0},
-           "disturbance": {"time": 30.0, "size": 1.0}})
-}
-
-fn boiler_plant_json() -> Value {
-    json!({"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1})
+pub fn boiler_scenario() -> Scenario {
+    Scenario::steps(60.0, 0.01, 0.0, 1.0, 30.0, 1.0)
 }
 
 /// The comparison controllers of Section 6 as (Cr, Cy) and how they were mapped.
@@ -2289,61 +2687,64 @@ pub const PRINTED: [(&str, &str, f64, f64, f64); 6] = [
     ),
 ];
 
-/// Presets of this paper: every Section 6 setting (rule calls), the printed settings as literal
-/// controllers, and the comparison controllers.
-/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
-pub fn rules() -> Vec<Box<dyn super::Rule>> {
-    super::legacy_rules(methods(), tune)
-}
-
 /// Every preset of this paper.
 pub fn presets() -> Vec<super::AnyPreset> {
-    legacy_presets()
+    boiler_presets()
         .into_iter()
-        .map(super::AnyPreset::Legacy)
+        .map(super::AnyPreset::Typed)
         .collect()
 }
 
-/// The presets as JSON records (transitional).
-pub fn legacy_presets() -> Vec<Preset> {
-    let plant = boiler_plant_json();
-    let sc = boiler_scenario();
-    let rule = |id: &str, title: &str, desc: &str, method: &str, params: Value| Preset {
+/// Presets of this paper: every Section 6 setting (rule calls), the printed settings as literal
+/// controllers, and the comparison controllers, all on the boiler with the scenario of Figs. 8-12.
+pub fn boiler_presets() -> Vec<Preset> {
+    let preset = |id: &str, title: String, description: String, design: Design| Preset {
         id: format!("arvanitis2012/boiler/{id}"),
-        title: title.into(),
-        description: desc.into(),
+        title,
+        description,
         citation: CITATION.into(),
-        plant: plant.clone(),
-        tune: json!({"method": method, "params": params}),
-        controller: Value::Null,
-        scenario: sc.clone(),
+        plant: BOILER.plant(),
+        design,
+        scenario: boiler_scenario(),
     };
+    let rule = |id: &str, title: &str, desc: &str, method: &str, params: Params| {
+        preset(
+            id,
+            title.into(),
+            desc.into(),
+            Design::Rule {
+                method: method.into(),
+                params,
+            },
+        )
+    };
+    let zeta = Params::default().with("zeta", 0.6);
     let mut v = vec![
         rule("alg1", "Boiler drum, Algorithm I (ζ = 0.6)",
              "Method I, Algorithm I, τ_D = exact min τ_D,maxGM,I-P (1.1048 normalized); Fig. 8 solid-thick. Reproduces the printed 2.104, 0.6391, 1.5876 divided by τ̄_P = 1.06.",
-             "arvanitis_alg1", json!({"zeta": 0.6, "td_factor": 1.0, "td_source": "exact"})),
+             "arvanitis_alg1", zeta.clone().with("td_factor", 1.0).with("td_source", "exact")),
         rule("alg1_125", "Boiler drum, Algorithm I, 1.25 τ_D (ζ = 0.6)",
              "Method I, Algorithm I with τ_D = 1.25 × Table 3 (1.4419, as the text); Fig. 8 solid-thin.",
-             "arvanitis_alg1", json!({"zeta": 0.6, "td_factor": 1.25, "td_source": "table"})),
+             "arvanitis_alg1", zeta.clone().with("td_factor", 1.25).with("td_source", "table")),
         rule("alg2", "Boiler drum, Algorithm II (ζ = 0.6)",
              "Method I, Algorithm II, τ_D = 2 τ_D,GMmax(τ_I); Fig. 9.",
-             "arvanitis_alg2", json!({"zeta": 0.6})),
+             "arvanitis_alg2", zeta.clone()),
         rule("alg3", "Boiler drum, Algorithm III (ζ = 0.6, ISENSCOD)",
              "Method I, Algorithm III minimizing criterion (13) of a unit load step; Fig. 10.",
-             "arvanitis_alg3", json!({"zeta": 0.6, "criterion": "isenscod"})),
+             "arvanitis_alg3", zeta.with("criterion", "isenscod")),
         rule("m2_xi", "Boiler drum, Method II (ξ = 0.707)",
              "Method II (direct synthesis) with ξ = 0.707; Fig. 11. Printed 3.5624, 1.363, 2.2447.",
-             "arvanitis_m2_xi", json!({"xi": 0.707})),
+             "arvanitis_m2_xi", Params::default().with("xi", 0.707)),
         rule("m2_beta", "Boiler drum, Method II (ISENSCOD-L)",
              "Method II with β of Table 8 (ISENSCOD-L) and w_u of Eq. (34); Fig. 12.",
-             "arvanitis_m2_beta", json!({"criterion": "isenscod", "wu": "eq34"})),
+             "arvanitis_m2_beta", Params::default().with("criterion", "isenscod").with("wu", "eq34")),
     ];
     for (id, desc, kp, ki, kd) in PRINTED {
         if let Ok(c) = Pid::ipd(kp, ki, kd).to_controller() {
-            v.push(Preset {
-                id: format!("arvanitis2012/boiler/printed_{id}"),
-                title: format!("Boiler drum, {desc} (as printed)"),
-                description: format!(
+            v.push(preset(
+                &format!("printed_{id}"),
+                format!("Boiler drum, {desc} (as printed)"),
+                format!(
                     "I-PD with the printed gains K̄_P = {kp}, K̄_I = {ki}, K̄_D = {kd}{}",
                     if id.starts_with("alg") {
                         " (Method I: printed with Table 1's K_C row, τ̄_P = 1.06 times the consistent gains)"
@@ -2351,25 +2752,17 @@ pub fn legacy_presets() -> Vec<Preset> {
                         ""
                     }
                 ),
-                citation: CITATION.into(),
-                plant: plant.clone(),
-                tune: Value::Null,
-                controller: controller_json(&c),
-                scenario: sc.clone(),
-            });
+                Design::Controller(c),
+            ));
         }
     }
     for (id, desc, c) in comparison_controllers() {
-        v.push(Preset {
-            id: format!("arvanitis2012/boiler/{id}"),
-            title: format!("Boiler drum, {}", desc.split(':').next().unwrap_or(id)),
-            description: format!("{desc}; comparison setting quoted in Section 6 (Figs. 8-12)."),
-            citation: CITATION.into(),
-            plant: plant.clone(),
-            tune: Value::Null,
-            controller: controller_json(&c),
-            scenario: sc.clone(),
-        });
+        v.push(preset(
+            id,
+            format!("Boiler drum, {}", desc.split(':').next().unwrap_or(id)),
+            format!("{desc}; comparison setting quoted in Section 6 (Figs. 8-12)."),
+            Design::Controller(c),
+        ));
     }
     v
 }
