@@ -503,12 +503,12 @@ fn tables_2_to_6_against_exact() {
             f.range,
             f.measured_mne
         );
-        assert_eq!(f.offered, m <= f.printed_mne + 0.001);
+        assert_eq!(f.offered(), m <= f.printed_mne + 0.001);
     }
     let offered: Vec<bool> = fits()
         .iter()
         .filter(|f| f.table <= 3)
-        .map(|f| f.offered)
+        .map(|f| f.offered())
         .collect();
     assert_eq!(offered, [false, true, false, false]);
     // Table 4's ζ = 0.6 τ_I goes negative inside its range (ERRATA)
@@ -516,7 +516,7 @@ fn tables_2_to_6_against_exact() {
         .into_iter()
         .find(|f| f.table == 4 && f.zeta == 0.6 && f.quantity == FitQuantity::Ti)
         .unwrap();
-    assert!((t4.f)(0.5, 0.2) < 0.0 && !t4.offered);
+    assert!((t4.f)(0.5, 0.2) < 0.0 && !t4.offered());
 }
 
 /// methods() and presets(): ids and params as API.md; every rule preset tunes.
