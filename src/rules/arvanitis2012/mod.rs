@@ -2,17 +2,25 @@
 //! feedback) tuning for integrating processes with inverse response and dead time (IPDT-IR),
 //! `Ḡ_p(s) = K̄(1 − τ̄_Z s)e^{−d̄ s}/(s(τ̄_P s + 1))` (Eq. 1).
 //!
-//! Contents, in the paper's order:
-//! - Table 1 normalization (with the corrected K_C row) and the I-PD ↔ series-PID-with-pre-filter
-//!   equivalence of Eq. (4): [`Process`], [`series_to_ipd`], [`ipd_to_series`].
-//! - Section 3, computed exactly: φ_L (Eq. 8), A_L (Eq. 9), w_P as the largest real root of
-//!   Eq. (10), K_C from Eq. (11), PM_max (Eq. 12), τ_I,min, the ultimate gain K_u(τ_I, τ_D),
-//!   τ_D,GMmax(τ_I) and its limit, τ_D,maxGM,I-P(τ_I) and its limit: [`IpdLoop`],
-//!   [`tau_d_gm_max`], [`tau_d_max_gm_ip`].
-//! - Section 4 (Method I): Algorithms I, II, III: [`algorithm1`], [`algorithm2`], [`algorithm3`].
-//! - Section 5 (Method II, direct synthesis): [`method2_gains`], [`theta_from_xi`],
-//!   [`wu_exact`] (Eq. 33), [`wu_eq34`] (Eq. 34).
-//! - Tables 2-8 as fast approximations with their validity ranges: [`fits`].
+//! Contents, in the paper's order (one file per part):
+//! - `mod.rs`: Table 1 normalization (with the corrected K_C row) and the I-PD ↔
+//!   series-PID-with-pre-filter equivalence of Eq. (4): [`Process`], [`series_to_ipd`],
+//!   [`ipd_to_series`]; the six rules behind [`super::Rule`] ([`Alg1`] … [`M2Beta`]).
+//! - `frequency.rs`, Section 3 computed exactly: φ_L (Eq. 8), A_L (Eq. 9), w_P as the largest
+//!   real root of Eq. (10), K_C from Eq. (11), PM_max (Eq. 12), τ_I,min, the ultimate gain
+//!   K_u(τ_I, τ_D), τ_D,GMmax(τ_I) and its limit, τ_D,maxGM,I-P(τ_I) and its limit:
+//!   [`IpdLoop`], [`tau_d_gm_max`], [`tau_d_max_gm_ip`].
+//! - `method1.rs`, Section 4 (Method I): Algorithms I, II, III: [`algorithm1`], [`algorithm2`],
+//!   [`algorithm3`], and criterion (13)/(14) of a load step ([`load_criterion`]).
+//! - `method2.rs`, Section 5 (Method II, direct synthesis): [`method2_gains`],
+//!   [`theta_from_xi`], [`wu_exact`] (Eq. 33), [`wu_eq34`] (Eq. 34), [`beta_optimal`].
+//! - `tables.rs`: Tables 2-8 as named data with their validity boxes: [`FITS`].
+//! - `details.rs`: the typed [`Details`] of a tuning.
+//! - `settings.rs`, Section 6: the boiler, the comparison controllers, the printed settings,
+//!   the presets, and the Section 6 settings and figures the reproduction uses.
+//! - `studies.rs`: what `reproduce arvanitis2012` computes (Section 6 against the print,
+//!   Section 3 for the boiler, Tables 2-8 against the exact computation, Figs. 8-12,
+//!   convergence over the paper's range), as typed results.
 //!
 //! Every quantity without a bar is normalized (Table 1): time by τ̄_P, gains by K̄ (and τ̄_P).
 //!

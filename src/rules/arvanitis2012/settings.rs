@@ -71,40 +71,86 @@ pub fn comparison_controllers() -> Vec<(
     v
 }
 
-/// The paper's printed I-PD settings of Section 6 (as printed; Method I ones are τ̄_P times
-/// the consistent gains): (id suffix, description, K̄_P, K̄_I, K̄_D).
-pub const PRINTED: [(&str, &str, f64, f64, f64); 6] = [
-    (
-        "alg1",
-        "Algorithm I, τ_D = min τ_D,maxGM,I-P, ζ = 0.6",
-        2.104,
-        0.6391,
-        1.5876,
-    ),
-    (
-        "alg1_125",
-        "Algorithm I, τ_D = 1.25 min τ_D,maxGM,I-P, ζ = 0.6",
-        2.0026,
-        0.5695,
-        1.7289,
-    ),
-    ("alg2", "Algorithm II, ζ = 0.6", 2.1071, 0.6521, 1.504),
-    (
-        "alg3",
-        "Algorithm III, ISENSCOD (13), ζ = 0.6",
-        2.1069,
-        0.6426,
-        1.5732,
-    ),
-    ("m2_xi", "Method II, ξ = 0.707", 3.5624, 1.363, 2.2447),
-    (
-        "m2_beta",
-        "Method II, ISENSCOD-L (Table 8)",
-        3.352,
-        1.2034,
-        2.2009,
-    ),
+/// A printed I-PD setting of Section 6 (as printed; Method I ones are τ̄_P times the consistent
+/// gains).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PrintedSetting {
+    /// Id suffix of its presets (`arvanitis2012/boiler/<id>` and `…/printed_<id>`).
+    pub id: &'static str,
+    /// What it is.
+    pub description: &'static str,
+    /// The printed gains (K̄_P, K̄_I, K̄_D).
+    pub gains: Gains,
+}
+
+/// The paper's printed I-PD settings of Section 6.
+pub const PRINTED: [PrintedSetting; 6] = [
+    // Section 6, Algorithm I (Fig. 8, solid-thick)
+    PrintedSetting {
+        id: "alg1",
+        description: "Algorithm I, τ_D = min τ_D,maxGM,I-P, ζ = 0.6",
+        gains: Gains {
+            kp: 2.104,
+            ki: 0.6391,
+            kd: 1.5876,
+        },
+    },
+    // Section 6, Algorithm I with 1.25 τ_D (Fig. 8, solid-thin)
+    PrintedSetting {
+        id: "alg1_125",
+        description: "Algorithm I, τ_D = 1.25 min τ_D,maxGM,I-P, ζ = 0.6",
+        gains: Gains {
+            kp: 2.0026,
+            ki: 0.5695,
+            kd: 1.7289,
+        },
+    },
+    // Section 6, Algorithm II (Fig. 9)
+    PrintedSetting {
+        id: "alg2",
+        description: "Algorithm II, ζ = 0.6",
+        gains: Gains {
+            kp: 2.1071,
+            ki: 0.6521,
+            kd: 1.504,
+        },
+    },
+    // Section 6, Algorithm III (Fig. 10)
+    PrintedSetting {
+        id: "alg3",
+        description: "Algorithm III, ISENSCOD (13), ζ = 0.6",
+        gains: Gains {
+            kp: 2.1069,
+            ki: 0.6426,
+            kd: 1.5732,
+        },
+    },
+    // Section 6, Method II by ξ (Fig. 11)
+    PrintedSetting {
+        id: "m2_xi",
+        description: "Method II, ξ = 0.707",
+        gains: Gains {
+            kp: 3.5624,
+            ki: 1.363,
+            kd: 2.2447,
+        },
+    },
+    // Section 6, Method II by β (Fig. 12)
+    PrintedSetting {
+        id: "m2_beta",
+        description: "Method II, ISENSCOD-L (Table 8)",
+        gains: Gains {
+            kp: 3.352,
+            ki: 1.2034,
+            kd: 2.2009,
+        },
+    },
 ];
+
+/// The printed gains of setting `id` of [`PRINTED`].
+pub fn printed_gains(id: &str) -> Option<Gains> {
+    PRINTED.iter().find(|s| s.id == id).map(|s| s.gains)
+}
 
 /// Every preset of this paper.
 pub fn presets() -> Vec<AnyPreset> {
@@ -155,7 +201,12 @@ pub fn boiler_presets() -> Vec<Preset> {
              "Method II with β of Table 8 (ISENSCOD-L) and w_u of Eq. (34); Fig. 12.",
              "arvanitis_m2_beta", Params::default().with("criterion", "isenscod").with("wu", "eq34")),
     ];
-    for (id, desc, kp, ki, kd) in PRINTED {
+    for PrintedSetting {
+        id,
+        description: desc,
+        gains: Gains { kp, ki, kd },
+    } in PRINTED
+    {
         if let Ok(c) = Pid::ipd(kp, ki, kd).to_controller() {
             v.push(preset(
                 &format!("printed_{id}"),
@@ -182,3 +233,109 @@ pub fn boiler_presets() -> Vec<Preset> {
     }
     v
 }
+
+/// I-PD gains (K̄_P, K̄_I, K̄_D).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Gains {
+    /// K̄_P.
+    pub kp: f64,
+    /// K̄_I.
+    pub ki: f64,
+    /// K̄_D.
+    pub kd: f64,
+}
+
+/// One Section 6 setting of the reproduction: a rule call beside the gains the paper prints.
+#[derive(Debug, Clone)]
+pub struct Section6Setting {
+    /// What it is.
+    pub what: &'static str,
+    /// Method id.
+    pub method: &'static str,
+    /// Its parameters.
+    pub params: Params,
+    /// The gains printed in Section 6.
+    pub printed: Gains,
+    /// What explains the difference.
+    pub note: &'static str,
+}
+
+/// The Section 6 settings the reproduction compares with the print (every printed Method I and
+/// Method II setting, and the variants that explain how the paper obtained them).
+pub fn section6_settings() -> Vec<Section6Setting> {
+    let g = |kp, ki, kd| Gains { kp, ki, kd };
+    let row = |what, method, params, printed, note| Section6Setting {
+        what,
+        method,
+        params,
+        printed,
+        note,
+    };
+    let printed = |id| printed_gains(id).unwrap_or(g(f64::NAN, f64::NAN, f64::NAN));
+    let alg1 = printed("alg1");
+    let alg1_125 = printed("alg1_125");
+    let m2_beta = printed("m2_beta");
+    let none = Params::default;
+    vec![
+        row("Alg I, τ_D = min τ_D,maxGM,I-P (exact 1.1048), ζ = 0.6", "arvanitis_alg1", none(), alg1,
+            "text says τ_D = 1.1535 (Table 3) but the gains come from the exact 1.1048"),
+        row("Alg I, τ_D = 1.25 × Table 3 = 1.4419, ζ = 0.6", "arvanitis_alg1",
+            none().with("td_factor", 1.25).with("td_source", "table"), alg1_125,
+            "Table 3's box misses its printed M.N.E. (warning); 1.25 × exact 1.1048 would give 2.0204, 0.5801, 1.7144"),
+        row("Alg I, τ_D = 1.25 × exact", "arvanitis_alg1", none().with("td_factor", 1.25), alg1_125,
+            "for comparison: further from print, so the paper used 1.4419"),
+        row("Alg II, ζ = 0.6", "arvanitis_alg2", none(), printed("alg2"),
+            "same fixed point from (0.3807, 1.3296) or the exact init"),
+        row("Alg III, criterion (13), ζ = 0.6", "arvanitis_alg3", none(), printed("alg3"),
+            "golden section on τ_D with the exact simulator"),
+        row("Method II, ξ = 0.707", "arvanitis_m2_xi", none(), printed("m2_xi"),
+            "θ = 4ξ²(τ_Z+d_min)+d+τ_Z+1 (Eq. 32 damaged); consistent, factor 1"),
+        row("Method II, ISENSCOD-L, Table 8 + Eq. (34)", "arvanitis_m2_beta", none(), m2_beta,
+            "Table 8 gives β = 1.782; the print corresponds to θ = 2.6277 (β = 1.794 with Eq. 34)"),
+        row("Method II, ISENSCOD-L, Table 8 + exact w_u (Eq. 33)", "arvanitis_m2_beta",
+            none().with("wu", "exact"), m2_beta, "exact w_u = 1.3780 vs Eq. (34) 1.3327"),
+        row("Method II, ISENSCOD-L, β optimized by simulation + Eq. (34)", "arvanitis_m2_beta",
+            none().with("beta_source", "optimize"), m2_beta,
+            "the β Table 8 approximates, computed exactly (normalized process)"),
+    ]
+}
+
+/// One of Figs. 8-12: its number and the presets (ids after `arvanitis2012/boiler/`) whose
+/// responses it shows.
+#[derive(Debug, Clone, Copy)]
+pub struct Figure {
+    /// Figure number.
+    pub number: u32,
+    /// Its curves.
+    pub curves: &'static [&'static str],
+}
+
+/// Figs. 8-12: each of the paper's settings against the three comparison controllers.
+pub const FIGURES: [Figure; 5] = [
+    Figure {
+        number: 8,
+        curves: &[
+            "alg1",
+            "alg1_125",
+            "gu2006",
+            "luyben2003",
+            "shamsuzzoha_lee2006",
+        ],
+    },
+    Figure {
+        number: 9,
+        curves: &["alg2", "gu2006", "luyben2003", "shamsuzzoha_lee2006"],
+    },
+    Figure {
+        number: 10,
+        curves: &["alg3", "gu2006", "luyben2003", "shamsuzzoha_lee2006"],
+    },
+    Figure {
+        number: 11,
+        curves: &["m2_xi", "gu2006", "luyben2003", "shamsuzzoha_lee2006"],
+    },
+    Figure {
+        number: 12,
+        curves: &["m2_beta", "gu2006", "luyben2003", "shamsuzzoha_lee2006"],
+    },
+];
