@@ -19,7 +19,8 @@ use pidlab::model::tf::Tf;
 use pidlab::rules::kaya2020::{
     default_n, normalized_settings, table_for, Criterion, TABLE_I, TABLE_II,
 };
-use pidlab::sim::{simulate, Scenario};
+use pidlab::analysis::simulate;
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 /// The rule's I-PD as shipped (derivative filter N from `default_n`) on the normalized plant.

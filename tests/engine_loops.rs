@@ -3,7 +3,8 @@
 use pidlab::model::controller::Pid;
 use pidlab::model::plant::{Family, Plant};
 use pidlab::model::tf::Tf;
-use pidlab::sim::{simulate, Scenario};
+use pidlab::analysis::simulate;
+use pidlab::sim::Scenario;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 #[wasm_bindgen_test(unsupported = test)]

@@ -10,7 +10,8 @@ use pidlab::api;
 use pidlab::model::controller::{Controller, ModelLoop, Pid};
 use pidlab::model::plant::{Family, Plant};
 use pidlab::model::tf::Tf;
-use pidlab::sim::{simulate, Scenario};
+use pidlab::analysis::simulate;
+use pidlab::sim::Scenario;
 use serde_json::json;
 use wasm_bindgen_test::wasm_bindgen_test;
 

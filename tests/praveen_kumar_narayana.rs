@@ -5,7 +5,8 @@ use pidlab::model::plant::Family;
 use pidlab::model::poly::Poly;
 use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::analysis::simulate;
+use pidlab::sim::Scenario;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 fn plant_of(p: &IpdtIr) -> pidlab::model::plant::Plant {

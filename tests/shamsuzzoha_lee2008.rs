@@ -10,7 +10,8 @@ use pidlab::rules::shamsuzzoha_lee2008::{
     design, design_model, imc_pid, setpoint_filter, studies, weighting_filter, ImcModel,
 };
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::analysis::simulate;
+use pidlab::sim::Scenario;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 /// Half a unit of the last printed digit: the printed value is our value rounded.

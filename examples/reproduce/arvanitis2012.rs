@@ -201,7 +201,7 @@ fn write_figures(responses: &[Response]) -> Vec<String> {
         return written;
     }
     for fig in FIGURES {
-        let cols: Vec<(&str, &pidlab::sim::SimResult)> = fig
+        let cols: Vec<(&str, &pidlab::analysis::SimResult)> = fig
             .curves
             .iter()
             .filter_map(|k| {

@@ -9,7 +9,8 @@ use pidlab::rules::kaya2020::{
     self, comparisons, example_ipd, normalized_settings, reduce_to_fopdt_ir_with, scenario_of,
     settings, Criterion, Reduction, EX1, EX1_PERTURBED, EX2_MODEL, EX3_MODEL, TABLE_I,
 };
-use pidlab::sim::{simulate, Scenario, SimResult};
+use pidlab::analysis::{simulate, SimResult};
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 /// A simulation and its Ms cell, or the error.

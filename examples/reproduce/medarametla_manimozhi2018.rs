@@ -6,7 +6,8 @@ use pidlab::model::controller::Controller;
 use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::medarametla_manimozhi2018 as mm;
 use pidlab::rules::medarametla_manimozhi2018::cstr::{self, CstrParams, CstrScenario};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::analysis::simulate;
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 fn f4(x: f64) -> String {

@@ -6,7 +6,8 @@ use pidlab::model::controller::Controller;
 use pidlab::model::plant::Plant;
 use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::analysis::simulate;
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 fn num(m: &serde_json::Map<String, serde_json::Value>, k: &str) -> f64 {

@@ -10,7 +10,8 @@ use pidlab::rules::shamsuzzoha_lee2008 as ssl;
 use pidlab::rules::shamsuzzoha_lee2008::{
     design, imc_pid, lambda_for_ms, studies, weighting_filter, ImcModel, DIP_ALPHA,
 };
-use pidlab::sim::{simulate, Scenario};
+use pidlab::analysis::simulate;
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 struct Perf {

@@ -8,7 +8,8 @@ use crate::error::{Error, Result};
 use crate::model::controller::Pid;
 use crate::model::plant::Family;
 use crate::numerics::golden_min;
-use crate::sim::{simulate, Scenario};
+use crate::analysis::simulate;
+use crate::sim::Scenario;
 
 // ---------------------------------------------------------------------------------------------
 // Section 4: Method I (maximum phase margin), Algorithms I-III
