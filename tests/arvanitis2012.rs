@@ -7,8 +7,7 @@ use pidlab::analysis::freq::analyze;
 use pidlab::model::controller::Pid;
 use pidlab::model::plant::Family;
 use pidlab::rules::arvanitis2012::*;
-use pidlab::rules::{self, Params};
-use serde_json::Value;
+use pidlab::rules::{self, Design, Params};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 fn boiler() -> Process {
@@ -16,14 +15,26 @@ fn boiler() -> Process {
 }
 
 fn gains(t: &rules::Tuning) -> (f64, f64, f64) {
-    let g = |n: &str| pidlab::api::tuning_json(&t)["named"][n].as_f64().unwrap();
+    let g = |n: &str| t.named(n).unwrap();
     (g("kp"), g("ki"), g("kd"))
 }
 
+fn details(t: &rules::Tuning) -> &Details {
+    Details::of(t).unwrap()
+}
+
 fn printed(t: &rules::Tuning) -> (f64, f64, f64) {
-    let pc = &pidlab::api::tuning_json(&t)["details"]["printed_convention"];
-    let g = |n: &str| pc[n].as_f64().unwrap();
-    (g("kp"), g("ki"), g("kd"))
+    let pc = details(t).printed_convention();
+    (pc.kp, pc.ki, pc.kd)
+}
+
+/// (θ, β) of a Method II tuning by β.
+fn theta_beta(t: &rules::Tuning) -> (f64, f64) {
+    let m = details(t).method_ii().unwrap();
+    match &m.by {
+        MethodIIBy::Beta(b) => (m.theta, b.beta),
+        other => panic!("not a β tuning: {other:?}"),
+    }
 }
 
 fn tune(id: &str, params: Params) -> pidlab::Result<rules::Tuning> {
@@ -103,13 +114,9 @@ fn section6_printed_settings() {
             .with("td_source", "table"),
     )
     .unwrap();
-    let w = pidlab::api::tuning_json(&t)["details"]["warnings"]
-        .as_array()
-        .unwrap()
-        .clone();
+    let w = &details(&t).warnings;
     assert!(
-        w.iter()
-            .any(|x| x.as_str().unwrap().contains("misses its printed M.N.E.")),
+        w.iter().any(|x| x.contains("misses its printed M.N.E.")),
         "{w:?}"
     );
     // Algorithm I consistent gains (1.9849, 0.6029, 1.4976): half a unit of the 4th decimal.
@@ -169,17 +176,10 @@ fn method2_beta() {
     let w34 = wu_eq34(d, tz);
     assert!((w34 - wu).abs() / wu < 0.05 && w34 != wu);
     let t = tune("arvanitis_m2_beta", Params::default()).unwrap();
-    let beta = pidlab::api::tuning_json(&t)["details"]["beta"]
-        .as_f64()
-        .unwrap();
-    let theta = pidlab::api::tuning_json(&t)["details"]["theta"]
-        .as_f64()
-        .unwrap();
+    let (theta, beta) = theta_beta(&t);
     assert!((theta - 2.0 * std::f64::consts::PI / (w34 * beta)).abs() < 1e-12);
     let t2 = tune("arvanitis_m2_beta", Params::default().with("wu", "exact")).unwrap();
-    let theta2 = pidlab::api::tuning_json(&t2)["details"]["theta"]
-        .as_f64()
-        .unwrap();
+    let theta2 = theta_beta(&t2).0;
     assert!((theta2 - 2.0 * std::f64::consts::PI / (wu * beta)).abs() < 1e-12);
     // The β Table 8 approximates, computed by simulation: within the box's printed M.N.E.
     // (4.26 %) of the fit at the boiler point, and what beta_source = "optimize" uses.
@@ -194,14 +194,7 @@ fn method2_beta() {
         Params::default().with("beta_source", "optimize"),
     )
     .unwrap();
-    assert!(
-        (pidlab::api::tuning_json(&t3)["details"]["beta"]
-            .as_f64()
-            .unwrap()
-            - b_opt)
-            .abs()
-            < 1e-12
-    );
+    assert!((theta_beta(&t3).1 - b_opt).abs() < 1e-12);
     // Table 8 (ISENSCOD-L, d < 1) at the boiler point, computed by hand from the printed row
     let (b, w) = table8("isenscod", tz, d);
     assert!((b - 1.7820).abs() < 5e-4 && w.is_empty(), "{b}");
@@ -486,14 +479,8 @@ fn errors_name_the_field() {
         &Params::default().with("td_source", "table"),
     )
     .unwrap();
-    let w = pidlab::api::tuning_json(&t)["details"]["warnings"]
-        .as_array()
-        .unwrap()
-        .clone();
-    assert!(
-        w.iter().any(|x| x.as_str().unwrap().contains("Table 3")),
-        "{w:?}"
-    );
+    let w = &details(&t).warnings;
+    assert!(w.iter().any(|x| x.contains("Table 3")), "{w:?}");
 }
 
 /// Tables 2-6 against the exact computation on the 7 × 7 grid over their printed ranges: the
@@ -516,12 +503,12 @@ fn tables_2_to_6_against_exact() {
             f.range,
             f.measured_mne
         );
-        assert_eq!(f.offered, m <= f.printed_mne + 0.001);
+        assert_eq!(f.offered(), m <= f.printed_mne + 0.001);
     }
     let offered: Vec<bool> = fits()
         .iter()
         .filter(|f| f.table <= 3)
-        .map(|f| f.offered)
+        .map(|f| f.offered())
         .collect();
     assert_eq!(offered, [false, true, false, false]);
     // Table 4's ζ = 0.6 τ_I goes negative inside its range (ERRATA)
@@ -529,7 +516,7 @@ fn tables_2_to_6_against_exact() {
         .into_iter()
         .find(|f| f.table == 4 && f.zeta == 0.6 && f.quantity == FitQuantity::Ti)
         .unwrap();
-    assert!((t4.f)(0.5, 0.2) < 0.0 && !t4.offered);
+    assert!((t4.f)(0.5, 0.2) < 0.0 && !t4.offered());
 }
 
 /// methods() and presets(): ids and params as API.md; every rule preset tunes.
@@ -562,7 +549,7 @@ fn methods_and_presets() {
     assert_eq!(names("arvanitis_m2_xi"), ["xi"]);
     assert_eq!(names("arvanitis_m2_theta"), ["theta_design"]);
     assert!(ms.iter().all(|m| m.families == ["ipdt_ir"]));
-    let ps = legacy_presets();
+    let ps = boiler_presets();
     for id in [
         "luyben2003",
         "shamsuzzoha_lee2006",
@@ -577,13 +564,10 @@ fn methods_and_presets() {
             "{id}"
         );
     }
-    for p in ps
-        .iter()
-        .filter(|p| p.tune != Value::Null && p.id != "arvanitis2012/boiler/alg3")
-    {
-        let m = p.tune["method"].as_str().unwrap();
-        let prm = pidlab::api::params_from_json(&p.tune["params"]).unwrap();
-        assert!(tune(m, prm).is_ok(), "{}", p.id);
+    for p in ps.iter().filter(|p| p.id != "arvanitis2012/boiler/alg3") {
+        if let Design::Rule { method, params } = &p.design {
+            assert!(tune(method, params.clone()).is_ok(), "{}", p.id);
+        }
     }
 }
 
@@ -640,17 +624,18 @@ fn extreme_plants_never_panic() {
 /// Through the JSON API: a preset's rule call tunes, and its controller simulates its scenario.
 #[wasm_bindgen_test(unsupported = test)]
 fn json_api_round_trip() {
-    let ps = legacy_presets();
+    let all = pidlab::api::presets();
+    let ps = all["presets"].as_array().unwrap();
     for id in ["alg2", "m2_xi", "gu2006"] {
         let p = ps
             .iter()
-            .find(|p| p.id == format!("arvanitis2012/boiler/{id}"))
+            .find(|p| p["id"] == format!("arvanitis2012/boiler/{id}").as_str())
             .unwrap();
-        let controller = if p.tune.is_null() {
-            p.controller.clone()
+        let controller = if p["tune"].is_null() {
+            p["controller"].clone()
         } else {
             let out = pidlab::api::tune(&serde_json::json!({
-                "method": p.tune["method"], "plant": p.plant, "params": p.tune["params"]
+                "method": p["tune"]["method"], "plant": p["plant"], "params": p["tune"]["params"]
             }))
             .unwrap();
             assert!(out["controller"]["kp"].as_f64().unwrap() > 0.0);
@@ -658,7 +643,7 @@ fn json_api_round_trip() {
             out["controller"].clone()
         };
         let sim = pidlab::api::simulate(&serde_json::json!({
-            "plant": p.plant, "controller": controller, "scenario": p.scenario
+            "plant": p["plant"], "controller": controller, "scenario": p["scenario"]
         }))
         .unwrap();
         let reg = &sim["metrics"]["regulatory"];

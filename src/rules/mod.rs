@@ -110,6 +110,8 @@ impl Tuning {
 #[derive(Debug, Clone, Serialize)]
 #[serde(untagged)]
 pub enum Details {
+    /// Arvanitis et al. (2012).
+    Arvanitis2012(arvanitis2012::Details),
     /// A paper not yet moved to typed details (transitional).
     Legacy(Map<String, Value>),
 }

@@ -1,0 +1,423 @@
+//! Section 4 of Arvanitis et al. (2012): Method I (maximum phase margin), Algorithms I-III.
+
+use super::{
+    table3, tau_d_gm_max, tau_d_gm_max_near, tau_d_max_gm_ip, IpdLoop, Process, MAX_INNER,
+    MAX_OUTER, TOL,
+};
+use crate::analysis::simulate;
+use crate::error::{Error, Result};
+use crate::model::controller::Pid;
+use crate::model::plant::Family;
+use crate::numerics::golden_min;
+use crate::sim::Scenario;
+
+// ---------------------------------------------------------------------------------------------
+// Section 4: Method I (maximum phase margin), Algorithms I-III
+// ---------------------------------------------------------------------------------------------
+
+/// Left side of Eq. (20) at τ_I divided by max(1, τ_I²) (its leading term), i.e. its residual
+/// relative to the equation's scale.
+pub fn eq20_residual(d: f64, tz: f64, td: f64, kc: f64, zeta: f64, ti: f64) -> f64 {
+    let a = td - tz - d - 1.0;
+    let c = (d + tz + 1.0) * (1.0 - td) + d * (tz + 0.5 * d);
+    let z2 = 4.0 * zeta * zeta;
+    (ti * ti + ti * (2.0 * a - z2 * (1.0 / kc + a)) + a * a - z2 * c) / (ti * ti).max(1.0)
+}
+
+/// τ_I as the largest real root of Eq. (20),
+/// `τ_I² + τ_I[2a − 4ζ²(K_C⁻¹ + a)] + a² − 4ζ²[(d+τ_Z+1)(1−τ_D) + d(τ_Z + d/2)] = 0`,
+/// `a = τ_D − τ_Z − d − 1`. Errors (naming `params.zeta`) when it has no real root.
+pub fn eq20_root(d: f64, tz: f64, td: f64, kc: f64, zeta: f64) -> Result<f64> {
+    let a = td - tz - d - 1.0;
+    let c = (d + tz + 1.0) * (1.0 - td) + d * (tz + 0.5 * d);
+    let z2 = 4.0 * zeta * zeta;
+    let b = 2.0 * a - z2 * (1.0 / kc + a);
+    let c0 = a * a - z2 * c;
+    let disc = b * b - 4.0 * c0;
+    if disc.is_nan() || disc < 0.0 {
+        return Err(Error::new(
+            "params.zeta",
+            format!(
+                "Eq. (20) has no real root for ζ = {zeta} at K_C = {kc:.6}, τ_D = {td:.6} (discriminant {disc:.3e} < 0): no I-PD setting with this damping"
+            ),
+        ));
+    }
+    let sq = disc.sqrt();
+    // largest root, computed without cancellation
+    let r = if b <= 0.0 {
+        0.5 * (-b + sq)
+    } else {
+        2.0 * c0 / (-b - sq)
+    };
+    Ok(r)
+}
+
+/// A Method I solution (normalized), with what produced it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MethodISolution {
+    /// K_C of Eq. (11).
+    pub kc: f64,
+    /// τ_I, largest root of Eq. (20).
+    pub ti: f64,
+    /// τ_D.
+    pub td: f64,
+    /// w_P, largest root of Eq. (10).
+    pub w_p: f64,
+    /// PM_max of Eq. (12) (rad).
+    pub pm_max: f64,
+    /// Fixed-point iterations of Steps 3-4 (all outer passes together).
+    pub iterations: usize,
+    /// Outer iterations (Algorithms II and III; 1 for Algorithm I).
+    pub outer_iterations: usize,
+    /// Initial τ_I.
+    pub ti_init: f64,
+    /// Initial τ_D.
+    pub td_init: f64,
+}
+
+/// Steps 3-5 of Algorithm I (Steps 2-4 of II and III): at fixed τ_D, iterate
+/// K_C ← Eq. (11) at w_P of Eq. (10), τ_I ← largest root of Eq. (20), until τ_I settles.
+/// Returns (K_C, τ_I, w_P, PM_max, iterations).
+pub fn fixed_point(
+    d: f64,
+    tz: f64,
+    td: f64,
+    zeta: f64,
+    ti_init: f64,
+) -> Result<(f64, f64, f64, f64, usize)> {
+    let ti_min = d + tz + 1.0 - td;
+    let mut x = ti_init;
+    if !(x > ti_min && x > 0.0) {
+        x = ti_min.max(0.0) * 1.2 + 1e-3;
+    }
+    let mut evals = 0usize;
+    // One pass of Steps 3-4: K_C from Eqs. (10)-(11) at τ_I, then the largest root of Eq. (20).
+    let g = |ti: f64, evals: &mut usize| -> Result<f64> {
+        *evals += 1;
+        let pk = IpdLoop::new(d, tz, ti, td).phase_peak()?;
+        let t = eq20_root(d, tz, td, pk.kc, zeta)?;
+        if !(t > ti_min && t > 0.0) {
+            return Err(Error::new(
+                "params.zeta",
+                format!(
+                    "Eq. (20) gives τ_I = {t:.6} ≤ τ_I,min = {ti_min:.6}: no stabilizing I-PD setting for ζ = {zeta} (τ_D = {td:.6})"
+                ),
+            ));
+        }
+        Ok(t)
+    };
+    let close = |a: f64, b: f64| (a - b).abs() <= TOL * a.abs().max(1.0);
+    // The paper's plain iteration, accelerated by Steffensen's Δ² (same fixed point; the
+    // accelerated iterate is used only when it stays admissible).
+    let mut fallback: Option<f64> = None;
+    while evals < MAX_INNER {
+        let x1 = match g(x, &mut evals) {
+            Ok(v) => v,
+            Err(e) => match fallback.take() {
+                Some(fb) => {
+                    x = fb;
+                    continue;
+                }
+                None => return Err(e),
+            },
+        };
+        let converged = if close(x1, x) {
+            Some(x1)
+        } else {
+            let x2 = g(x1, &mut evals)?;
+            if close(x2, x1) {
+                Some(x2)
+            } else {
+                let den = x2 - 2.0 * x1 + x;
+                let xa = if den != 0.0 {
+                    x - (x1 - x) * (x1 - x) / den
+                } else {
+                    x2
+                };
+                if xa.is_finite()
+                    && xa > ti_min
+                    && xa > 0.0
+                    && (xa - x2).abs() < 100.0 * (x2 - x1).abs() + 1e-12
+                {
+                    fallback = Some(x2);
+                    x = xa;
+                } else {
+                    fallback = None;
+                    x = x2;
+                }
+                None
+            }
+        };
+        if let Some(t) = converged {
+            // final pass so that Eqs. (10), (11), (20) hold together at the returned point
+            let ti_f = g(t, &mut evals)?;
+            let pk = IpdLoop::new(d, tz, ti_f, td).phase_peak()?;
+            return Ok((pk.kc, ti_f, pk.w_p, pk.pm_max, evals));
+        }
+    }
+    Err(Error::new(
+        "params.zeta",
+        format!("Steps 3-5 did not converge in {MAX_INNER} iterations (ζ = {zeta}, τ_D = {td:.6})"),
+    ))
+}
+
+/// Where Algorithm I takes min τ_D,maxGM,I-P from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TdSource {
+    /// The exact limit (PD vs P ultimate gains).
+    Exact,
+    /// Table 3's fit.
+    Table,
+}
+
+/// Algorithm I: τ_D = factor × min τ_D,maxGM,I-P (exact or Table 3), τ_I,init = 1.2 τ_I,min,
+/// then the fixed point of Eqs. (10), (11), (20). Returns the solution and warnings.
+pub fn algorithm1(
+    d: f64,
+    tz: f64,
+    zeta: f64,
+    td_factor: f64,
+    source: TdSource,
+) -> Result<(MethodISolution, Vec<String>)> {
+    let mut warnings = vec![];
+    let base = match source {
+        TdSource::Exact => tau_d_max_gm_ip(d, tz, f64::INFINITY)?,
+        TdSource::Table => {
+            let (v, w) = table3(tz, d);
+            warnings.extend(w);
+            v
+        }
+    };
+    let td = td_factor * base;
+    // Step 2: τ_I,init = 1.2 τ_I,min
+    let ti_init = 1.2 * (d + tz + 1.0 - td);
+    let (kc, ti, w_p, pm_max, it) = fixed_point(d, tz, td, zeta, ti_init)?;
+    Ok((
+        MethodISolution {
+            kc,
+            ti,
+            td,
+            w_p,
+            pm_max,
+            iterations: it,
+            outer_iterations: 1,
+            ti_init,
+            td_init: td,
+        },
+        warnings,
+    ))
+}
+
+/// Algorithm II: τ_D,init = min τ_D,GMmax (Eq. 21; exact unless given), τ_I,init = 1.2 τ_I,min
+/// (Eq. 22), inner fixed point, then τ_D ← 2 τ_D,GMmax(τ_I) until τ_D settles.
+pub fn algorithm2(d: f64, tz: f64, zeta: f64, init: Option<(f64, f64)>) -> Result<MethodISolution> {
+    let (td0, ti0) = match init {
+        Some(p) => p,
+        None => {
+            let td0 = tau_d_gm_max(d, tz, f64::INFINITY)?; // Eq. (21)
+            (td0, 1.2 * (d + tz + 1.0 - td0)) // Eq. (22)
+        }
+    };
+    let mut total = 0usize;
+    let mut outer = 0usize;
+    let mut ti_warm = ti0;
+    // Steps 2-5 as a map τ_D ↦ 2 τ_D,GMmax(τ_I(τ_D)), τ_I(τ_D) the fixed point of Steps 2-4.
+    let t = |td: f64, ti_warm: &mut f64, total: &mut usize, outer: &mut usize| -> Result<f64> {
+        *outer += 1;
+        let (_, ti, _, _, it) = fixed_point(d, tz, td, zeta, *ti_warm)?;
+        *total += it;
+        *ti_warm = ti;
+        Ok(2.0 * tau_d_gm_max_near(d, tz, ti, Some(0.5 * td))?) // Step 5
+    };
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(1.0);
+    let mut x = td0;
+    while outer < MAX_OUTER {
+        let x1 = t(x, &mut ti_warm, &mut total, &mut outer)?;
+        let mut done = close(x1, x).then_some(x1);
+        if done.is_none() {
+            let x2 = t(x1, &mut ti_warm, &mut total, &mut outer)?;
+            if close(x2, x1) {
+                done = Some(x2);
+            } else {
+                let den = x2 - 2.0 * x1 + x;
+                let xa = if den != 0.0 {
+                    x - (x1 - x) * (x1 - x) / den
+                } else {
+                    x2
+                };
+                x = if xa.is_finite() && xa > 0.0 && (xa - x2).abs() < 100.0 * (x2 - x1).abs() {
+                    xa
+                } else {
+                    x2
+                };
+            }
+        }
+        if let Some(td) = done {
+            let (kc, ti, w_p, pm_max, it) = fixed_point(d, tz, td, zeta, ti_warm)?;
+            total += it;
+            return Ok(MethodISolution {
+                kc,
+                ti,
+                td,
+                w_p,
+                pm_max,
+                iterations: total,
+                outer_iterations: outer,
+                ti_init: ti0,
+                td_init: td0,
+            });
+        }
+    }
+    Err(Error::new(
+        "params.zeta",
+        format!("Algorithm II did not converge in {MAX_OUTER} outer iterations (ζ = {zeta})"),
+    ))
+}
+
+/// Eq. (13) or (14) of a unit load step at the plant input (t = 0, no set-point change),
+/// simulated exactly (`pidlab::sim`) on the process in its own units with the physically
+/// consistent I-PD gains; K = K̄, τ_P = τ̄_P weight the control terms. `f64::INFINITY` when
+/// the loop diverges. ISENSDCO (14) is infinite whenever u jumps (an ideal derivative on a
+/// plant of relative degree one, i.e. τ̄_Z > 0): that is an error naming `params.criterion`.
+pub fn load_criterion(
+    p: &Process,
+    kp: f64,
+    ki: f64,
+    kd: f64,
+    criterion: &str,
+    t_end: f64,
+) -> Result<f64> {
+    let plant = Family::IpdtIr {
+        k: p.k,
+        tau: p.tau_p,
+        tau_z: p.tau_z,
+        theta: p.theta,
+    }
+    .plant();
+    let c = Pid::ipd(kp, ki, kd).to_controller()?;
+    let dt = (t_end / 1500.0).max(p.theta / 4.0).min(t_end / 200.0);
+    let sc = Scenario::steps(t_end, dt, 0.0, 0.0, 0.0, 1.0);
+    let res = simulate(&plant, &c, &sc)?;
+    if res.diverged {
+        return Ok(f64::INFINITY);
+    }
+    let j = super::criteria::regulatory(&res, p.k, p.tau_p, criterion)
+        .ok_or_else(|| Error::new("params.criterion", "no regulatory window in the simulation"))?;
+    match j {
+        Some(v) if v.is_finite() => Ok(v),
+        Some(_) => Ok(f64::INFINITY),
+        None => Err(Error::new(
+            "params.criterion",
+            "ISENSDCO (Eq. 14) is infinite here: the control signal jumps after a load step (ideal derivative on a plant of relative degree one, τ̄_Z > 0); use 'isenscod'",
+        )),
+    }
+}
+
+/// What Algorithm III returns beside the solution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Alg3Info {
+    /// Criterion value at the solution.
+    pub j: f64,
+    /// Number of simulations run.
+    pub simulations: usize,
+}
+
+/// Algorithm III: start from (τ_D,init, τ_I,init) (Eqs. 21-22 exact unless given), Steps 2-4
+/// (fixed point of Eqs. 10, 11, 20), then Step 5: at that τ_I, τ_D minimizing criterion (13)
+/// or (14) of a unit load step (K_C following Eq. 11 for each trial τ_D), by golden-section
+/// search (a coarse scan brackets the minimum first); repeat until τ_D settles (relative
+/// 1e-5, at most 40 outer passes).
+pub fn algorithm3(
+    p: &Process,
+    zeta: f64,
+    criterion: &str,
+    init: Option<(f64, f64)>,
+) -> Result<(MethodISolution, Alg3Info)> {
+    let (d, tz) = (p.d(), p.tz());
+    let (td0, ti0) = match init {
+        Some(x) => x,
+        None => {
+            let td0 = tau_d_gm_max(d, tz, f64::INFINITY)?;
+            (td0, 1.2 * (d + tz + 1.0 - td0))
+        }
+    };
+    let mut sims = 0usize;
+    let mut total = 0usize;
+    let mut td = td0;
+    let mut ti = ti0;
+    let mut bracket: Option<(f64, f64)> = None;
+    for outer in 1..=40 {
+        let (_, ti_n, _, _, it) = fixed_point(d, tz, td, zeta, ti)?;
+        total += it;
+        ti = ti_n;
+        let t_end = p.tau_p * (60.0 + 20.0 * ti);
+        let lo = (d + tz + 1.0 - ti).max(0.0) * (1.0 + 1e-6) + 1e-6;
+        let hi = (3.0 * (d + tz + 1.0)).max(2.0 * td).max(lo + 1.0);
+        let mut j_of = |x: f64| -> Result<f64> {
+            sims += 1;
+            let pk = match IpdLoop::new(d, tz, ti, x).phase_peak() {
+                Ok(v) => v,
+                Err(_) => return Ok(f64::INFINITY),
+            };
+            let (kp, ki, kd) = p.ipd_from_series(pk.kc, ti, x);
+            load_criterion(p, kp, ki, kd, criterion, t_end)
+        };
+        let (a, b) = match bracket {
+            Some(br) => br,
+            None => {
+                // coarse scan
+                let n = 12;
+                let xs: Vec<f64> = (0..=n)
+                    .map(|i| lo + (hi - lo) * i as f64 / n as f64)
+                    .collect();
+                let mut js = vec![];
+                for &x in &xs {
+                    js.push(j_of(x)?);
+                }
+                let (ib, _) = js
+                    .iter()
+                    .enumerate()
+                    .min_by(|x, y| x.1.total_cmp(y.1))
+                    .unwrap_or((0, &0.0));
+                (xs[ib.saturating_sub(1)], xs[(ib + 1).min(n)])
+            }
+        };
+        let (x, _j, _) = golden_min(&mut j_of, a, b, 1e-7 * b.max(1.0), 200)?;
+        let at_edge = (x - a).abs() < 1e-5 * (b - a) || (b - x).abs() < 1e-5 * (b - a);
+        let step = x - td;
+        td = x;
+        bracket = if at_edge {
+            None
+        } else {
+            Some(((x - 0.15 * x.max(0.1)).max(lo), x + 0.15 * x.max(0.1)))
+        };
+        if step.abs() <= 1e-5 * td.max(1.0) && !at_edge {
+            let (kc, ti_f, w_p, pm_max, it) = fixed_point(d, tz, td, zeta, ti)?;
+            total += it;
+            let (kp, ki, kd) = p.ipd_from_series(kc, ti_f, td);
+            let j = load_criterion(p, kp, ki, kd, criterion, p.tau_p * (60.0 + 20.0 * ti_f))?;
+            sims += 1;
+            return Ok((
+                MethodISolution {
+                    kc,
+                    ti: ti_f,
+                    td,
+                    w_p,
+                    pm_max,
+                    iterations: total,
+                    outer_iterations: outer,
+                    ti_init: ti0,
+                    td_init: td0,
+                },
+                Alg3Info {
+                    j,
+                    simulations: sims,
+                },
+            ));
+        }
+    }
+    Err(Error::new(
+        "params.zeta",
+        format!("Algorithm III did not converge in 40 outer iterations (ζ = {zeta})"),
+    ))
+}
