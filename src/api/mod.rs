@@ -7,7 +7,7 @@ use crate::analysis::freq::{analyze as analyze_loop, Analysis};
 use crate::analysis::metrics::Metrics;
 use crate::error::{Error, Result};
 use crate::model::controller::{Controller, ModelLoop};
-use crate::model::plant::{Family, Plant};
+use crate::model::plant::{family_infos, Family, Plant};
 use crate::model::poly::Poly;
 use crate::model::tf::Tf;
 use crate::rules::{self, Params};
@@ -309,9 +309,13 @@ pub fn analysis_json(a: &Analysis) -> Value {
     })
 }
 
-/// `methods()` of API.md.
+/// `methods()` of API.md, with the plant families (`families`: id, title, formula,
+/// integrators and the page's parameter declarations, see [`family_infos`]).
 pub fn methods() -> Value {
-    json!({ "methods": rules::methods().iter().map(|m| serde_json::to_value(m).unwrap_or(Value::Null)).collect::<Vec<_>>() })
+    json!({
+        "methods": rules::methods().iter().map(|m| serde_json::to_value(m).unwrap_or(Value::Null)).collect::<Vec<_>>(),
+        "families": serde_json::to_value(family_infos()).unwrap_or(Value::Null),
+    })
 }
 
 /// Every paper preset: `{ presets: [...] }`.
