@@ -1,5 +1,5 @@
 // The declarations methods() gives the page (it builds its controls from them, with no table of
-// its own): the plant families under `families`.
+// its own): the plant families under `families`, and each method parameter's `required` flag.
 // Checked against what tune/simulate/analyze accept, on the wasm-pack nodejs build.
 import test from 'node:test';
 import assert from 'node:assert/strict';
@@ -62,4 +62,55 @@ test('the family a preset uses is declared with exactly the parameters the prese
     }
   }
   assert.ok(n > 0, 'some preset uses a family plant');
+});
+
+test("a parameter's `required` flag says whether the rule refuses to tune without it", (t) => {
+  // From every preset that tunes: leave out, one at a time, each parameter without a default.
+  // `required`: the rule refuses and names it; otherwise the rule chooses it (or fails for
+  // another reason, never naming the omitted parameter as missing).
+  const seen = { required: new Set(), chosen: new Set() };
+  for (const pr of presetList()) {
+    if (!pr.tune || !pr.tune.method || !pr.tune.params) continue;
+    const m = methods.find((x) => x.id === pr.tune.method);
+    assert.ok(m, `${pr.id}: method ${pr.tune.method} listed`);
+    const plant = pr.tune.plant || pr.plant;
+    for (const p of m.params) {
+      assert.equal(typeof p.required, 'boolean', `${m.id}.${p.name}.required is declared`);
+      if (p.default !== null || !(p.name in pr.tune.params)) continue;
+      const params = { ...pr.tune.params };
+      delete params[p.name];
+      let msg = null;
+      try {
+        pidlab.tune({ method: m.id, plant, params });
+      } catch (e) {
+        msg = e.message;
+      }
+      const refused = msg !== null && msg.startsWith(`params.${p.name}`);
+      assert.equal(refused, p.required, `${pr.id}: tune without ${p.name} ${refused ? 'refused' : 'accepted'}: ${msg}`);
+      seen[p.required ? 'required' : 'chosen'].add(`${m.id}.${p.name}`);
+    }
+  }
+  // The parameters no preset gives: on the method's first family at its declared defaults, with
+  // λ solved for Ms 1.6 where the method offers that (λ is what the other parameters need).
+  for (const m of methods) {
+    const f = families.find((x) => x.id === m.families.find((id) => id !== 'custom'));
+    if (!f) continue;
+    const hasTarget = m.params.some((p) => p.name === 'target_ms');
+    for (const p of m.params) {
+      const key = `${m.id}.${p.name}`;
+      if (p.default !== null || seen.required.has(key) || seen.chosen.has(key)) continue;
+      const params = hasTarget && p.name !== 'lambda' && p.name !== 'target_ms' ? { target_ms: 1.6 } : {};
+      let msg = null;
+      try {
+        pidlab.tune({ method: m.id, plant: defaults(f), params });
+      } catch (e) {
+        msg = e.message;
+      }
+      const refused = msg !== null && msg.startsWith(`params.${p.name}`);
+      assert.equal(refused, p.required, `${key} on ${f.id} at its defaults: tune without it ${refused ? 'refused' : 'accepted'}: ${msg}`);
+      seen[p.required ? 'required' : 'chosen'].add(key);
+    }
+  }
+  assert.ok(seen.required.size > 0, 'some preset gives a required parameter');
+  t.diagnostic(`required: ${[...seen.required].join(', ')}; chosen by the rule: ${[...seen.chosen].join(', ') || 'none given by a preset'}`);
 });
