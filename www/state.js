@@ -1,5 +1,6 @@
-// Page state <-> URL hash, plant families, number formatting. Pure functions only (no DOM),
-// so the browser test can check them in the page context.
+// Page state (its defaults and the validation of untrusted state), plant helpers, number
+// formatting. Pure functions only (no DOM), so the browser test can check them in the page
+// context. url.js writes and reads the state in the URL hash.
 
 /** Plant families of API.md with their parameters (names fixed by the API). */
 export const FAMILIES = {
@@ -171,30 +172,6 @@ export function cleanState(raw) {
   return s;
 }
 
-/** Encodes the state as a URL hash (`#s=<json>`, optionally with `embed=1`). */
-export function encodeHash(state, embed = false) {
-  const s = { ...state };
-  if (!s.show || s.show.length === 0) delete s.show;
-  if (!s.pins || s.pins.length === 0) delete s.pins;
-  const q = new URLSearchParams();
-  if (embed) q.set('embed', '1');
-  q.set('s', JSON.stringify(s));
-  return '#' + q.toString();
-}
-
-/** Decodes a URL hash; returns { state, embed } (state null when absent or unreadable). */
-export function decodeHash(hash) {
-  const q = new URLSearchParams(String(hash || '').replace(/^#/, ''));
-  const embed = q.get('embed') === '1';
-  const raw = q.get('s');
-  if (!raw) return { state: null, embed };
-  try {
-    return { state: cleanState(JSON.parse(raw)), embed };
-  } catch {
-    return { state: null, embed };
-  }
-}
-
 /** Number for a readout: 4 significant digits, no exponent for ordinary magnitudes. */
 export function fmt(x, digits = 4) {
   if (x === null || x === undefined) return '–';
@@ -244,6 +221,11 @@ export function familyTf(p) {
     case 'ifoptd_zero_unstable': return { num: [k * p.z, k], den: [tau, -1, 0], delay: theta };
     default: return null;
   }
+}
+
+/** A plant as { num, den, delay } (a family plant through familyTf). */
+export function plantTf(p) {
+  return p.family ? familyTf(p) : p;
 }
 
 /** The true plant: the model with its gain, time constant, zero and dead time scaled by (1 + %/100). */
@@ -303,3 +285,17 @@ export function nyquistCurve(plantTf, cy, n = 800) {
   }
   return { re, im };
 }
+
+/** L(jω) samples: from analyze() when it provides them, else evaluated here from Cy and P. */
+export function loopCurve(an, plant, ctl) {
+  if (an && an.nyquist && Array.isArray(an.nyquist.re) && Array.isArray(an.nyquist.im)) return { re: an.nyquist.re, im: an.nyquist.im };
+  return nyquistCurve(plantTf(plant), ctl.cy);
+}
+
+// Display symbols of the named structure parameters (the papers' notation); unknown names
+// are shown as given.
+export const SYMBOLS = {
+  kc: 'K_c', ti: 'τ_I', td: 'τ_D', kp: 'K_P', ki: 'K_I', kd: 'K_D', n: 'N', b: 'b', c: 'c',
+  a1: 'a₁', a2: 'a₂', b1: 'b₁', b2: 'b₂', p: 'p', gamma: 'γ', epsilon: 'ε', lambda: 'λ', zeta: 'ζ',
+  xi: 'ξ', alpha: 'α', beta: 'β', phi: 'φ', theta_design: 'θ (design)', tf: 'T_f', tau_f: 'τ_f',
+};
