@@ -111,7 +111,10 @@ async function main() {
     return;
   }
   try {
-    store.methods = E.call('methods').methods || [];
+    const m = E.call('methods');
+    store.methods = m.methods || [];
+    store.families = m.families || [];
+    S.setFamilies(store.families);
     const pr = E.call('presets');
     store.presets = Array.isArray(pr) ? pr : (pr && pr.presets) || [];
   } catch (e) {

@@ -3,8 +3,8 @@
 // store and calls changed(); a change the other panels must show calls rebuild().
 import * as S from './state.js';
 import * as E from './engine.js';
-import { $, el, errText } from './dom.js';
-import { store, changed, rebuild, methodInfo, methodParams } from './store.js';
+import { $, el } from './dom.js';
+import { store, changed, rebuild, familyInfo, methodInfo } from './store.js';
 
 const ids = { next: 0 };
 
@@ -65,7 +65,7 @@ export function buildFamily() {
   const { state } = store;
   const fam = $('family');
   if (fam.options.length === 0) {
-    for (const [id, f] of Object.entries(S.FAMILIES)) fam.append(el('option', { value: id, text: f.title }));
+    for (const f of store.families) fam.append(el('option', { value: f.id, text: f.title }));
     fam.append(el('option', { value: 'custom', text: 'Custom transfer function num/den' }));
     fam.addEventListener('change', () => setFamily(fam.value));
   }
@@ -75,13 +75,13 @@ export function buildFamily() {
   box.replaceChildren();
   $('custom-box').hidden = !!p.family;
   if (p.family) {
-    const f = S.FAMILIES[p.family];
+    // The sliders the module declares for the family (name, label, unit, range).
+    const f = familyInfo(p.family);
     $('family-formula').textContent = f.formula;
-    for (const n of f.params) {
-      const m = S.FAMILY_PARAMS[n];
+    for (const m of f.params) {
+      const n = m.name;
       box.append(slider({
-        id: 'fp-' + n, key: 'fp-' + n, label: m.label, unit: n === 'k' ? S.gainUnit(p.family) : m.unit,
-        min: m.min, max: m.max, value: p[n],
+        id: 'fp-' + n, key: 'fp-' + n, label: m.label, unit: m.unit, min: m.min, max: m.max, value: p[n],
         onInput: (v) => { store.state.plant[n] = v; changed(); },
       }));
     }
@@ -108,9 +108,8 @@ function setFamily(id) {
     }
     state.plant = { num: tf.num, den: tf.den, delay: tf.delay };
   } else {
-    const f = S.FAMILIES[id];
     const p = { family: id };
-    for (const n of f.params) p[n] = old[n] !== undefined && Number.isFinite(old[n]) ? old[n] : S.FAMILY_PARAMS[n].def;
+    for (const { name: n, default: def } of familyInfo(id).params) p[n] = old[n] !== undefined && Number.isFinite(old[n]) ? old[n] : def;
     if (old.delay !== undefined && 'theta' in p) p.theta = old.delay;
     state.plant = p;
   }
@@ -135,20 +134,6 @@ function applicableMethods() {
   // A num/den plant is family "custom" (methods that accept any plant list it).
   const fam = store.state.plant.family || 'custom';
   return store.methods.filter((m) => (m.families || []).includes(fam));
-}
-
-/** True when the rule refuses to tune without this parameter (its error names it). */
-function requiredParam(info, name) {
-  const { state } = store;
-  const params = methodParams();
-  delete params[name];
-  if (name !== 'target_ms' && state.target !== null) params.target_ms = state.target;
-  try {
-    E.call('tune', { method: info.id, plant: state.plant, params });
-    return false;
-  } catch (e) {
-    return errText(e).startsWith('params.' + name);
-  }
 }
 
 /** A parameter without a default: the value a paper preset uses with this method, if any. */
@@ -220,11 +205,11 @@ export function buildMethod() {
       const min = Number.isFinite(p.min) ? p.min : 0;
       const max = Number.isFinite(p.max) ? p.max : 10;
       const fallback = () => presetValue(info.id, p.name) ?? Number(((min + max) / 2).toPrecision(3));
-      // A parameter without a default (other than λ) is the rule's own choice unless set:
-      // "auto" omits it from params; the slider then shows the value the rule reports.
-      const autoable = (p.default === null || p.default === undefined) && p.name !== 'lambda';
-      let auto = autoable && typeof v !== 'number';
-      if (auto && requiredParam(info, p.name)) auto = false;
+      // A parameter without a default that the rule does not require (methods() declares
+      // `required`) is the rule's own choice unless set: "auto" omits it from params; the
+      // slider then shows the value the rule reports.
+      const autoable = (p.default === null || p.default === undefined) && !p.required;
+      const auto = autoable && typeof v !== 'number';
       if (typeof v !== 'number') v = typeof p.default === 'number' ? p.default : fallback();
       if (!auto && (p.name !== 'lambda' || state.target === null)) state.params[p.name] = v;
       const row = slider({

@@ -2,7 +2,7 @@
 // parameters, the rule's details and warnings, its citation, and the summary a printout shows.
 import * as S from './state.js';
 import { $, el, setText, setHidden } from './dom.js';
-import { store, methodInfo } from './store.js';
+import { store, familyInfo, methodInfo } from './store.js';
 import * as P from './pins.js';
 
 function tfText(t) {
@@ -53,8 +53,9 @@ export function showController(r) {
   setText($('ctl-structure'), info ? info.title + ' — ' + info.structure : state.method === '__literal' && state.literal ? 'Literal controller: ' + (state.literal.title || '') : '');
   // What a printout needs to be read on its own: the plant, the method and its parameters.
   const pl = state.plant;
-  const plantText = pl.family
-    ? S.FAMILIES[pl.family].formula + ' with ' + S.FAMILIES[pl.family].params.map((n) => n + ' = ' + S.fmt(pl[n])).join(', ')
+  const fam = pl.family ? familyInfo(pl.family) : null;
+  const plantText = fam
+    ? fam.formula + ' with ' + fam.params.map(({ name: n }) => n + ' = ' + S.fmt(pl[n])).join(', ')
     : 'P(s) = (' + S.polyText(pl.num) + ') / (' + S.polyText(pl.den) + ') · e^(−' + S.fmt(pl.delay) + 's)';
   const ml = r.ctl && r.ctl.model_loop;
   const pert = S.isPerturbed(state.pert) ? '; true plant perturbed: ' + Object.entries(state.pert).filter(([, v]) => v !== 0).map(([k, v]) => k + ' ' + (v > 0 ? '+' : '') + v + ' %').join(', ') + (ml ? ' (the controller\'s internal model stays nominal)' : '') : '';

@@ -2,31 +2,15 @@
 // formatting. Pure functions only (no DOM), so the browser test can check them in the page
 // context. url.js writes and reads the state in the URL hash.
 
-/** Plant families of API.md with their parameters (names fixed by the API). */
-export const FAMILIES = {
-  ipdt_ir: { title: 'Integrating, inverse response (IPDT-IR)', formula: 'P(s) = k(1 − τ_z s)e^(−θs) / (s(τs + 1))', params: ['k', 'tau', 'tau_z', 'theta'], integ: 1 },
-  fopdt_ir: { title: 'First order, inverse response (FOPDT-IR)', formula: 'P(s) = k(1 − τ_z s)e^(−θs) / (τs + 1)', params: ['k', 'tau', 'tau_z', 'theta'], integ: 0 },
-  piptd: { title: 'Pure integrator with dead time', formula: 'P(s) = k e^(−θs) / s', params: ['k', 'theta'], integ: 1 },
-  diptd: { title: 'Double integrator with dead time', formula: 'P(s) = k e^(−θs) / s²', params: ['k', 'theta'], integ: 2 },
-  ifoptd: { title: 'Integrator + first-order lag with dead time', formula: 'P(s) = k e^(−θs) / (s(τs + 1))', params: ['k', 'tau', 'theta'], integ: 1 },
-  ifoptd_zero: { title: 'Integrator + lag + zero with dead time', formula: 'P(s) = k(1 + z s)e^(−θs) / (s(τs + 1)),  z < 0: inverse response', params: ['k', 'tau', 'z', 'theta'], integ: 1 },
-  ifoptd_zero_unstable: { title: 'Integrator + unstable pole + zero with dead time', formula: 'P(s) = k(1 + z s)e^(−θs) / (s(τs − 1))', params: ['k', 'tau', 'z', 'theta'], integ: 1 },
-};
+// The plant families the validators accept, each with its parameter names: methods().families
+// of the module (the page calls setFamilies() once the module is loaded; until then no family
+// plant is valid).
+const familyParams = new Map();
 
-/** Slider metadata of the family parameters. */
-export const FAMILY_PARAMS = {
-  k: { label: 'Gain k', min: 0.01, max: 10, def: 1 },
-  tau: { label: 'Time constant τ', unit: 'time units', min: 0.01, max: 20, def: 1 },
-  tau_z: { label: 'Inverse-response zero τ_z', unit: 'time units', min: 0, max: 10, def: 0.5 },
-  z: { label: 'Zero z (z < 0: inverse response)', unit: 'time units', min: -10, max: 10, def: -0.5 },
-  theta: { label: 'Dead time θ', unit: 'time units', min: 0, max: 10, def: 0.5 },
-};
-
-/** Unit of the gain k for a family (output per input, per time unit for each integrator). */
-export function gainUnit(family) {
-  const f = FAMILIES[family];
-  const n = f ? f.integ : 0;
-  return n === 0 ? 'out/in' : n === 1 ? 'out/(in·time)' : 'out/(in·time²)';
+/** Sets the known plant families (methods().families: [{ id, params: [{ name }] }]). */
+export function setFamilies(families) {
+  familyParams.clear();
+  for (const f of families) familyParams.set(f.id, f.params.map((p) => p.name));
 }
 
 /** Perturbation sliders: relative change of the true plant, in %. */
@@ -63,10 +47,10 @@ const isTf = (t) => t && typeof t === 'object' && numArray(t.num) && numArray(t.
 export function cleanPlant(p) {
   if (!p || typeof p !== 'object') return null;
   if (typeof p.family === 'string') {
-    const f = FAMILIES[p.family];
-    if (!f) return null;
+    const names = familyParams.get(p.family);
+    if (!names) return null;
     const out = { family: p.family };
-    for (const n of f.params) {
+    for (const n of names) {
       if (!isNum(p[n])) return null;
       out[n] = p[n];
     }

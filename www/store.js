@@ -10,6 +10,8 @@ export const store = {
   embed: false,
   /** methods().methods of the module. */
   methods: [],
+  /** methods().families of the module: the plant families and their parameters. */
+  families: [],
   /** presets() of the module. */
   presets: [],
   /** The results of the last render (compute.js). */
@@ -51,6 +53,11 @@ export function changed(deferred = false) {
 /** The state changed in a way the controls show (plant, method, preset): build them again. */
 export function rebuild() {
   hooks.rebuild();
+}
+
+/** The declaration of a plant family (methods().families), or null. */
+export function familyInfo(id) {
+  return store.families.find((f) => f.id === id) || null;
 }
 
 /** The declaration of a method (methods()), or null. */

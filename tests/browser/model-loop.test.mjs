@@ -18,6 +18,7 @@ const K = 0.05, KP = 2.9933, KD = 7.1189;
 const IAE_CLOSED_FORM = (1 + K * KD) / (K * KP);
 
 before(async () => {
+  S.setFamilies(await H.moduleFamilies());
   browser = await H.launch();
 });
 

@@ -15,6 +15,7 @@ import { root, frames, setInput } from './harness.mjs';
 let browser;
 
 before(async () => {
+  S.setFamilies(await H.moduleFamilies());
   browser = await H.launch();
   await pickLambdaMethod();
 });

@@ -1,9 +1,13 @@
 // Unit tests of the page's pure helpers (www/state.js, www/url.js): URL state, formatting, plant helpers.
 // Run with: node --test tests/browser/
-import { test } from 'node:test';
+import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
+import * as H from './harness.mjs';
+
+// The plant families come from the module, as on the page.
+before(async () => S.setFamilies(await H.moduleFamilies()));
 
 test('state survives the URL hash round trip', () => {
   const st = S.defaultState();
