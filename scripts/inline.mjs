@@ -12,6 +12,9 @@
 // values they take are final (our modules export functions, constants and objects, never a
 // `let` they reassign). Other import forms fail the build, so the transformation is exact for
 // our sources.
+// The wasm-bindgen glue (www/pkg/pidlab.js) is also kept as a factory,
+// globalThis.PIDLAB_FRESH_GLUE, which returns a fresh copy: engine.js re-instantiates the module
+// with one after a trap (a glue copy serves one instance).
 // The page's Content-Security-Policy is rewritten to allow exactly the inlined script and
 // style (by SHA-256 hash) and wasm compilation ('wasm-unsafe-eval'); everything else,
 // including every network fetch, is denied (default-src 'none').
@@ -37,6 +40,7 @@ const read = (p) => {
 };
 
 const modules = new Map(); // absolute path -> { name, code }
+const gluePath = join(www, 'pkg', 'pidlab.js'); // the wasm-pack glue (emitted as a factory too)
 const order = [];
 
 function modName(p) {
@@ -94,7 +98,13 @@ function inlineModule(path) {
   });
   if (/^\s*export\s/m.test(src)) fail(`${relative(root, path)}: an export form the inliner does not handle`);
   const obj = exportsList.map(([k, v]) => (k === v ? k : `${JSON.stringify(k)}: ${v}`)).join(', ');
-  const code = `const ${name} = (() => {\n${src}\nreturn Object.freeze({ ${obj} });\n})();\n`;
+  let code = `const ${name} = (() => {\n${src}\nreturn Object.freeze({ ${obj} });\n})();\n`;
+  if (path === gluePath) {
+    // The wasm-bindgen glue keeps its instance in module-level variables: engine.js gets a
+    // fresh copy from this factory to re-instantiate the module after a trap.
+    const factory = name.replace(/^__m_/, '__f_');
+    code = `const ${factory} = () => {\n${src}\nreturn Object.freeze({ ${obj} });\n};\nconst ${name} = ${factory}();\nglobalThis.PIDLAB_FRESH_GLUE = ${factory};\n`;
+  }
   modules.get(path).code = code;
   order.push(path);
   return name;

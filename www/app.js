@@ -28,6 +28,16 @@ function buildAll() {
   Sh.applyEmbed();
 }
 
+/** The banners of calls that crashed the module (a trap) since the last render. */
+function crashBanners() {
+  const seen = new Set();
+  return E.crashes().filter((c) => !seen.has(c.message) && seen.add(c.message)).map((c) => ({
+    kind: 'error',
+    title: 'The computation module crashed',
+    text: c.message + '. Its results are missing here; the next change computes again. (A Rust panic\'s file and line are in the browser console.)',
+  }));
+}
+
 /** Computes the state and shows the results. */
 function render() {
   const t0 = performance.now();
@@ -43,8 +53,10 @@ function render() {
     showMetrics(r);
     showController(r);
     lap('tables', t2);
+    const crashed = crashBanners();
+    if (crashed.length) showBanners([...crashed, ...r.banners]);
   } catch (e) {
-    showBanners([{ kind: 'error', title: 'Internal error', text: errText(e) }]);
+    showBanners([...crashBanners(), { kind: 'error', title: 'Internal error', text: errText(e) }]);
   }
   const dt = performance.now() - t0;
   perf.renders++;
@@ -122,6 +134,8 @@ async function main() {
     return;
   }
   connect({ render, rebuild: () => { buildAll(); changed(); } });
+  // A restart that had to wait: say so; the next change computes (not the input that trapped).
+  E.onRestart(() => showBanners([{ kind: 'warn', title: 'The computation module has been restarted', text: 'Change any input to compute again.' }]));
   const q = new URLSearchParams(location.search);
   const dec = U.decodeHash(location.hash);
   store.embed = dec.embed || q.has('embed');
@@ -140,6 +154,8 @@ async function main() {
     fmt: S.fmt,
     ready: true,
   };
+  // The browser tests' hooks, with #test=1 only: make the live instance trap like a dead one.
+  if (dec.test) window.__pidlabTest = { forceTrap: E.forceTrap, generation: E.generation, spareReady: E.spareReady };
   render();
   document.body.setAttribute('data-ready', '1');
 }

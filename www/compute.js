@@ -1,11 +1,16 @@
 // One render's computation: tune (or the literal controller), simulate and analyze on the
 // nominal and, when perturbed, the true plant, through the memoized engine; the problems found
-// become banners.
+// become banners (a call that crashed the module is reported by the page, see app.js).
 import * as S from './state.js';
 import * as E from './engine.js';
 import { errText } from './dom.js';
 import { store, methodParams } from './store.js';
 import { lap } from './perf.js';
+
+/** Adds a banner for a failed call, unless the module crashed (the crash has its own banner). */
+function failed(r, title, e) {
+  if (!(e instanceof E.EngineCrash)) r.banners.push({ kind: 'error', title, text: errText(e) });
+}
 
 /** The results of the current state: { banners, ctl, tune, sim, simNom, an, anTrue, plant, truePlant }. */
 export function compute() {
@@ -17,7 +22,7 @@ export function compute() {
       r.tune = E.run('tune', { method: state.method, plant: state.plant, params: methodParams() });
       r.ctl = r.tune.controller;
     } catch (e) {
-      r.banners.push({ kind: 'error', title: 'Ill-posed design: the rule cannot tune this plant', text: errText(e) });
+      failed(r, 'Ill-posed design: the rule cannot tune this plant', e);
     }
   } else if (state.method === '__literal' && state.literal) {
     r.ctl = state.literal;
@@ -34,7 +39,7 @@ export function compute() {
   try {
     r.sim = E.run('simulate', { plant: r.truePlant, controller, scenario: state.scenario });
   } catch (e) {
-    r.banners.push({ kind: 'error', title: 'Ill-posed loop: cannot simulate', text: errText(e) });
+    failed(r, 'Ill-posed loop: cannot simulate', e);
   }
   if (perturbed) {
     try { r.simNom = E.run('simulate', { plant: state.plant, controller, scenario: state.scenario }); } catch { r.simNom = null; }
@@ -43,7 +48,7 @@ export function compute() {
   try {
     r.an = E.run('analyze', { plant: state.plant, controller });
   } catch (e) {
-    r.banners.push({ kind: 'error', title: 'Cannot analyse the loop', text: errText(e) });
+    failed(r, 'Cannot analyse the loop', e);
   }
   if (perturbed) {
     try { r.anTrue = E.run('analyze', { plant: r.truePlant, controller }); } catch { r.anTrue = null; }

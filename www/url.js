@@ -1,4 +1,4 @@
-// The page state in the URL hash: `#s=<json>` (and `embed=1`). Decoding validates every field
+// The page state in the URL hash: `#s=<json>` (and `embed=1`; `test=1` for the browser tests). Decoding validates every field
 // (state.js cleanState): a hash is untrusted input.
 import * as S from './state.js';
 
@@ -13,15 +13,19 @@ export function encodeHash(state, embed = false) {
   return '#' + q.toString();
 }
 
-/** Decodes a URL hash; returns { state, embed } (state null when absent or unreadable). */
+/**
+ * Decodes a URL hash; returns { state, embed, test } (state null when absent or unreadable;
+ * `test`: the hash has `test=1`, which exposes the page's test hooks).
+ */
 export function decodeHash(hash) {
   const q = new URLSearchParams(String(hash || '').replace(/^#/, ''));
   const embed = q.get('embed') === '1';
+  const test = q.get('test') === '1';
   const raw = q.get('s');
-  if (!raw) return { state: null, embed };
+  if (!raw) return { state: null, embed, test };
   try {
-    return { state: S.cleanState(JSON.parse(raw)), embed };
+    return { state: S.cleanState(JSON.parse(raw)), embed, test };
   } catch {
-    return { state: null, embed };
+    return { state: null, embed, test };
   }
 }
