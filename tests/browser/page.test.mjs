@@ -6,7 +6,6 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { tmpdir } from 'node:os';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
@@ -398,18 +397,20 @@ test('input-to-paint latency of the λ slider', async () => {
   await page.close();
 });
 
-test('screenshots (docs/screenshot.png; 360 px wide in /tmp)', async () => {
-  mkdirSync(join(root, 'docs'), { recursive: true });
+// Screenshots go to target/screenshots/ (ignored by git): the tests leave the tracked tree as it was.
+test('screenshots (target/screenshots/: 1280 and 360 px wide)', async () => {
+  const shots = join(root, 'target', 'screenshots');
+  mkdirSync(shots, { recursive: true });
   const st = boilerPk(1.9);
   const { page } = await open(U.encodeHash(st));
   await page.click('#pin');
   await setInput(page, '#mp-lambda', 1.2);
   await page.waitForTimeout(200);
-  await page.screenshot({ path: join(root, 'docs', 'screenshot.png'), fullPage: true });
+  await page.screenshot({ path: join(shots, 'pidlab.png'), fullPage: true });
   await page.close();
   const small = await open(U.encodeHash(st), { width: 360, height: 800 });
   const overflow = await small.page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
-  await small.page.screenshot({ path: join(tmpdir(), 'pidlab-360.png'), fullPage: true });
+  await small.page.screenshot({ path: join(shots, 'pidlab-360.png'), fullPage: true });
   assert.ok(overflow <= 0, `no horizontal scrolling at 360 px (overflow ${overflow} px)`);
   await small.page.close();
 });
