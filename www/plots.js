@@ -149,8 +149,8 @@ function plot(spec) {
         E.call('plot', text);
       } catch (e) {
         // A boundary that only takes objects: send the object from now on. (A spec field
-        // error, "spec.<field>: ...", is a real error and is reported.)
-        if (/^spec\./.test(errText(e))) throw e;
+        // error, "spec.<field>: ...", is a real error and is reported; so is a crash.)
+        if (e instanceof E.EngineCrash || /^spec\./.test(errText(e))) throw e;
         boundary.asObject = true;
         E.call('plot', spec);
       }
