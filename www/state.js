@@ -1,6 +1,7 @@
 // Page state (its defaults and the validation of untrusted state), plant helpers, number
-// formatting. Pure functions only (no DOM), so the browser test can check them in the page
-// context. url.js writes and reads the state in the URL hash.
+// formatting. Pure functions only (no DOM; the one thing set from outside is the list of plant
+// families the validators accept), so the tests can check them in Node and in the page.
+// url.js writes and reads the state in the URL hash.
 
 // The plant families the validators accept, each with its parameter names: methods().families
 // of the module (the page calls setFamilies() once the module is loaded; until then no family
