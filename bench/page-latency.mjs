@@ -28,6 +28,7 @@ import { cpus, loadavg } from 'node:os';
 import { join, resolve, dirname } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import * as S from '../www/state.js';
+import * as U from '../www/url.js';
 import { launch } from '../tests/browser/harness.mjs';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
@@ -127,7 +128,7 @@ async function run(sl) {
   page.on('pageerror', (e) => errors.push(String(e)));
   await page.route('**/*', (route) => (/^(file|data|blob):/.test(route.request().url()) ? route.continue() : route.abort()));
   const st = sl.st || state(pk(1.9));
-  await page.goto(pathToFileURL(dist).href + S.encodeHash(st));
+  await page.goto(pathToFileURL(dist).href + U.encodeHash(st));
   await page.waitForSelector('body[data-ready="1"]', { timeout: 20000 });
   if (!sl.st) {
     // Two pinned designs (λ = 1.9 and 1.4), then the λ slider moves.

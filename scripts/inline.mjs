@@ -6,14 +6,21 @@
 //
 // How the modules are combined: each module `M` becomes a scope
 //   const __m_M = (() => { <source without `export` keywords>; return Object.freeze({ ...exports }); })();
-// and `import * as X from './M.js'` becomes `const X = __m_M;`. Only that import form is
-// accepted (the build fails on any other), so the transformation is exact for our sources.
+// `import * as X from './M.js'` becomes `const X = __m_M;` and `import { a, b as c } from
+// './M.js'` becomes `const { a, b: c } = __m_M;`. Modules are emitted dependencies first and an
+// import cycle fails the build, so every module is complete when its importers run and the
+// values they take are final (our modules export functions, constants and objects, never a
+// `let` they reassign). Other import forms fail the build, so the transformation is exact for
+// our sources.
+// The wasm-bindgen glue (www/pkg/pidlab.js) is also kept as a factory,
+// globalThis.PIDLAB_FRESH_GLUE, which returns a fresh copy: engine.js re-instantiates the module
+// with one after a trap (a glue copy serves one instance).
 // The page's Content-Security-Policy is rewritten to allow exactly the inlined script and
 // style (by SHA-256 hash) and wasm compilation ('wasm-unsafe-eval'); everything else,
 // including every network fetch, is denied (default-src 'none').
 //
 // Usage: node scripts/inline.mjs [www-dir] [out-file]
-import { readFileSync, writeFileSync, mkdirSync, existsSync } from 'node:fs';
+import { readFileSync, writeFileSync, mkdirSync, existsSync, readdirSync } from 'node:fs';
 import { createHash } from 'node:crypto';
 import { dirname, join, resolve, relative } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -33,25 +40,43 @@ const read = (p) => {
 };
 
 const modules = new Map(); // absolute path -> { name, code }
+const gluePath = join(www, 'pkg', 'pidlab.js'); // the wasm-pack glue (emitted as a factory too)
 const order = [];
 
 function modName(p) {
   return '__m_' + relative(www, p).replace(/\.js$/, '').replace(/[^A-Za-z0-9]/g, '_');
 }
 
+/** The import statements of a module's source replaced by constants (inlining the modules). */
+function replaceImports(src, path) {
+  // `import * as X from './rel.js';`
+  src = src.replace(/^\s*import\s+\*\s+as\s+([A-Za-z_$][\w$]*)\s+from\s+['"](\.{1,2}\/[^'"]+)['"];?\s*$/gm, (_, local, rel) => {
+    return `const ${local} = ${inlineModule(resolve(dirname(path), rel))};`;
+  });
+  // `import { a, b as c } from './rel.js';` (on one line)
+  src = src.replace(/^\s*import\s*\{([^}]*)\}\s*from\s+['"](\.{1,2}\/[^'"]+)['"];?\s*$/gm, (_, list, rel) => {
+    const items = list.split(',').map((x) => x.trim()).filter(Boolean).map((item) => {
+      const m = item.match(/^([A-Za-z_$][\w$]*)(?:\s+as\s+([A-Za-z_$][\w$]*))?$/);
+      if (!m) fail(`${relative(root, path)}: cannot parse import item "${item}"`);
+      return m[2] ? `${m[1]}: ${m[2]}` : m[1];
+    });
+    return `const { ${items.join(', ')} } = ${inlineModule(resolve(dirname(path), rel))};`;
+  });
+  if (/^\s*import[\s{*'"]/m.test(src)) fail(`${relative(root, path)}: only "import * as X from './file.js'" and "import { a, b as c } from './file.js'" can be inlined`);
+  return src;
+}
+
 /** Converts one ES module into a scoped namespace object (recursively inlining its imports). */
 function inlineModule(path) {
-  if (modules.has(path)) return modules.get(path).name;
+  if (modules.has(path)) {
+    const m = modules.get(path);
+    if (m.code === null) fail(`import cycle through ${relative(root, path)}: a module would run before its dependency is complete`);
+    return m.name;
+  }
   const name = modName(path);
   modules.set(path, { name, code: null });
-  let src = read(path).toString('utf8');
+  let src = replaceImports(read(path).toString('utf8'), path);
   const exportsList = [];
-  // Imports: only `import * as X from './rel.js';`
-  src = src.replace(/^\s*import\s+\*\s+as\s+([A-Za-z_$][\w$]*)\s+from\s+['"](\.{1,2}\/[^'"]+)['"];?\s*$/gm, (_, local, rel) => {
-    const dep = resolve(dirname(path), rel);
-    return `const ${local} = ${inlineModule(dep)};`;
-  });
-  if (/^\s*import[\s{*'"]/m.test(src)) fail(`${relative(root, path)}: only "import * as X from './file.js'" can be inlined`);
   // export function/class/const/let/var/async function
   src = src.replace(/^export\s+((?:async\s+)?function\*?|class|const|let|var)\s+([A-Za-z_$][\w$]*)/gm, (_, kw, id) => {
     exportsList.push([id, id]);
@@ -73,7 +98,13 @@ function inlineModule(path) {
   });
   if (/^\s*export\s/m.test(src)) fail(`${relative(root, path)}: an export form the inliner does not handle`);
   const obj = exportsList.map(([k, v]) => (k === v ? k : `${JSON.stringify(k)}: ${v}`)).join(', ');
-  const code = `const ${name} = (() => {\n${src}\nreturn Object.freeze({ ${obj} });\n})();\n`;
+  let code = `const ${name} = (() => {\n${src}\nreturn Object.freeze({ ${obj} });\n})();\n`;
+  if (path === gluePath) {
+    // The wasm-bindgen glue keeps its instance in module-level variables: engine.js gets a
+    // fresh copy from this factory to re-instantiate the module after a trap.
+    const factory = name.replace(/^__m_/, '__f_');
+    code = `const ${factory} = () => {\n${src}\nreturn Object.freeze({ ${obj} });\n};\nconst ${name} = ${factory}();\nglobalThis.PIDLAB_FRESH_GLUE = ${factory};\n`;
+  }
   modules.get(path).code = code;
   order.push(path);
   return name;
@@ -101,11 +132,15 @@ const css = read(join(www, 'style.css')).toString('utf8');
 const wasmBytes = read(join(www, 'pkg', 'pidlab_bg.wasm'));
 
 // The entry module: its own code runs at top level (it has no exports).
-let entry = read(join(www, 'app.js')).toString('utf8');
-entry = entry.replace(/^\s*import\s+\*\s+as\s+([A-Za-z_$][\w$]*)\s+from\s+['"](\.{1,2}\/[^'"]+)['"];?\s*$/gm, (_, local, rel) => {
-  return `const ${local} = ${inlineModule(resolve(www, rel))};`;
-});
-if (/^\s*(import|export)[\s{*'"]/m.test(entry)) fail('app.js: unsupported import/export form');
+const entryPath = join(www, 'app.js');
+modules.set(entryPath, { name: '(app.js)', code: null }); // an import of app.js is a cycle
+const entry = replaceImports(read(entryPath).toString('utf8'), entryPath);
+if (/^\s*export[\s{*'"]/m.test(entry)) fail('app.js: the entry module exports nothing');
+
+// Every module of the page is inlined: a www/*.js file app.js does not reach is a mistake.
+for (const f of readdirSync(www).filter((x) => x.endsWith('.js'))) {
+  if (!modules.has(join(www, f))) fail(`www/${f} is not imported by app.js (directly or through another module)`);
+}
 
 const script = [
   '// pidlab, single-file build (generated by scripts/inline.mjs; do not edit)',
@@ -137,4 +172,4 @@ rep(/<script type="module" src="app.js"><\/script>/, `<script type="module">${sc
 
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, page);
-console.log(`wrote ${relative(process.cwd(), out)} (${(page.length / 1024).toFixed(0)} KiB; wasm ${(wasmBytes.length / 1024).toFixed(0)} KiB)`);
+console.log(`wrote ${relative(process.cwd(), out)} (${(page.length / 1024).toFixed(0)} KiB; wasm ${(wasmBytes.length / 1024).toFixed(0)} KiB; modules: ${order.map((p) => relative(www, p)).join(', ')})`);

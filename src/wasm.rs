@@ -95,7 +95,16 @@ fn call(input: JsValue, f: fn(&Value) -> crate::Result<Value>) -> Result<JsValue
     to_js(&out)
 }
 
-/// `methods()`: the implemented tuning rules.
+/// Runs once when the module is instantiated: a Rust panic (a bug: API.md says no input may
+/// trap the module) then logs its message and `file:line` with `console.error` before the
+/// instance traps with `RuntimeError: unreachable`; the page re-instantiates the module.
+#[wasm_bindgen(start)]
+pub fn start() {
+    #[cfg(target_arch = "wasm32")]
+    console_error_panic_hook::set_once();
+}
+
+/// `methods()`: the implemented tuning rules and the plant families (`{ methods, families }`).
 #[wasm_bindgen]
 pub fn methods() -> Result<JsValue, JsError> {
     to_js(&api::methods())

@@ -1,31 +1,17 @@
-// Page state <-> URL hash, plant families, number formatting. Pure functions only (no DOM),
-// so the browser test can check them in the page context.
+// Page state (its defaults and the validation of untrusted state), plant helpers, number
+// formatting. Pure functions only (no DOM; the one thing set from outside is the list of plant
+// families the validators accept), so the tests can check them in Node and in the page.
+// url.js writes and reads the state in the URL hash.
 
-/** Plant families of API.md with their parameters (names fixed by the API). */
-export const FAMILIES = {
-  ipdt_ir: { title: 'Integrating, inverse response (IPDT-IR)', formula: 'P(s) = k(1 − τ_z s)e^(−θs) / (s(τs + 1))', params: ['k', 'tau', 'tau_z', 'theta'], integ: 1 },
-  fopdt_ir: { title: 'First order, inverse response (FOPDT-IR)', formula: 'P(s) = k(1 − τ_z s)e^(−θs) / (τs + 1)', params: ['k', 'tau', 'tau_z', 'theta'], integ: 0 },
-  piptd: { title: 'Pure integrator with dead time', formula: 'P(s) = k e^(−θs) / s', params: ['k', 'theta'], integ: 1 },
-  diptd: { title: 'Double integrator with dead time', formula: 'P(s) = k e^(−θs) / s²', params: ['k', 'theta'], integ: 2 },
-  ifoptd: { title: 'Integrator + first-order lag with dead time', formula: 'P(s) = k e^(−θs) / (s(τs + 1))', params: ['k', 'tau', 'theta'], integ: 1 },
-  ifoptd_zero: { title: 'Integrator + lag + zero with dead time', formula: 'P(s) = k(1 + z s)e^(−θs) / (s(τs + 1)),  z < 0: inverse response', params: ['k', 'tau', 'z', 'theta'], integ: 1 },
-  ifoptd_zero_unstable: { title: 'Integrator + unstable pole + zero with dead time', formula: 'P(s) = k(1 + z s)e^(−θs) / (s(τs − 1))', params: ['k', 'tau', 'z', 'theta'], integ: 1 },
-};
+// The plant families the validators accept, each with its parameter names: methods().families
+// of the module (the page calls setFamilies() once the module is loaded; until then no family
+// plant is valid).
+const familyParams = new Map();
 
-/** Slider metadata of the family parameters. */
-export const FAMILY_PARAMS = {
-  k: { label: 'Gain k', min: 0.01, max: 10, def: 1 },
-  tau: { label: 'Time constant τ', unit: 'time units', min: 0.01, max: 20, def: 1 },
-  tau_z: { label: 'Inverse-response zero τ_z', unit: 'time units', min: 0, max: 10, def: 0.5 },
-  z: { label: 'Zero z (z < 0: inverse response)', unit: 'time units', min: -10, max: 10, def: -0.5 },
-  theta: { label: 'Dead time θ', unit: 'time units', min: 0, max: 10, def: 0.5 },
-};
-
-/** Unit of the gain k for a family (output per input, per time unit for each integrator). */
-export function gainUnit(family) {
-  const f = FAMILIES[family];
-  const n = f ? f.integ : 0;
-  return n === 0 ? 'out/in' : n === 1 ? 'out/(in·time)' : 'out/(in·time²)';
+/** Sets the known plant families (methods().families: [{ id, params: [{ name }] }]). */
+export function setFamilies(families) {
+  familyParams.clear();
+  for (const f of families) familyParams.set(f.id, f.params.map((p) => p.name));
 }
 
 /** Perturbation sliders: relative change of the true plant, in %. */
@@ -62,10 +48,10 @@ const isTf = (t) => t && typeof t === 'object' && numArray(t.num) && numArray(t.
 export function cleanPlant(p) {
   if (!p || typeof p !== 'object') return null;
   if (typeof p.family === 'string') {
-    const f = FAMILIES[p.family];
-    if (!f) return null;
+    const names = familyParams.get(p.family);
+    if (!names) return null;
     const out = { family: p.family };
-    for (const n of f.params) {
+    for (const n of names) {
       if (!isNum(p[n])) return null;
       out[n] = p[n];
     }
@@ -171,30 +157,6 @@ export function cleanState(raw) {
   return s;
 }
 
-/** Encodes the state as a URL hash (`#s=<json>`, optionally with `embed=1`). */
-export function encodeHash(state, embed = false) {
-  const s = { ...state };
-  if (!s.show || s.show.length === 0) delete s.show;
-  if (!s.pins || s.pins.length === 0) delete s.pins;
-  const q = new URLSearchParams();
-  if (embed) q.set('embed', '1');
-  q.set('s', JSON.stringify(s));
-  return '#' + q.toString();
-}
-
-/** Decodes a URL hash; returns { state, embed } (state null when absent or unreadable). */
-export function decodeHash(hash) {
-  const q = new URLSearchParams(String(hash || '').replace(/^#/, ''));
-  const embed = q.get('embed') === '1';
-  const raw = q.get('s');
-  if (!raw) return { state: null, embed };
-  try {
-    return { state: cleanState(JSON.parse(raw)), embed };
-  } catch {
-    return { state: null, embed };
-  }
-}
-
 /** Number for a readout: 4 significant digits, no exponent for ordinary magnitudes. */
 export function fmt(x, digits = 4) {
   if (x === null || x === undefined) return '–';
@@ -244,6 +206,11 @@ export function familyTf(p) {
     case 'ifoptd_zero_unstable': return { num: [k * p.z, k], den: [tau, -1, 0], delay: theta };
     default: return null;
   }
+}
+
+/** A plant as { num, den, delay } (a family plant through familyTf). */
+export function plantTf(p) {
+  return p.family ? familyTf(p) : p;
 }
 
 /** The true plant: the model with its gain, time constant, zero and dead time scaled by (1 + %/100). */
@@ -303,3 +270,17 @@ export function nyquistCurve(plantTf, cy, n = 800) {
   }
   return { re, im };
 }
+
+/** L(jω) samples: from analyze() when it provides them, else evaluated here from Cy and P. */
+export function loopCurve(an, plant, ctl) {
+  if (an && an.nyquist && Array.isArray(an.nyquist.re) && Array.isArray(an.nyquist.im)) return { re: an.nyquist.re, im: an.nyquist.im };
+  return nyquistCurve(plantTf(plant), ctl.cy);
+}
+
+// Display symbols of the named structure parameters (the papers' notation); unknown names
+// are shown as given.
+export const SYMBOLS = {
+  kc: 'K_c', ti: 'τ_I', td: 'τ_D', kp: 'K_P', ki: 'K_I', kd: 'K_D', n: 'N', b: 'b', c: 'c',
+  a1: 'a₁', a2: 'a₂', b1: 'b₁', b2: 'b₂', p: 'p', gamma: 'γ', epsilon: 'ε', lambda: 'λ', zeta: 'ζ',
+  xi: 'ξ', alpha: 'α', beta: 'β', phi: 'φ', theta_design: 'θ (design)', tf: 'T_f', tau_f: 'τ_f',
+};

@@ -8,7 +8,7 @@ use crate::analysis::metrics::Metrics;
 use crate::analysis::{simulate as simulate_loop, SimResult};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
-use crate::model::plant::{Family, Plant};
+use crate::model::plant::{family_infos, Family, Plant};
 use crate::model::tf::Tf;
 use crate::rules::{self, Params};
 use crate::sim::Scenario;
@@ -141,9 +141,13 @@ pub fn analysis_json(a: &Analysis) -> Value {
     })
 }
 
-/// `methods()` of API.md.
+/// `methods()` of API.md, with the plant families (`families`: id, title, formula,
+/// integrators and the page's parameter declarations, see [`family_infos`]).
 pub fn methods() -> Value {
-    json!({ "methods": rules::methods().iter().map(|m| serde_json::to_value(m).unwrap_or(Value::Null)).collect::<Vec<_>>() })
+    json!({
+        "methods": rules::methods().iter().map(|m| serde_json::to_value(m).unwrap_or(Value::Null)).collect::<Vec<_>>(),
+        "families": serde_json::to_value(family_infos()).unwrap_or(Value::Null),
+    })
 }
 
 /// Every paper preset: `{ presets: [...] }`.

@@ -7,6 +7,7 @@
 use crate::error::{non_negative, positive, Error, Result};
 use crate::model::poly::{Poly, C64};
 use crate::model::tf::Tf;
+use serde::Serialize;
 
 /// Largest dead time accepted (in the plant's time unit).
 pub const MAX_DELAY: f64 = 1e6;
@@ -234,6 +235,116 @@ impl Family {
     }
 }
 
+/// What the page shows of one family parameter: its slider (`min`..`max`, starting at
+/// `default`), label and unit. The page builds its plant controls from these (`methods()`
+/// lists them under `families`); the ranges are the page's slider ranges, not validation
+/// bounds ([`Family::validate`] checks the values).
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct FamilyParamInfo {
+    /// Field name in the plant object (as [`Family::param_names`]).
+    pub name: &'static str,
+    /// Human label with its symbol.
+    pub label: &'static str,
+    /// Unit (the gain's unit depends on the family's integrators).
+    pub unit: &'static str,
+    /// Starting value.
+    pub default: f64,
+    /// Slider minimum.
+    pub min: f64,
+    /// Slider maximum.
+    pub max: f64,
+}
+
+/// A plant family as `methods()` lists it under `families`.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct FamilyInfo {
+    /// Family id (API.md).
+    pub id: &'static str,
+    /// Title for a menu.
+    pub title: &'static str,
+    /// The transfer function as text.
+    pub formula: &'static str,
+    /// Number of integrators (poles at s = 0).
+    pub integrators: u32,
+    /// Parameters, in the order of [`Family::param_names`].
+    pub params: Vec<FamilyParamInfo>,
+}
+
+/// The page's declaration of one family parameter (`unit_k`: the gain's unit).
+fn family_param(name: &'static str, unit_k: &'static str) -> FamilyParamInfo {
+    const TIME: &str = "time units";
+    let (label, unit, default, min, max) = match name {
+        "k" => ("Gain k", unit_k, 1.0, 0.01, 10.0),
+        "tau" => ("Time constant τ", TIME, 1.0, 0.01, 20.0),
+        "tau_z" => ("Inverse-response zero τ_z", TIME, 0.5, 0.0, 10.0),
+        "z" => ("Zero z (z < 0: inverse response)", TIME, -0.5, -10.0, 10.0),
+        _ => ("Dead time θ", TIME, 0.5, 0.0, 10.0),
+    };
+    FamilyParamInfo {
+        name,
+        label,
+        unit,
+        default,
+        min,
+        max,
+    }
+}
+
+/// Every plant family with its title, formula, integrator count and parameter declarations.
+pub fn family_infos() -> Vec<FamilyInfo> {
+    Family::IDS
+        .iter()
+        .map(|&id| {
+            let (title, formula, integrators) = match id {
+                "ipdt_ir" => (
+                    "Integrating, inverse response (IPDT-IR)",
+                    "P(s) = k(1 − τ_z s)e^(−θs) / (s(τs + 1))",
+                    1,
+                ),
+                "fopdt_ir" => (
+                    "First order, inverse response (FOPDT-IR)",
+                    "P(s) = k(1 − τ_z s)e^(−θs) / (τs + 1)",
+                    0,
+                ),
+                "piptd" => ("Pure integrator with dead time", "P(s) = k e^(−θs) / s", 1),
+                "diptd" => (
+                    "Double integrator with dead time",
+                    "P(s) = k e^(−θs) / s²",
+                    2,
+                ),
+                "ifoptd" => (
+                    "Integrator + first-order lag with dead time",
+                    "P(s) = k e^(−θs) / (s(τs + 1))",
+                    1,
+                ),
+                "ifoptd_zero" => (
+                    "Integrator + lag + zero with dead time",
+                    "P(s) = k(1 + z s)e^(−θs) / (s(τs + 1)),  z < 0: inverse response",
+                    1,
+                ),
+                _ => (
+                    "Integrator + unstable pole + zero with dead time",
+                    "P(s) = k(1 + z s)e^(−θs) / (s(τs − 1))",
+                    1,
+                ),
+            };
+            let unit_k = match integrators {
+                0 => "out/in",
+                1 => "out/(in·time)",
+                _ => "out/(in·time²)",
+            };
+            let names = Family::param_names(id).unwrap_or(&[]);
+            FamilyInfo {
+                id,
+                title,
+                formula,
+                integrators,
+                params: names.iter().map(|n| family_param(n, unit_k)).collect(),
+            }
+        })
+        .collect()
+}
+
 /// A linear plant `tf(s)·e^{−delay·s}` with an exact dead time.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Plant {
@@ -323,5 +434,39 @@ mod tests {
         assert_eq!(e.path, "tau");
         assert!(Plant::from_desc(&[1.0, 0.0, 0.0], &[1.0, 1.0], 0.0).is_err());
         assert!(Plant::from_desc(&[1.0], &[1.0, 1.0], -1.0).is_err());
+    }
+
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn family_infos_declare_every_family() {
+        let infos = family_infos();
+        let ids: Vec<&str> = infos.iter().map(|f| f.id).collect();
+        assert_eq!(ids, Family::IDS);
+        for f in &infos {
+            let names: Vec<&str> = f.params.iter().map(|p| p.name).collect();
+            assert_eq!(names, Family::param_names(f.id).unwrap(), "{}", f.id);
+            // The defaults make a valid plant, inside each slider's range.
+            let fam = Family::from_params(f.id, |n| {
+                f.params.iter().find(|p| p.name == n).map(|p| p.default)
+            })
+            .unwrap();
+            assert_eq!(fam.id(), f.id);
+            for p in &f.params {
+                assert!(
+                    p.min <= p.default && p.default <= p.max,
+                    "{}.{}",
+                    f.id,
+                    p.name
+                );
+            }
+            let poles_at_zero = fam
+                .rational()
+                .den
+                .to_desc()
+                .iter()
+                .rev()
+                .take_while(|c| **c == 0.0)
+                .count();
+            assert_eq!(poles_at_zero as u32, f.integrators, "{}", f.id);
+        }
     }
 }

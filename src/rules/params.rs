@@ -13,7 +13,8 @@ pub enum ParamDefault {
     Number(f64),
     /// Choice parameter.
     Text(String),
-    /// No default: the caller must give it (or it is derived, e.g. λ for a target Ms).
+    /// No default: the caller must give it when [`ParamInfo::required`] (or it is derived,
+    /// e.g. λ for a target Ms); otherwise the rule chooses it.
     None,
 }
 
@@ -40,6 +41,10 @@ pub struct ParamInfo {
     /// One-line help.
     #[serde(skip_serializing_if = "String::is_empty")]
     pub help: String,
+    /// The rule refuses to tune without it (unless a parameter that stands in for it is given,
+    /// e.g. `target_ms` for λ). A parameter with no default that is not required is chosen by
+    /// the rule when absent.
+    pub required: bool,
 }
 
 impl ParamInfo {
@@ -54,6 +59,7 @@ impl ParamInfo {
             max: Some(max),
             choices: vec![],
             help: String::new(),
+            required: false,
         }
     }
 
@@ -68,12 +74,19 @@ impl ParamInfo {
             max: None,
             choices: choices.iter().map(|c| c.to_string()).collect(),
             help: String::new(),
+            required: false,
         }
     }
 
     /// With a help line.
     pub fn help(mut self, h: &str) -> ParamInfo {
         self.help = h.into();
+        self
+    }
+
+    /// Marks the parameter as one the rule cannot do without.
+    pub fn required(mut self) -> ParamInfo {
+        self.required = true;
         self
     }
 

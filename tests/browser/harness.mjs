@@ -2,7 +2,7 @@
 // headless Debian Chromium through playwright-core on dist/pidlab.html opened from file://.
 // Chromium: /usr/bin/chromium (override with PIDLAB_CHROMIUM).
 import assert from 'node:assert/strict';
-import { mkdtempSync, rmSync, existsSync } from 'node:fs';
+import { mkdtempSync, rmSync, existsSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve, dirname } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -11,6 +11,17 @@ import { chromium } from 'playwright-core';
 export const root = resolve(dirname(fileURLToPath(import.meta.url)), '..', '..');
 export const dist = join(root, 'dist', 'pidlab.html');
 export const pageUrl = pathToFileURL(dist).href;
+
+/** methods().families of the page's module (www/pkg, instantiated in Node). The page's state
+ *  helpers validate family plants against them: a test that decodes a hash or cleans a
+ *  controller in Node calls S.setFamilies() with these first, as the page does on load. */
+export async function moduleFamilies() {
+  const pkg = join(root, 'www', 'pkg');
+  assert.ok(existsSync(join(pkg, 'pidlab_bg.wasm')), 'www/pkg missing: run scripts/page.sh --no-serve first');
+  const glue = await import(pathToFileURL(join(pkg, 'pidlab.js')).href);
+  glue.initSync({ module: readFileSync(join(pkg, 'pidlab_bg.wasm')) });
+  return glue.methods().families;
+}
 
 /** Launches Chromium with a throw-away profile; `close()` ends it and removes the profile.
  *  `requirePage: false` skips the check that dist/pidlab.html exists (bench/page-latency.mjs

@@ -5,6 +5,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/state.js';
+import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
 import { frames, setInput, ready } from './harness.mjs';
 
@@ -17,6 +18,7 @@ const K = 0.05, KP = 2.9933, KD = 7.1189;
 const IAE_CLOSED_FORM = (1 + K * KD) / (K * KP);
 
 before(async () => {
+  S.setFamilies(await H.moduleFamilies());
   browser = await H.launch();
 });
 
@@ -98,7 +100,7 @@ test('the Ajmeri & Ali preset: servo IAE 9.06, the model loop shown, and both su
   // The page writes the state to the URL hash; a reload restores it, model loop included.
   await page.waitForFunction(() => location.hash.includes('model_loop'), null, { timeout: 3000 });
   const hash = await page.evaluate(() => location.hash);
-  assert.deepEqual(S.decodeHash(hash).state.literal.model_loop, st.literal.model_loop);
+  assert.deepEqual(U.decodeHash(hash).state.literal.model_loop, st.literal.model_loop);
   await page.reload();
   await ready(page);
   assert.equal(await page.evaluate(() => location.hash), hash);
@@ -129,7 +131,7 @@ test('robustness: the perturbation changes the process only, never the internal 
   const ctl = await presetController(p0);
   await p0.close();
   st.pert = { k: 20, tau: 0, zero: 0, theta: 10 };
-  const { page, log } = await open(S.encodeHash(st));
+  const { page, log } = await open(U.encodeHash(st));
   const inputs = await page.evaluate(() => window.__pidlab.inputs());
   assert.deepEqual(inputs.controller.model_loop.plant, { family: 'piptd', k: K, theta: 5 }, 'the model stays nominal');
   const want = await page.evaluate((c) => {
@@ -200,7 +202,7 @@ test('an unstable model loop shows the verdict in the banner and marks the model
   st.literal = { ...S.cleanController(ctl), title: 'model loop gain 100' };
   st.literal.model_loop.cr = { num: [100], den: [1] };
   st.literal.model_loop.cy = { num: [100], den: [1] };
-  const { page, log } = await open(S.encodeHash(st));
+  const { page, log } = await open(U.encodeHash(st));
   const an = await page.evaluate(() => {
     const i = window.__pidlab.inputs();
     const a = window.__pidlab.wasm.analyze(i);
@@ -219,7 +221,7 @@ test('an unstable model loop shows the verdict in the banner and marks the model
   await page.close();
   // Perturbed: the model loop does not see the process, so it is reported once.
   st.pert = { k: 20, tau: 0, zero: 0, theta: 0 };
-  const { page: p2, log: log2 } = await open(S.encodeHash(st));
+  const { page: p2, log: log2 } = await open(U.encodeHash(st));
   const b2 = await banners(p2);
   assert.equal(b2.filter((x) => x.includes('Unstable set-point model loop')).length, 1, 'banners: ' + b2.join(' | '));
   assert.deepEqual(log.errors, []);

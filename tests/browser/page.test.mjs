@@ -4,16 +4,17 @@
 // Chromium: /usr/bin/chromium (override with PIDLAB_CHROMIUM).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { mkdirSync, readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { tmpdir } from 'node:os';
 import * as S from '../../www/state.js';
+import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
 import { root, frames, setInput } from './harness.mjs';
 
 let browser;
 
 before(async () => {
+  S.setFamilies(await H.moduleFamilies());
   browser = await H.launch();
   await pickLambdaMethod();
 });
@@ -97,7 +98,7 @@ test('loads from file:// with no console error and no network request', async ()
 });
 
 test('moving the λ slider sets the Ms readout to exactly what analyze returns', async () => {
-  const { page, log } = await open(S.encodeHash(boilerPk(1.0)));
+  const { page, log } = await open(U.encodeHash(boilerPk(1.0)));
   const seen = new Set();
   for (const lam of [0.5, 0.8, 1.2, 1.6, 1.9]) {
     await setInput(page, '#mp-lambda', lam);
@@ -160,7 +161,7 @@ test('every method and every preset renders all plots', async () => {
 });
 
 test('the target-Ms control solves λ so that the Ms readout equals the target', async () => {
-  const { page, log } = await open(S.encodeHash(boilerPk(1.0)));
+  const { page, log } = await open(U.encodeHash(boilerPk(1.0)));
   await page.check('#target-on');
   await frames(page);
   assert.equal(await page.isDisabled('#mp-lambda'), true);
@@ -187,7 +188,7 @@ test('a URL with state restores it', async () => {
   st.scenario.t_end = 40;
   st.scenario.disturbance.time = 20;
   st.pert.theta = 20;
-  const { page } = await open(S.encodeHash(st));
+  const { page } = await open(U.encodeHash(st));
   assert.equal(await page.inputValue('#family'), 'ipdt_ir');
   assert.equal(Number(await page.inputValue('#fp-k-n')), 0.8);
   assert.equal(Number(await page.inputValue('#fp-theta-n')), 0.3);
@@ -202,7 +203,7 @@ test('a URL with state restores it', async () => {
   // The hash the page writes back decodes to the same state.
   await page.waitForTimeout(600);
   const h = await page.evaluate(() => location.hash);
-  assert.deepEqual(S.decodeHash(h).state.plant, st.plant);
+  assert.deepEqual(U.decodeHash(h).state.plant, st.plant);
   await page.close();
 });
 
@@ -211,7 +212,7 @@ test('an unstable setting shows the banner', async () => {
   st.plant = { family: 'ipdt_ir', k: 1, tau: 1, tau_z: 0.2, theta: 1 };
   st.method = '__literal';
   st.literal = { cr: { num: [20], den: [1] }, cy: { num: [20], den: [1] }, title: 'P controller, gain 20' };
-  const { page, log } = await open(S.encodeHash(st));
+  const { page, log } = await open(U.encodeHash(st));
   const banners = await page.$$eval('#banners .banner', (b) => b.map((x) => x.textContent));
   assert.ok(banners.some((b) => /unstable/i.test(b)), 'banner: ' + banners.join(' | '));
   assert.equal(await page.textContent('#ro-stable'), 'UNSTABLE');
@@ -226,7 +227,7 @@ test('a neutral-type loop (|L(j∞)| ≥ 1 through an ideal derivative) shows it
   st.method = '__literal';
   const c = { num: [10, 1, 0.1], den: [1, 0] };
   st.literal = { cr: { num: [1, 0.1], den: [1, 0] }, cy: c, title: 'PID with K_D = 10, ideal derivative' };
-  const { page, log } = await open(S.encodeHash(st));
+  const { page, log } = await open(U.encodeHash(st));
   const banners = await page.$$eval('#banners .banner', (b) => b.map((x) => x.textContent));
   assert.ok(banners.some((b) => /neutral/i.test(b)), 'banner: ' + banners.join(' | '));
   assert.deepEqual(log.errors, []);
@@ -236,7 +237,7 @@ test('a neutral-type loop (|L(j∞)| ≥ 1 through an ideal derivative) shows it
 test('robustness: the true-plant Ms is analyze on the perturbed plant; the nominal stays drawn', async () => {
   const st = boilerPk(1.0);
   st.pert = { k: 30, tau: 0, zero: 0, theta: 40 };
-  const { page, log } = await open(S.encodeHash(st));
+  const { page, log } = await open(U.encodeHash(st));
   assert.equal(await page.isVisible('#ro-true-box'), true);
   const got = await page.evaluate((lam) => {
     const w = window.__pidlab.wasm;
@@ -257,7 +258,7 @@ test('robustness: the true-plant Ms is analyze on the perturbed plant; the nomin
 test('embed mode shows the plots and only the chosen sliders', async () => {
   const st = boilerPk(1.0);
   st.show = ['mp-lambda', 'fp-theta'];
-  const { page, log } = await open(S.encodeHash(st, true), { width: 640, height: 700 });
+  const { page, log } = await open(U.encodeHash(st, true), { width: 640, height: 700 });
   assert.equal(await page.isVisible('#mp-lambda'), true);
   assert.equal(await page.isVisible('#fp-theta'), true);
   assert.equal(await page.isVisible('#fp-k'), false);
@@ -270,7 +271,7 @@ test('embed mode shows the plots and only the chosen sliders', async () => {
 });
 
 test('CSV export of the responses and PNG export of a plot', async () => {
-  const { page } = await open(S.encodeHash(boilerPk(1.0)));
+  const { page } = await open(U.encodeHash(boilerPk(1.0)));
   const [csv] = await Promise.all([page.waitForEvent('download'), page.click('#export-csv')]);
   const text = readFileSync(await csv.path(), 'utf8').trim().split('\n');
   assert.equal(text[0], 't,r,d,y,u');
@@ -288,7 +289,7 @@ test('CSV export of the responses and PNG export of a plot', async () => {
 });
 
 test('a custom num/den plant keeps the last controller and renders', async () => {
-  const { page, log } = await open(S.encodeHash(boilerPk(1.0)));
+  const { page, log } = await open(U.encodeHash(boilerPk(1.0)));
   await setInput(page, '#family', 'custom', 'change');
   assert.match(await page.$eval('#method', (m) => m.options[m.selectedIndex].textContent), /held/);
   await page.fill('#custom-den', '2, 3, 1, 0');
@@ -304,7 +305,9 @@ test('a custom num/den plant keeps the last controller and renders', async () =>
 });
 
 test('no URL or user text is interpreted as HTML', async () => {
-  for (const f of ['app.js', 'state.js']) {
+  const modules = readdirSync(join(root, 'www')).filter((f) => f.endsWith('.js'));
+  assert.ok(modules.includes('app.js') && modules.includes('state.js'), modules.join(', '));
+  for (const f of modules) {
     const src = readFileSync(join(root, 'www', f), 'utf8');
     assert.doesNotMatch(src, /innerHTML|outerHTML|insertAdjacentHTML|document\.write|\beval\(|new Function/, f);
   }
@@ -312,7 +315,7 @@ test('no URL or user text is interpreted as HTML', async () => {
   st.method = '__literal';
   st.literal = { cr: { num: [1], den: [1, 0] }, cy: { num: [1], den: [1, 0] }, title: '<img src=x onerror="window.__pwned=1">' };
   st.pins = [{ label: '<b id=pwn>x</b>', plant: st.plant, controller: st.literal, scenario: st.scenario }];
-  const { page } = await open(S.encodeHash(st));
+  const { page } = await open(U.encodeHash(st));
   assert.equal(await page.evaluate(() => document.querySelectorAll('img, #pwn').length), 0);
   assert.equal(await page.evaluate(() => window.__pwned), undefined);
   assert.match(await page.textContent('#method'), /<img src=x/);
@@ -320,7 +323,7 @@ test('no URL or user text is interpreted as HTML', async () => {
 });
 
 test('input-to-paint latency of the λ slider', async () => {
-  const { page } = await open(S.encodeHash(boilerPk(1.0)));
+  const { page } = await open(U.encodeHash(boilerPk(1.0)));
   const n = 120;
   const r = await page.evaluate(async (count) => {
     const x = document.getElementById('mp-lambda');
@@ -394,18 +397,20 @@ test('input-to-paint latency of the λ slider', async () => {
   await page.close();
 });
 
-test('screenshots (docs/screenshot.png; 360 px wide in /tmp)', async () => {
-  mkdirSync(join(root, 'docs'), { recursive: true });
+// Screenshots go to target/screenshots/ (ignored by git): the tests leave the tracked tree as it was.
+test('screenshots (target/screenshots/: 1280 and 360 px wide)', async () => {
+  const shots = join(root, 'target', 'screenshots');
+  mkdirSync(shots, { recursive: true });
   const st = boilerPk(1.9);
-  const { page } = await open(S.encodeHash(st));
+  const { page } = await open(U.encodeHash(st));
   await page.click('#pin');
   await setInput(page, '#mp-lambda', 1.2);
   await page.waitForTimeout(200);
-  await page.screenshot({ path: join(root, 'docs', 'screenshot.png'), fullPage: true });
+  await page.screenshot({ path: join(shots, 'pidlab.png'), fullPage: true });
   await page.close();
-  const small = await open(S.encodeHash(st), { width: 360, height: 800 });
+  const small = await open(U.encodeHash(st), { width: 360, height: 800 });
   const overflow = await small.page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
-  await small.page.screenshot({ path: join(tmpdir(), 'pidlab-360.png'), fullPage: true });
+  await small.page.screenshot({ path: join(shots, 'pidlab-360.png'), fullPage: true });
   assert.ok(overflow <= 0, `no horizontal scrolling at 360 px (overflow ${overflow} px)`);
   await small.page.close();
 });

@@ -1,8 +1,13 @@
-// Unit tests of the page's pure helpers (www/state.js): URL state, formatting, plant helpers.
+// Unit tests of the page's pure helpers (www/state.js, www/url.js): URL state, formatting, plant helpers.
 // Run with: node --test tests/browser/
-import { test } from 'node:test';
+import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/state.js';
+import * as U from '../../www/url.js';
+import * as H from './harness.mjs';
+
+// The plant families come from the module, as on the page.
+before(async () => S.setFamilies(await H.moduleFamilies()));
 
 test('state survives the URL hash round trip', () => {
   const st = S.defaultState();
@@ -14,8 +19,8 @@ test('state survives the URL hash round trip', () => {
   st.scenario.settling_band = 0.05;
   st.pert = { k: 10, tau: -20, zero: 0, theta: 50 };
   st.show = ['mp-lambda'];
-  const h = S.encodeHash(st, true);
-  const back = S.decodeHash(h);
+  const h = U.encodeHash(st, true);
+  const back = U.decodeHash(h);
   assert.equal(back.embed, true);
   assert.deepEqual(back.state, st);
 });
@@ -32,7 +37,7 @@ test('malformed or hostile hash state falls back field by field', () => {
     pins: [{ label: 'p', plant: { num: [1], den: [1, 0], delay: 1 }, controller: { cr: { num: [1], den: [1] }, cy: { num: [1], den: [1] } } }, { bogus: true }],
   };
   const q = new URLSearchParams({ s: JSON.stringify(bad) });
-  const st = S.decodeHash('#' + q.toString()).state;
+  const st = U.decodeHash('#' + q.toString()).state;
   const def = S.defaultState();
   assert.deepEqual(st.plant, def.plant);
   assert.equal(st.method, def.method);
@@ -45,8 +50,8 @@ test('malformed or hostile hash state falls back field by field', () => {
   assert.deepEqual(st.scenario.setpoint, { time: 1, size: 1 });
   assert.deepEqual(st.pert, { k: 50, tau: 0, zero: 0, theta: -50 });
   assert.equal(st.pins.length, 1);
-  assert.equal(S.decodeHash('#s=%7Bnot json').state, null);
-  assert.equal(S.decodeHash('').state, null);
+  assert.equal(U.decodeHash('#s=%7Bnot json').state, null);
+  assert.equal(U.decodeHash('').state, null);
 });
 
 test('numbers and polynomials are written the way the readouts show them', () => {
@@ -96,7 +101,7 @@ test('a controller with a set-point model loop survives the hash round trip; a m
   st.method = '__literal';
   st.literal = { ...structuredClone(ctl), title: 'Ajmeri & Ali' };
   st.pins = [{ label: 'pcs', plant: { family: 'piptd', k: 0.06, theta: 5.5 }, controller: structuredClone(ctl), scenario: structuredClone(S.DEFAULT_SCENARIO) }];
-  assert.deepEqual(S.decodeHash(S.encodeHash(st)).state, st);
+  assert.deepEqual(U.decodeHash(U.encodeHash(st)).state, st);
 
   // A model plant as presets() writes it (num/den/delay and the family) is kept in family form.
   const full = { ...ml, plant: { family: 'piptd', k: 0.05, theta: 5, num: [0.05], den: [1, 0], delay: 5 } };
@@ -117,7 +122,7 @@ test('a controller with a set-point model loop survives the hash round trip; a m
   for (const m of bad) {
     assert.equal(S.cleanController({ ...ctl, model_loop: m }), null, JSON.stringify(m));
     const raw = { ...st, literal: { ...ctl, model_loop: m, title: 't' }, pins: [{ ...st.pins[0], controller: { ...ctl, model_loop: m } }] };
-    const back = S.decodeHash('#' + new URLSearchParams({ s: JSON.stringify(raw) }).toString()).state;
+    const back = U.decodeHash('#' + new URLSearchParams({ s: JSON.stringify(raw) }).toString()).state;
     assert.equal(back.literal, null, 'literal with model_loop ' + JSON.stringify(m));
     assert.equal(back.pins.length, 0, 'pin with model_loop ' + JSON.stringify(m));
   }

@@ -582,6 +582,7 @@ impl super::Rule for M2Theta {
             "arvanitis_m2_theta",
             "Arvanitis 2012, Method II (direct synthesis), θ = K_P/K_I set directly",
             vec![ParamInfo::number("theta_design", "θ (normalized, > θ_min)", None, 0.0, 1000.0)
+                .required()
                 .help("θ = K_P/K_I in normalized units; must exceed θ_min = (d + τ_Z + max(1,d) + 1)/2")],
         )
     }

@@ -9,11 +9,11 @@ use super::{
     Fit, FitQuantity, Gains, IpdLoop, MethodISolution, Process, Section6Setting, TdSource, BOILER,
 };
 use crate::analysis::freq::analyze;
+use crate::analysis::{simulate, SimResult};
 use crate::error::{Error, Result};
 use crate::model::controller::{Controller, Pid};
 use crate::model::plant::Family;
 use crate::rules::{self, Design};
-use crate::analysis::{simulate, SimResult};
 
 // ---------------------------------------------------------------------------------------------
 // Tables 2-8 against the exact computation (the fits themselves: tables.rs)

@@ -693,6 +693,7 @@ pub fn methods() -> Vec<MethodInfo> {
         structure: "1-DOF PID × (a₁s+1)²/(b₂s²+b₁s+1) (PIPTD: /(b₁s+1)²) on the error, set-point filter F (Eqs. 35, 37, 38)".into(),
         params: vec![
             ParamInfo::number("lambda", "λ (closed-loop time constant)", None, 0.01, 100.0)
+                .required()
                 .help("required unless target_ms or fit_ms is given"),
             ParamInfo::number("p", "p (set-point filter time constant)", None, 0.01, 100.0)
                 .help("default θ; the paper tunes p between 0.5θ and 3θ"),

@@ -459,6 +459,7 @@ pub fn methods() -> Vec<MethodInfo> {
             .into(),
         params: vec![
             ParamInfo::number("lambda", "λ (closed-loop poles at −λ)", None, 0.01, 20.0)
+                .required()
                 .help("required unless target_ms is given; admissible interval in details.lambda_range"),
             ParamInfo::number("epsilon", "ε (set-point weight, Eq. 19)", Some(EPSILON_DEFAULT), 0.0, 1.0),
             ParamInfo::number("target_ms", "target Ms (solves λ)", None, 1.1, 20.0)

@@ -1,0 +1,133 @@
+// A trap in the computation module (a wasm RuntimeError, as a Rust panic gives) and the page's
+// recovery: www/engine.js drops the dead instance, re-instantiates the module, and the page says
+// what failed; the next change computes correct numbers again. The trap is forced through the
+// page's test hook (#test=1): from then on every call of the live instance throws a
+// WebAssembly.RuntimeError, as a dead instance does, so a page that kept calling it would fail
+// every later assertion. Checked on the single-file page (file://) and on www/ served over HTTP
+// as ES modules (the engine gets its fresh glue copy differently in the two).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { createServer } from 'node:http';
+import { readFile } from 'node:fs/promises';
+import { join, normalize, extname } from 'node:path';
+import * as S from '../../www/state.js';
+import * as U from '../../www/url.js';
+import * as H from './harness.mjs';
+import { root, setInput, ready } from './harness.mjs';
+
+let browser;
+
+before(async () => {
+  S.setFamilies(await H.moduleFamilies());
+  browser = await H.launch();
+});
+
+after(async () => {
+  if (browser) await browser.close();
+});
+
+const METHOD = 'praveen_kumar';
+const boiler = (lambda) => ({ ...S.defaultState(), method: METHOD, params: { lambda, epsilon: 0.2 }, target: null });
+/** The hash of a state, with the test hooks on. */
+const testHash = (st) => '#test=1&' + U.encodeHash(st).slice(1);
+
+const banners = (page) => page.$$eval('#banners .banner', (b) => b.map((x) => x.textContent));
+
+/** The Ms readout and what a fresh tune + analyze of the page's live module give for λ. */
+async function msNow(page, lambda) {
+  return page.evaluate(([m, l]) => {
+    const w = window.__pidlab.wasm;
+    const st = window.__pidlab.state();
+    const t = w.tune({ method: m, plant: st.plant, params: { lambda: l, epsilon: 0.2 } });
+    const a = w.analyze({ plant: st.plant, controller: { cr: t.controller.cr, cy: t.controller.cy } });
+    const o = document.getElementById('ro-ms');
+    return { ms: a.ms, value: o.getAttribute('data-value'), text: o.textContent, fmt: window.__pidlab.fmt(a.ms) };
+  }, [METHOD, lambda]);
+}
+
+/** Forces a trap, moves λ, and checks the message, the new instance and the next numbers. */
+async function trapAndRecover(page, log) {
+  assert.equal(await page.evaluate(() => window.__pidlabTest.generation()), 1, 'one instance after load');
+  // The glue copy for the restart is prepared after load (a separate module instance).
+  await page.waitForFunction(() => window.__pidlabTest.spareReady(), null, { timeout: 10000 });
+  const before = await msNow(page, 1.0);
+  assert.equal(before.value, String(before.ms), 'Ms readout before the trap');
+
+  await page.evaluate(() => window.__pidlabTest.forceTrap());
+  // The render of this input calls tune first: that call traps.
+  await setInput(page, '#mp-lambda', 1.3);
+  const b = await banners(page);
+  const crash = b.find((x) => x.startsWith('The computation module crashed'));
+  assert.ok(crash, 'a banner says the module crashed: ' + b.join(' | '));
+  assert.match(crash, /tune\(\) trapped \(RuntimeError: unreachable/);
+  assert.match(crash, /has been restarted/);
+  assert.equal(await page.evaluate(() => window.__pidlabTest.generation()), 2, 're-instantiated once');
+  assert.equal(await page.textContent('#ro-ms'), '–', 'no Ms from the call that trapped');
+  assert.ok(log.errors.some((e) => /pidlab: tune\(\) trapped/.test(e)), 'the trap is logged: ' + log.errors.join(' | '));
+
+  // The next slider move runs on the new instance: correct numbers, no banner.
+  await setInput(page, '#mp-lambda', 1.6);
+  const after = await msNow(page, Number(await page.inputValue('#mp-lambda')));
+  assert.equal(after.value, String(after.ms), 'Ms readout after the restart = a fresh analyze');
+  assert.equal(after.text, after.fmt);
+  assert.deepEqual(await banners(page), []);
+  // The input that trapped was not memoized as a failure: it computes now.
+  await setInput(page, '#mp-lambda', 1.3);
+  const again = await msNow(page, Number(await page.inputValue('#mp-lambda')));
+  assert.equal(again.value, String(again.ms), 'the λ that trapped computes on the new instance');
+  assert.notEqual(again.value, after.value);
+  assert.equal(await page.evaluate(() => window.__pidlabTest.generation()), 2, 'no further restart');
+}
+
+test('single-file page: a forced trap shows a message, re-instantiates the module, and the next slider move is right', async () => {
+  const { page, log } = await H.open(browser.ctx, testHash(boiler(1.0)));
+  await trapAndRecover(page, log);
+  assert.deepEqual(log.blocked, []);
+  await page.close();
+  // Without #test=1 the page has no test hook.
+  const plain = await H.open(browser.ctx, U.encodeHash(boiler(1.0)));
+  assert.equal(await plain.page.evaluate(() => typeof window.__pidlabTest), 'undefined');
+  await plain.page.close();
+});
+
+const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm' };
+
+/** Serves www/ on 127.0.0.1 (an ephemeral port); resolves to { url, close }. */
+function serveWww() {
+  const www = join(root, 'www');
+  const server = createServer(async (req, res) => {
+    const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^([/\\])+/, '');
+    const file = join(www, path || 'index.html');
+    if (!file.startsWith(www)) { res.writeHead(403).end(); return; }
+    try {
+      const body = await readFile(file);
+      res.writeHead(200, { 'content-type': MIME[extname(file)] || 'application/octet-stream' }).end(body);
+    } catch {
+      res.writeHead(404).end();
+    }
+  });
+  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve({
+    url: `http://127.0.0.1:${server.address().port}/`,
+    close: () => new Promise((r) => server.close(r)),
+  })));
+}
+
+test('www/ served as ES modules: loads, and recovers from a forced trap the same way', async () => {
+  const srv = await serveWww();
+  const page = await browser.ctx.newPage();
+  const log = { errors: [], requests: [] };
+  page.on('console', (m) => { if (m.type() === 'error') log.errors.push(m.text()); });
+  page.on('pageerror', (e) => log.errors.push(String(e)));
+  page.on('request', (r) => log.requests.push(r.url()));
+  try {
+    await page.goto(srv.url + 'index.html' + testHash(boiler(1.0)));
+    await ready(page);
+    assert.deepEqual(log.errors, [], 'no error on load');
+    await trapAndRecover(page, log);
+    for (const u of log.requests) assert.ok(u.startsWith(srv.url), 'only the page\'s own files: ' + u);
+    assert.ok(log.requests.some((u) => u.endsWith('pkg/pidlab.js?instance=2')), 'a second copy of the glue was loaded');
+  } finally {
+    await page.close();
+    await srv.close();
+  }
+});

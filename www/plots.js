@@ -1,0 +1,239 @@
+// The four plots (set-point response, load response, control signal, Nyquist): the series of
+// the current run and of the pins, thinned to the canvas width, drawn by the module's plot().
+import * as S from './state.js';
+import * as E from './engine.js';
+import { $, setHidden, errText } from './dom.js';
+import { store } from './store.js';
+import { lap } from './perf.js';
+import * as P from './pins.js';
+import { showBanners } from './readouts.js';
+
+const C_CUR = P.COLORS.current;
+const C_REF = P.COLORS.reference;
+
+const dpr = () => Math.max(1, Math.min(3, window.devicePixelRatio || 1));
+
+// CSS sizes of the canvases, kept by a ResizeObserver so a render never forces a layout.
+const cssSize = new Map();
+
+/** Watches the canvases' sizes; `onResize()` when one changed (the plots must be drawn again). */
+export function watchSizes(onResize) {
+  if (typeof ResizeObserver !== 'function') return;
+  const ro = new ResizeObserver((entries) => {
+    let any = false;
+    for (const e of entries) {
+      const old = cssSize.get(e.target.id);
+      const sz = { width: e.contentRect.width, height: e.contentRect.height };
+      if (!old || old.width !== sz.width || old.height !== sz.height) any = true;
+      cssSize.set(e.target.id, sz);
+    }
+    if (any) onResize();
+  });
+  for (const c of document.querySelectorAll('.plot canvas')) ro.observe(c);
+}
+
+function sizeCanvas(c) {
+  let sz = cssSize.get(c.id);
+  if (!sz) {
+    const rect = c.getBoundingClientRect();
+    sz = { width: rect.width, height: rect.height };
+    cssSize.set(c.id, sz);
+  }
+  const k = dpr();
+  const w = Math.max(60, Math.round(sz.width * k));
+  const h = Math.max(60, Math.round(sz.height * k));
+  if (c.width !== w) c.width = w;
+  if (c.height !== h) c.height = h;
+}
+
+/** Slice of a simulation between two times (samples at k·dt). */
+function windowed(sim, key, t0, t1) {
+  const t = sim.t;
+  const n = t.length;
+  if (n === 0) return { x: [], y: [] };
+  const dt = n > 1 ? t[1] - t[0] : 1;
+  const a = Math.max(0, Math.min(n - 1, Math.floor((t0 - t[0]) / dt)));
+  const b = Math.max(a, Math.min(n - 1, Math.ceil((t1 - t[0]) / dt)));
+  return { x: t.slice(a, b + 1), y: sim[key].slice(a, b + 1) };
+}
+
+/**
+ * Thins a dense series for drawing: per horizontal bucket (one per CSS pixel of the plot) it
+ * keeps the minimum and the maximum sample, in time order, so the drawn envelope is exact.
+ * (The plot module decimates too; thinning here keeps the data handed to wasm small.)
+ */
+function thin(x, y, buckets) {
+  const n = Math.min(x.length, y.length);
+  if (n <= 2 * buckets) return { x, y };
+  const x0 = x[0], span = x[n - 1] - x[0] || 1;
+  const ox = [], oy = [];
+  let b = -1, iMin = 0, iMax = 0;
+  const flush = () => {
+    if (b < 0) return;
+    const a = Math.min(iMin, iMax), c = Math.max(iMin, iMax);
+    ox.push(x[a]); oy.push(y[a]);
+    if (c !== a) { ox.push(x[c]); oy.push(y[c]); }
+  };
+  for (let i = 0; i < n; i++) {
+    const k = Math.floor(((x[i] - x0) / span) * buckets);
+    if (k !== b) { flush(); b = k; iMin = i; iMax = i; continue; }
+    if (y[i] < y[iMin]) iMin = i;
+    if (y[i] > y[iMax]) iMax = i;
+  }
+  flush();
+  if (ox[ox.length - 1] !== x[n - 1]) { ox.push(x[n - 1]); oy.push(y[n - 1]); }
+  return { x: ox, y: oy };
+}
+
+/** Bucket count of thin() for a canvas: one per CSS pixel of its width. */
+function buckets(canvasId) {
+  const sz = cssSize.get(canvasId);
+  return Math.max(50, Math.round(sz ? sz.width : 600));
+}
+
+// The thinned samples of a simulation, kept with it by window and bucket count: a pinned
+// design's curves, or a simulation the memo handed back, are not sliced and thinned again.
+const thinnedOf = new WeakMap();
+/** Samples of sim[key] between t0 and t1 (all of them when t0 is null), thinned to `nb` buckets. */
+function series(sim, key, t0, t1, nb) {
+  let m = thinnedOf.get(sim);
+  if (!m) { m = new Map(); thinnedOf.set(sim, m); }
+  const id = key + ' ' + t0 + ' ' + t1 + ' ' + nb;
+  let s = m.get(id);
+  if (!s) {
+    const w = t0 === null ? { x: sim.t, y: sim[key] } : windowed(sim, key, t0, t1);
+    s = thin(w.x, w.y, nb);
+    m.set(id, s);
+  }
+  return s;
+}
+
+// JSON text of sample arrays, kept with the array: the curves of pinned designs and of
+// memoized simulations are serialized once, not on every render.
+const jsonOf = new WeakMap();
+function arrayText(a) {
+  let t = jsonOf.get(a);
+  if (t === undefined) {
+    t = JSON.stringify(a);
+    jsonOf.set(a, t);
+  }
+  return t;
+}
+
+/** The JSON text of a plot spec (as JSON.stringify, with each series' x and y placed last). */
+function specText(spec) {
+  const open = (o) => { const t = JSON.stringify(o); return t === '{}' ? '{' : t.slice(0, -1) + ','; };
+  const series = spec.series.map(({ x, y, ...rest }) => open(rest) + '"x":' + arrayText(x) + ',"y":' + arrayText(y) + '}');
+  const { series: _, ...head } = spec;
+  return open(head) + '"series":[' + series.join(',') + ']}';
+}
+
+const boundary = { asObject: false };
+// The spec (JSON text and canvas size) each canvas was last drawn with: a plot whose spec did
+// not change is not drawn again (the canvas keeps its pixels until its size changes).
+const drawn = new Map();
+function plot(spec) {
+  const c = $(spec.canvas);
+  try {
+    const t0 = performance.now();
+    const text = specText(spec);
+    const key = (c ? c.width + 'x' + c.height : '') + ' ' + text;
+    lap('plots: spec', t0);
+    if (drawn.get(spec.canvas) === key) return;
+    drawn.delete(spec.canvas);
+    const t1 = performance.now();
+    if (boundary.asObject) {
+      E.call('plot', spec);
+    } else {
+      try {
+        E.call('plot', text);
+      } catch (e) {
+        // A boundary that only takes objects: send the object from now on. (A spec field
+        // error, "spec.<field>: ...", is a real error and is reported; so is a crash.)
+        if (e instanceof E.EngineCrash || /^spec\./.test(errText(e))) throw e;
+        boundary.asObject = true;
+        E.call('plot', spec);
+      }
+    }
+    lap('plots: draw', t1);
+    drawn.set(spec.canvas, key);
+  } catch (e) {
+    showBanners([...(store.last ? store.last.banners : []), { kind: 'warn', title: 'Plot ' + spec.canvas, text: errText(e) }]);
+  }
+}
+
+/** Draws the four plots of a render's results (with the pins). */
+export function drawPlots(r) {
+  P.ensurePins();
+  const pins = P.pinned();
+  const { state } = store;
+  const sc = state.scenario;
+  const hasLoad = sc.disturbance.size !== 0 && sc.disturbance.time < sc.t_end;
+  const spEnd = hasLoad && sc.disturbance.time > sc.setpoint.time ? sc.disturbance.time : sc.t_end;
+  const k = dpr();
+  const runs = []; // {sim, color, label, faint}
+  pins.forEach((p) => { if (p.sim) runs.push({ sim: p.sim, color: p.color, label: p.label, faint: false }); });
+  if (r.simNom) runs.push({ sim: r.simNom, color: C_CUR, label: 'y nominal plant', faint: true });
+  const cur = pins.length ? ' (current design)' : '';
+  if (r.sim) runs.push({ sim: r.sim, color: C_CUR, label: (S.isPerturbed(state.pert) ? 'y true plant' : 'y') + cur, faint: false });
+  const divLines = r.sim && r.sim.diverged && Number.isFinite(r.sim.diverged_at) ? [{ x: r.sim.diverged_at, label: 'diverged', color: '#D55E00' }] : [];
+  for (const id of ['plot-servo', 'plot-load', 'plot-u', 'plot-nyquist']) sizeCanvas($(id));
+
+  const t0 = performance.now();
+  const servo = [];
+  let nb = buckets('plot-servo');
+  if (r.sim) {
+    const w = series(r.sim, 'r', sc.setpoint.time, spEnd, nb);
+    servo.push({ label: 'r', x: w.x, y: w.y, color: C_REF, dash: 'dash', width: 1.5 });
+  }
+  for (const run of runs) {
+    const w = series(run.sim, 'y', sc.setpoint.time, spEnd, nb);
+    servo.push({ label: run.label, x: w.x, y: w.y, color: run.color, faint: run.faint });
+  }
+  lap('plots: series', t0);
+  plot({ canvas: 'plot-servo', kind: 'time', dpr: k, title: 'Set-point response', xlabel: 'time', ylabel: 'y, r', series: servo, xrange: spEnd > sc.setpoint.time ? [sc.setpoint.time, spEnd] : null, vlines: divLines });
+
+  const t1 = performance.now();
+  const load = [];
+  nb = buckets('plot-load');
+  if (hasLoad) {
+    for (const run of runs) {
+      const w = series(run.sim, 'y', sc.disturbance.time, sc.t_end, nb);
+      load.push({ label: run.label, x: w.x, y: w.y, color: run.color, faint: run.faint });
+    }
+    if (r.sim) {
+      const w = series(r.sim, 'r', sc.disturbance.time, sc.t_end, nb);
+      load.unshift({ label: 'r', x: w.x, y: w.y, color: C_REF, dash: 'dash', width: 1.5 });
+    }
+  }
+  lap('plots: series', t1);
+  plot({ canvas: 'plot-load', kind: 'time', dpr: k, title: hasLoad ? 'Load response (step at the plant input)' : 'Load response: no load step in this scenario', xlabel: 'time', ylabel: 'y', series: load, xrange: hasLoad ? [sc.disturbance.time, sc.t_end] : [0, 1], vlines: divLines });
+
+  const t2 = performance.now();
+  nb = buckets('plot-u');
+  const u = runs.map((run) => {
+    const w = series(run.sim, 'u', null, null, nb);
+    return { label: run.label.replace(/^y/, 'u'), x: w.x, y: w.y, color: run.color, faint: run.faint };
+  });
+  lap('plots: series', t2);
+  plot({ canvas: 'plot-u', kind: 'time', dpr: k, title: 'Control signal', xlabel: 'time', ylabel: 'u', series: u, vlines: divLines });
+
+  const ny = [];
+  pins.forEach((p) => { if (p.L) ny.push({ label: p.label, x: p.L.re, y: p.L.im, color: p.color }); });
+  let circle = null;
+  if (r.ctl) {
+    const L = S.loopCurve(r.an, state.plant, r.ctl);
+    if (r.anTrue) {
+      const Lt = S.loopCurve(r.anTrue, r.truePlant, r.ctl);
+      ny.push({ label: 'L nominal', x: L.re, y: L.im, color: C_CUR, faint: true });
+      ny.push({ label: 'L true plant', x: Lt.re, y: Lt.im, color: C_CUR });
+    } else {
+      ny.push({ label: '', x: L.re, y: L.im.map((v) => -v), color: C_CUR, dash: 'dot', faint: true, width: 1.5 });
+      ny.push({ label: 'L(jω)' + (pins.length ? ' (current design)' : ''), x: L.re, y: L.im, color: C_CUR });
+    }
+    r.L = L;
+    if (r.an && Number.isFinite(r.an.ms) && r.an.ms > 0) circle = { cx: -1, cy: 0, r: 1 / r.an.ms, label: 'Ms circle, r = 1/Ms', color: '#D55E00' };
+  }
+  plot({ canvas: 'plot-nyquist', kind: 'nyquist', dpr: k, title: 'Nyquist plot of L', xlabel: 'Re L', ylabel: 'Im L', series: ny, circle, points: [{ x: -1, y: 0, label: '−1' }] });
+  setHidden($('nyquist-note'), !(r.ctl && r.ctl.model_loop));
+}
