@@ -1,0 +1,268 @@
+//! The sweep of `L(jω)` on the imaginary axis: the band and the tail bound that stops it,
+//! the adaptive sampling, and the rotation-tail window of a delayed biproper loop.
+
+use super::{HighFreq, LoopTf, MsLimits};
+use crate::model::poly::C64;
+
+/// Characteristic frequencies: magnitudes of the non-zero poles and zeros of L and 1/θ.
+fn char_freqs(l: &LoopTf) -> (f64, f64) {
+    let mut f: Vec<f64> =
+        l.lr.num
+            .roots()
+            .into_iter()
+            .chain(l.lr.den.roots())
+            .map(|z| z.norm())
+            .filter(|x| x.is_finite() && *x > 1e-12)
+            .collect();
+    if l.delay > 0.0 {
+        f.push(1.0 / l.delay);
+    }
+    if f.is_empty() {
+        f.push(1.0);
+    }
+    // clamp to a range where a frequency sweep is meaningful in f64
+    let lo = f
+        .iter()
+        .cloned()
+        .fold(f64::INFINITY, f64::min)
+        .clamp(1e-9, 1e9);
+    let hi = f.iter().cloned().fold(0.0, f64::max).clamp(lo, 1e9);
+    (lo, hi)
+}
+
+/// Tail bound: `T(ω) = sup_{ω'≥ω} |L_rat(jω')|` sampled on a log grid (suffix maximum),
+/// with the ω → ∞ limit appended.
+pub(super) struct Tail {
+    w: Vec<f64>,
+    vals: Vec<C64>,
+    sup: Vec<f64>,
+    inf_val: f64,
+}
+
+impl Tail {
+    fn new(l: &LoopTf, lo: f64, hi: f64, l_inf: f64, extra: &[f64]) -> Tail {
+        let n = ((hi.log10() - lo.log10()) * 100.0)
+            .ceil()
+            .clamp(10.0, 20_000.0) as usize;
+        let mut w: Vec<f64> = (0..=n)
+            .map(|i| lo * (hi / lo).powf(i as f64 / n as f64))
+            .collect();
+        for &p in extra {
+            for k in -20..=20 {
+                let x = p * (1.0 + 0.005 * k as f64);
+                if x > lo && x < hi {
+                    w.push(x);
+                }
+            }
+        }
+        w.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+        let vals: Vec<C64> = w.iter().map(|&x| l.rat(C64::new(0.0, x))).collect();
+        let mut sup = vec![0.0; w.len()];
+        let mut m = l_inf;
+        for i in (0..w.len()).rev() {
+            m = m.max(vals[i].norm());
+            sup[i] = m;
+        }
+        Tail {
+            w,
+            vals,
+            sup,
+            inf_val: l_inf,
+        }
+    }
+
+    /// Start of the rotation region of a delayed biproper loop: beyond it the rational part
+    /// changes by less than 5 % over one period 2π/θ of the delay's phase.
+    fn rotation_start(&self, delay: f64) -> f64 {
+        let period = 2.0 * std::f64::consts::PI / delay;
+        let mut start = self.w.last().copied().unwrap_or(0.0);
+        for i in (0..self.w.len().saturating_sub(1)).rev() {
+            let dv = (self.vals[i + 1] - self.vals[i]).norm() / (self.w[i + 1] - self.w[i]);
+            if dv * period <= 0.05 * self.vals[i].norm() {
+                start = self.w[i];
+            } else {
+                break;
+            }
+        }
+        start
+    }
+
+    /// Frequency of the largest |L_rat| at or beyond `x`; None when the supremum is only
+    /// approached as ω → ∞.
+    fn argmax_from(&self, x: f64) -> Option<f64> {
+        let i0 = self.w.iter().position(|&g| g >= x)?;
+        let (mut bi, mut bv) = (i0, 0.0);
+        for i in i0..self.w.len() {
+            let v = self.vals[i].norm();
+            if v > bv {
+                bv = v;
+                bi = i;
+            }
+        }
+        (bi + 1 < self.w.len() && bv > self.inf_val * (1.0 + 1e-12)).then_some(self.w[bi])
+    }
+    pub(super) fn at(&self, x: f64) -> f64 {
+        match self.w.iter().position(|&g| g >= x) {
+            Some(0) => self.sup[0],
+            Some(i) => self.sup[i - 1],
+            None => self.inf_val.max(*self.sup.last().unwrap_or(&0.0)),
+        }
+    }
+}
+
+/// Adaptive sampling of `g` on [a, b]: returns samples with `|g_{k+1} − g_k|` at most `frac`
+/// of `min(|1 + g_k|, |1 + g_{k+1}|)` (or the depth cap).
+pub(super) fn refine(
+    g: &impl Fn(f64) -> C64,
+    a: (f64, C64),
+    b: (f64, C64),
+    frac: f64,
+    depth: u32,
+    out: &mut Vec<(f64, C64)>,
+) {
+    let d = (b.1 - a.1).norm();
+    let m = (1.0 + a.1).norm().min((1.0 + b.1).norm());
+    if depth == 0 || d <= frac * m.max(1e-9) || !(d.is_finite()) {
+        out.push(b);
+        return;
+    }
+    let wm = (a.0 * b.0).sqrt();
+    let mid = (wm, g(wm));
+    refine(g, a, mid, frac, depth - 1, out);
+    refine(g, mid, b, frac, depth - 1, out);
+}
+
+/// The frequency band of the sweep (from the characteristic frequencies of the loop) and the
+/// tail bound over it.
+pub(super) struct Band {
+    /// Smallest and largest characteristic frequency ([`char_freqs`]).
+    pub(super) flo: f64,
+    pub(super) fhi: f64,
+    /// Sweep limits: four decades below `flo`, five above `fhi`.
+    pub(super) w_lo: f64,
+    pub(super) w_hi: f64,
+    pub(super) tail: Tail,
+}
+
+impl Band {
+    pub(super) fn new(l: &LoopTf, l_inf: f64) -> Band {
+        let (flo, fhi) = char_freqs(l);
+        let w_lo = flo * 1e-4;
+        let w_hi = fhi * 1e5;
+        let pole_freqs: Vec<f64> =
+            l.lr.den
+                .roots()
+                .iter()
+                .chain(l.lr.num.roots().iter())
+                .map(|z| z.norm())
+                .filter(|x| *x > 0.0 && x.is_finite())
+                .collect();
+        let tail = Tail::new(l, w_lo, w_hi, l_inf, &pole_freqs);
+        Band {
+            flo,
+            fhi,
+            w_lo,
+            w_hi,
+            tail,
+        }
+    }
+}
+
+/// Samples of `L(jω)` from the adaptive sweep on the imaginary axis.
+pub(super) struct Sweep {
+    /// The sweep from `w_lo` on, ω ascending.
+    pub(super) samples: Vec<(f64, C64)>,
+    /// In the rotation region of a delayed biproper loop: ±1.5 periods of the delay's phase
+    /// around the largest `|L_rat|` beyond the sweep (else empty).
+    pub(super) tail_samples: Vec<(f64, C64)>,
+    /// Where the sweep stopped.
+    pub(super) w_end: f64,
+    /// Stopped by the point cap rather than by the tail bound.
+    pub(super) truncated: bool,
+}
+
+impl Sweep {
+    /// Log steps of 1/40 decade, each refined so `L` moves by at most a tenth of its distance
+    /// to −1; stops when nothing beyond ω can raise Ms, cross |L| = 1 or lower the GM (by the
+    /// tail bound), at `w_hi`, at 100 000 points, or on entering the rotation region.
+    pub(super) fn run(l: &LoopTf, band: &Band, hf: &HighFreq, lim: &MsLimits) -> Sweep {
+        let g = |w: f64| l.at(w);
+        let tail = &band.tail;
+        let per_decade = 40.0;
+        let mut samples: Vec<(f64, C64)> = vec![(band.w_lo, g(band.w_lo))];
+        let mut w = band.w_lo;
+        let step = 10f64.powf(1.0 / per_decade);
+        let max_points = 100_000;
+        let mut truncated = false;
+        // In the rotation region of a delayed biproper loop, |S| peaks once per period where
+        // L_rat e^{−jωθ} aligns with −1; there the sweep stops and the tail is handled below.
+        let w_rot = if hf.neutral {
+            let period = 2.0 * std::f64::consts::PI / l.delay;
+            tail.rotation_start(l.delay) + 3.0 * period
+        } else {
+            f64::INFINITY
+        };
+        let mut in_rotation_tail = false;
+        let mut found_ms = lim.zero;
+        // smallest |1/L| seen at a sign change of Im L with Re L < 0 (approximate, refined later)
+        let mut gm_found = f64::INFINITY;
+        let mut seen = 1;
+        loop {
+            let w2 = w * step;
+            let a = *samples.last().unwrap_or(&(w, g(w)));
+            refine(&g, a, (w2, g(w2)), 0.1, 24, &mut samples);
+            w = w2;
+            for i in seen..samples.len() {
+                let (z0, z1) = (samples[i - 1].1, samples[i].1);
+                found_ms = found_ms.max(1.0 / (1.0 + z1).norm());
+                if (z0.im < 0.0) != (z1.im < 0.0) && (z0.re < 0.0 || z1.re < 0.0) {
+                    gm_found = gm_found.min(1.0 / z0.norm().max(z1.norm()));
+                }
+            }
+            seen = samples.len();
+            // stop criteria: nothing beyond ω can raise Ms, cross |L| = 1, or lower the GM
+            let t = tail.at(w);
+            let ms_done = t < 1.0 && 1.0 / (1.0 - t) <= found_ms.max(lim.inf) * (1.0 + 1e-7);
+            let no_more_crossovers = t < 1.0;
+            let gm_done = t * gm_found < 0.999 || t <= hf.l_inf * (1.0 + 1e-7) + 1e-12 || t < 1e-4;
+            if (ms_done && no_more_crossovers && gm_done) || w > band.w_hi {
+                break;
+            }
+            if w >= w_rot && no_more_crossovers {
+                in_rotation_tail = true;
+                break;
+            }
+            if samples.len() > max_points {
+                truncated = true;
+                break;
+            }
+        }
+        let tail_samples = if in_rotation_tail {
+            rotation_window(l, tail, w)
+        } else {
+            vec![]
+        };
+        Sweep {
+            samples,
+            tail_samples,
+            w_end: w,
+            truncated,
+        }
+    }
+}
+
+/// ±1.5 periods of the delay's phase around the largest `|L_rat|` at or beyond `w`, 64 samples
+/// per period (empty when that supremum is only approached as ω → ∞).
+fn rotation_window(l: &LoopTf, tail: &Tail, w: f64) -> Vec<(f64, C64)> {
+    let mut out = vec![];
+    if let Some(ws) = tail.argmax_from(w) {
+        let period = 2.0 * std::f64::consts::PI / l.delay;
+        let a = (ws - 1.5 * period).max(w);
+        let n = 192;
+        for i in 0..=n {
+            let x = a + 3.0 * period * i as f64 / n as f64;
+            out.push((x, l.at(x)));
+        }
+    }
+    out
+}
