@@ -138,12 +138,7 @@ fn printed_parameters_and_filters() {
             .with("zeta", r.zeta)
             .with("gamma", r.gamma);
         let t = rules::tune("shamsuzzoha_lee", &r.family.plant(), &params).unwrap();
-        assert_eq!(
-            pidlab::api::tuning_json(&t)["named"]["kc"].as_f64(),
-            Some(d.pid.kc),
-            "{}",
-            r.cite
-        );
+        assert_eq!(t.named("kc"), Some(d.pid.kc), "{}", r.cite);
     }
 }
 
@@ -417,9 +412,11 @@ fn target_ms_solves_lambda() {
         &Params::default().with("target_ms", 1.65),
     )
     .unwrap();
-    let l = pidlab::api::tuning_json(&t)["details"]["lambda"]
-        .as_f64()
-        .unwrap();
+    let rules::Details::ShamsuzzohaLee2008(details) = &t.details else {
+        panic!("details of another paper: {:?}", t.details)
+    };
+    assert_eq!(details.lambda_source, "target_ms");
+    let l = details.lambda;
     let a = analyze(&f.plant(), &t.controller).unwrap();
     assert!(
         (a.ms.unwrap() - 1.65).abs() < 1e-4,
@@ -586,31 +583,33 @@ fn tables2to5_proposed_rows_simulated_iae() {
     }
 }
 
-/// Every preset loads and runs through the JSON API: a method call that tunes (or a literal
+/// Every preset loads and runs: a method call that tunes through the registry (or a literal
 /// (Cr, Cy)), then its scenario simulates without diverging.
 #[wasm_bindgen_test(unsupported = test)]
 fn presets_load_and_simulate() {
-    let ps = pidlab::rules::shamsuzzoha_lee2008::legacy_presets();
+    let ps = pidlab::rules::shamsuzzoha_lee2008::presets();
     assert_eq!(
         ps.len(),
         2 * 14,
         "14 mappable rows (all but Liu et al.), nominal and mismatch"
     );
     for p in ps {
-        let controller = if p.tune.is_null() {
-            p.controller.clone()
-        } else {
-            let mut q = p.tune.clone();
-            q["plant"] = p.plant.clone();
-            pidlab::api::tune(&q).unwrap_or_else(|e| panic!("{}: {e}", p.id))["controller"].clone()
+        let rules::AnyPreset::Typed(p) = p else {
+            panic!("untyped preset")
         };
-        let r = pidlab::api::simulate(&serde_json::json!({
-            "plant": p.plant, "controller": controller, "scenario": p.scenario
-        }))
-        .unwrap_or_else(|e| panic!("{}: {e}", p.id));
-        let iae = r["metrics"]["regulatory"]["iae"].as_f64();
-        assert_eq!(r["diverged"], serde_json::json!(false), "{}", p.id);
-        assert!(iae.is_some_and(|x| x.is_finite()), "{}: {r:?}", p.id);
+        let controller = match &p.design {
+            rules::Design::Rule { method, params } => {
+                rules::tune(method, &p.plant, params)
+                    .unwrap_or_else(|e| panic!("{}: {e}", p.id))
+                    .controller
+            }
+            rules::Design::Controller(c) => c.clone(),
+        };
+        let r = simulate(&p.plant, &controller, &p.scenario)
+            .unwrap_or_else(|e| panic!("{}: {e}", p.id));
+        let iae = r.metrics.regulatory.as_ref().map(|m| m.iae);
+        assert!(!r.diverged, "{}", p.id);
+        assert!(iae.is_some_and(|x| x.is_finite()), "{}: {iae:?}", p.id);
     }
 }
 

@@ -77,13 +77,9 @@ pub fn report() -> String {
         let Some(row) = st.rows.iter().find(|r| r.key == "proposed") else {
             continue;
         };
-        let Some(t) = row.tune.as_ref() else { continue };
-        let p = &t["params"];
-        let (l, z, g) = (
-            p["lambda"].as_f64().unwrap_or(f64::NAN),
-            p["zeta"].as_f64().unwrap_or(f64::NAN),
-            p["gamma"].as_f64().unwrap_or(f64::NAN),
-        );
+        let Some(p) = row.tune.as_ref() else { continue };
+        let num = |n: &str| p.opt_f64(n).ok().flatten().unwrap_or(f64::NAN);
+        let (l, z, g) = (num("lambda"), num("zeta"), num("gamma"));
         match design(&st.plant, l, z, g, 100.0) {
             Ok(d) => {
                 let pp = row.printed_pid.unwrap_or([f64::NAN; 3]);

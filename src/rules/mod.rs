@@ -112,6 +112,8 @@ impl Tuning {
 pub enum Details {
     /// A paper not yet moved to typed details (transitional).
     Legacy(Map<String, Value>),
+    /// Shamsuzzoha & Lee 2008.
+    ShamsuzzohaLee2008(Box<shamsuzzoha_lee2008::Details>),
 }
 
 /// How a preset designs its controller.

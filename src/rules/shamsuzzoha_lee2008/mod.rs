@@ -37,8 +37,7 @@
 //! (no derivative filter) acts on the filtered error, so `Cr = f_R·G_c·F_t`, `Cy = G_c·F_t`.
 //! With this loop the nominal set-point response is exactly Eq. (10) for the IMC controller.
 
-use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
-use crate::api::{controller_json, family_json, plant_json, tf_json};
+use super::{AnyPreset, MethodInfo, ParamInfo, Params, Preset, Tuning};
 use crate::error::{Error, Result};
 use crate::model::controller::{lag, Controller, Pid};
 use crate::model::plant::{Family, Plant};
@@ -46,7 +45,7 @@ use crate::model::poly::Poly;
 use crate::model::tf::Tf;
 use crate::sim::Scenario;
 use nalgebra::{DMatrix, DVector};
-use serde_json::{json, Map, Value};
+use serde::Serialize;
 
 /// Method id (API.md).
 pub const ID: &str = "shamsuzzoha_lee";
@@ -653,9 +652,10 @@ fn design_theta(family: &Family, phi: f64) -> Option<f64> {
     design_model(family, phi).ok().map(|d| d.model.theta)
 }
 
-/// Methods of this paper.
-pub fn methods() -> Vec<MethodInfo> {
-    vec![MethodInfo {
+/// The method as `methods()` lists it: id, citation, families and the parameter declarations
+/// (the registry validates every call against them).
+pub fn method_info() -> MethodInfo {
+    MethodInfo {
         id: ID.into(),
         title: "Shamsuzzoha & Lee 2008: IMC-PID for integrating processes, 2-DOF set-point filter"
             .into(),
@@ -677,6 +677,8 @@ pub fn methods() -> Vec<MethodInfo> {
             ),
             ParamInfo::number("gamma", "γ (set-point filter lead)", Some(0.3), 0.0, 1.0)
                 .help("f_R = (γβ₁s + 1)/(β₂s² + β₁s + 1), Eq. (26)"),
+            // φ above 1e6 would cost the reduction its accuracy: E(0) ~ 1/φ is a difference of
+            // O(1) terms, so about log10(φ) digits are lost.
             ParamInfo::number(
                 "phi",
                 "φ (integrator approximation 1/s ≈ φ/(φs+1))",
@@ -688,18 +690,143 @@ pub fn methods() -> Vec<MethodInfo> {
             ParamInfo::number("target_ms", "target Ms (solves λ)", None, 1.05, 5.0)
                 .help("when given, λ is solved so that the loop's Ms equals it (details.lambda)"),
         ],
-    }]
-}
-
-/// Tunes method `id` if it belongs to this paper.
-pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> {
-    if id != ID {
-        return None;
     }
-    Some(tune_impl(plant, params))
 }
 
-fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
+/// The rule `shamsuzzoha_lee` behind the [`super::Rule`] interface.
+pub struct ShamsuzzohaLee;
+
+impl super::Rule for ShamsuzzohaLee {
+    fn info(&self) -> MethodInfo {
+        method_info()
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        tune_impl(plant, params, &method_info().params)
+    }
+}
+
+/// The rules of this paper.
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    vec![Box::new(ShamsuzzohaLee)]
+}
+
+/// A transfer function as its coefficients in descending powers of s (`{num, den}`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TfCoefs {
+    /// Numerator, descending powers.
+    pub num: Vec<f64>,
+    /// Denominator, descending powers.
+    pub den: Vec<f64>,
+}
+
+impl From<&Tf> for TfCoefs {
+    fn from(t: &Tf) -> TfCoefs {
+        TfCoefs {
+            num: t.num.to_desc(),
+            den: t.den.to_desc(),
+        }
+    }
+}
+
+/// The stable design model `gain·e^{−θs}/Π(T_j s + 1)` as reported.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DesignModelTf {
+    /// K_m.
+    pub gain: f64,
+    /// T_j.
+    pub lags: Vec<f64>,
+    /// θ.
+    pub theta: f64,
+}
+
+/// The Maclaurin coefficients of f(s) = s·G_c(s) and E(0) (Eqs. 14-17).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Maclaurin {
+    /// f(0).
+    pub f0: f64,
+    /// f'(0) = K_c.
+    pub f1: f64,
+    /// f''(0)/2.
+    pub f2_half_fpp: f64,
+    /// E(0).
+    pub e0: f64,
+}
+
+/// One point of the DIP λ guideline `λ = αθ` (text under Fig. 9).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DipGuideline {
+    /// Target Ms.
+    pub ms: f64,
+    /// α.
+    pub alpha: f64,
+    /// λ = αθ for this plant.
+    pub lambda: f64,
+}
+
+/// Ms and stability of the loop on the plant as given (present when the analysis succeeded).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LoopCheck {
+    /// Peak sensitivity (None when the analysis gives none).
+    pub ms: Option<f64>,
+    /// Nyquist verdict.
+    pub stable: bool,
+}
+
+/// The details of a `shamsuzzoha_lee` tuning.
+#[derive(Debug, Clone, Serialize)]
+pub struct Details {
+    /// λ used.
+    pub lambda: f64,
+    /// `given` or `target_ms`.
+    pub lambda_source: String,
+    /// The target Ms λ was solved for.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target_ms: Option<f64>,
+    /// The design model in words.
+    pub design_model: String,
+    /// The design model.
+    pub design_model_tf: DesignModelTf,
+    /// β₁..β_m of the IMC filter (Eq. 7, solved from Eq. 8).
+    pub beta: Vec<f64>,
+    /// Power r of the filter denominator.
+    pub filter_power_r: u32,
+    /// Maclaurin coefficients (Eqs. 15-17).
+    pub maclaurin: Maclaurin,
+    /// Set-point filter f_R of Eq. (26).
+    pub setpoint_filter: TfCoefs,
+    /// Series lag F_t (Example 4).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub series_filter: Option<TfCoefs>,
+    /// The loop structure in words.
+    pub structure: String,
+    /// The DIP λ guideline (piptd only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lambda_guideline_dip: Option<Vec<DipGuideline>>,
+    /// Ms and stability on the plant as given (absent when the analysis failed: see warnings).
+    #[serde(flatten)]
+    pub check: Option<LoopCheck>,
+    /// Warnings.
+    pub warnings: Vec<String>,
+}
+
+/// λ from the parameters: the given λ, or solved for `target_ms` (which wins when both are
+/// given). Returns (λ, source).
+fn lambda_from_params(
+    family: &Family,
+    params: &Params,
+    (zeta, gamma, phi): (f64, f64, f64),
+) -> Result<(f64, &'static str)> {
+    match (params.opt_f64("lambda")?, params.opt_f64("target_ms")?) {
+        (_, Some(ms)) => Ok((lambda_for_ms(family, ms, zeta, gamma, phi)?, "target_ms")),
+        (Some(l), None) => Ok((l, "given")),
+        (None, None) => Err(Error::new(
+            "params.lambda",
+            "is required (or give params.target_ms to solve λ for a target Ms)",
+        )),
+    }
+}
+
+fn tune_impl(plant: &Plant, params: &Params, decl: &[ParamInfo]) -> Result<Tuning> {
     let family = plant.family.ok_or_else(|| {
         Error::new(
             "plant.family",
@@ -709,106 +836,98 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
             ),
         )
     })?;
-    let zeta = params.f64_in("zeta", 1.0, 0.1, 10.0)?;
-    let gamma = params.f64_in("gamma", 0.3, 0.0, 1.0)?;
-    // φ above 1e6 would cost the reduction its accuracy: E(0) ~ 1/φ is a difference of O(1)
-    // terms, so about log10(φ) digits are lost.
-    let phi = params.f64_in("phi", 100.0, 1.0, 1e6)?;
-    let target = params.opt_f64("target_ms")?;
-    let (lambda, lambda_source) = match (params.opt_f64("lambda")?, target) {
-        (_, Some(ms)) => {
-            if !(ms > 1.0 && ms <= 100.0) {
-                return Err(Error::new(
-                    "params.target_ms",
-                    format!("must lie in (1, 100] (got {ms})"),
-                ));
-            }
-            (lambda_for_ms(&family, ms, zeta, gamma, phi)?, "target_ms")
-        }
-        (Some(_), None) => (params.f64_in("lambda", f64::NAN, 1e-9, 1e9)?, "given"),
-        (None, None) => {
-            return Err(Error::new(
-                "params.lambda",
-                "is required (or give params.target_ms to solve λ for a target Ms)",
-            ))
-        }
-    };
+    let zeta = params.number(decl, "zeta")?;
+    let gamma = params.number(decl, "gamma")?;
+    let phi = params.number(decl, "phi")?;
+    let target_ms = params.opt_f64("target_ms")?;
+    let (lambda, lambda_source) = lambda_from_params(&family, params, (zeta, gamma, phi))?;
     let d = design(&family, lambda, zeta, gamma, phi)?;
-    let mut named = Map::new();
-    named.insert("kc".into(), json!(d.pid.kc));
-    named.insert("ti".into(), json!(d.pid.ti));
-    named.insert("td".into(), json!(d.pid.td));
-    named.insert("kp".into(), json!(d.pid.kc));
-    named.insert("ki".into(), json!(d.pid.kc / d.pid.ti));
-    named.insert("kd".into(), json!(d.pid.kc * d.pid.td));
+    let mut named: Vec<(String, f64)> = vec![
+        ("kc".into(), d.pid.kc),
+        ("ti".into(), d.pid.ti),
+        ("td".into(), d.pid.td),
+        ("kp".into(), d.pid.kc),
+        ("ki".into(), d.pid.kc / d.pid.ti),
+        ("kd".into(), d.pid.kc * d.pid.td),
+    ];
     for (i, b) in d.pid.beta.iter().enumerate() {
-        named.insert(format!("beta{}", i + 1), json!(b));
+        named.push((format!("beta{}", i + 1), *b));
     }
-    named.insert("gamma".into(), json!(gamma));
-    named.insert("lambda".into(), json!(lambda));
-    named.insert("zeta".into(), json!(zeta));
-    named.insert("phi".into(), json!(phi));
+    named.extend([
+        ("gamma".into(), gamma),
+        ("lambda".into(), lambda),
+        ("zeta".into(), zeta),
+        ("phi".into(), phi),
+    ]);
     if let Some(z) = d.model.series_lag {
-        named.insert("ft_tau".into(), json!(z));
+        named.push(("ft_tau".into(), z));
     }
-    let mut details = Map::new();
-    details.insert("lambda".into(), json!(lambda));
-    details.insert("lambda_source".into(), json!(lambda_source));
-    if let Some(ms) = target {
-        details.insert("target_ms".into(), json!(ms));
-    }
-    details.insert("design_model".into(), json!(d.model.description));
-    details.insert(
-        "design_model_tf".into(),
-        json!({ "gain": d.model.model.gain, "lags": d.model.model.lags, "theta": d.model.model.theta }),
-    );
-    details.insert("beta".into(), json!(d.pid.beta));
-    details.insert("filter_power_r".into(), json!(d.pid.r));
-    details.insert(
-        "maclaurin".into(),
-        json!({ "f0": d.pid.f[0], "f1": d.pid.f[1], "f2_half_fpp": d.pid.f[2], "e0": d.pid.e0 }),
-    );
-    details.insert("setpoint_filter".into(), tf_json(&d.setpoint_filter));
-    if let Some(z) = d.model.series_lag {
-        details.insert("series_filter".into(), tf_json(&lag(z)));
-    }
-    details.insert(
-        "structure".into(),
-        json!("u = Gc·(f_R r − y) (Fig. 1a): Cr = f_R·Gc·F_t, Cy = Gc·F_t, ideal derivative"),
-    );
-    if let Some(th) = design_theta(&family, phi) {
-        if matches!(family, Family::Piptd { .. }) {
-            let g: Vec<Value> = DIP_ALPHA
+    let lambda_guideline_dip = match (design_theta(&family, phi), family) {
+        (Some(th), Family::Piptd { .. }) => Some(
+            DIP_ALPHA
                 .iter()
-                .map(|(ms, a)| json!({ "ms": ms, "alpha": a, "lambda": a * th }))
-                .collect();
-            details.insert("lambda_guideline_dip".into(), json!(g));
-        }
-    }
+                .map(|&(ms, alpha)| DipGuideline {
+                    ms,
+                    alpha,
+                    lambda: alpha * th,
+                })
+                .collect(),
+        ),
+        _ => None,
+    };
     let mut warnings = d.warnings;
     // Robustness of the loop on the plant as given (Ms is the paper's measure).
-    match crate::analysis::freq::analyze(plant, &d.controller) {
+    let check = match crate::analysis::freq::analyze(plant, &d.controller) {
         Ok(a) => {
-            details.insert("ms".into(), json!(a.ms));
-            details.insert("stable".into(), json!(a.stable));
             if !a.stable {
                 warnings.push(format!(
                     "the closed loop is not stable with this λ ({}): increase λ",
                     a.verdict
                 ));
             }
+            Some(LoopCheck {
+                ms: a.ms,
+                stable: a.stable,
+            })
         }
-        Err(e) => warnings.push(format!("frequency analysis failed: {e}")),
-    }
-    details.insert("warnings".into(), json!(warnings));
+        Err(e) => {
+            warnings.push(format!("frequency analysis failed: {e}"));
+            None
+        }
+    };
+    let details = Details {
+        lambda,
+        lambda_source: lambda_source.into(),
+        target_ms,
+        design_model: d.model.description.clone(),
+        design_model_tf: DesignModelTf {
+            gain: d.model.model.gain,
+            lags: d.model.model.lags.clone(),
+            theta: d.model.model.theta,
+        },
+        beta: d.pid.beta.clone(),
+        filter_power_r: d.pid.r,
+        maclaurin: Maclaurin {
+            f0: d.pid.f[0],
+            f1: d.pid.f[1],
+            f2_half_fpp: d.pid.f[2],
+            e0: d.pid.e0,
+        },
+        setpoint_filter: TfCoefs::from(&d.setpoint_filter),
+        series_filter: d.model.series_lag.map(|z| TfCoefs::from(&lag(z))),
+        structure: "u = Gc·(f_R r − y) (Fig. 1a): Cr = f_R·Gc·F_t, Cy = Gc·F_t, ideal derivative"
+            .into(),
+        lambda_guideline_dip,
+        check,
+        warnings,
+    };
     Ok(Tuning {
         method: ID.into(),
         controller: d.controller,
         named,
-        details,
+        details: super::Details::ShamsuzzohaLee2008(Box::new(details)),
     })
 }
-
 /// λ for a target Ms: solved with the engine ([`crate::analysis::freq::solve_for_ms`]) on the loop of
 /// the plant as given (not the φ design model). The search interval scales with the design
 /// dead time (the DIP guideline puts λ between 1.2θ and 2.3θ for Ms 2.0-1.6).
@@ -856,8 +975,8 @@ pub struct StudyRow {
     pub printed: PrintedPerf,
     /// Our (Cr, Cy) for the row; None when the structure cannot be mapped.
     pub controller: Option<Controller>,
-    /// For the proposed row: the method parameters.
-    pub tune: Option<Value>,
+    /// For the proposed row: the parameters of method [`ID`].
+    pub tune: Option<Params>,
     /// How the row is mapped onto (Cr, Cy), and what is not specified by the paper.
     pub description: String,
     /// Citation of the row's source.
@@ -967,7 +1086,11 @@ fn proposed_row(
         printed,
         controller: d.map(|d| d.controller),
         tune: Some(
-            json!({ "method": ID, "params": { "lambda": lambda, "zeta": zeta, "gamma": gamma, "phi": 100.0 } }),
+            Params::default()
+                .with("lambda", lambda)
+                .with("zeta", zeta)
+                .with("gamma", gamma)
+                .with("phi", 100.0),
         ),
         description: format!(
             "Proposed IMC-PID, λ = {lambda}, ζ = {zeta}, γ = {gamma}, φ = 100; u = Gc·(f_R r − y) \
@@ -1403,32 +1526,10 @@ pub fn liu_load_response(t_d: f64, d: f64, t_end: f64, dt: f64) -> Result<(f64, 
     Ok((iae, peak, tv))
 }
 
-fn scenario_json(s: &Scenario) -> Value {
-    json!({
-        "t_end": s.t_end, "dt": s.dt,
-        "setpoint": { "time": s.setpoint.time, "size": s.setpoint.size },
-        "disturbance": { "time": s.disturbance.time, "size": s.disturbance.size },
-    })
-}
-
 /// Presets of this paper: every row of Tables 1-5 that maps onto (Cr, Cy), on the nominal
 /// plant (the proposed rows as a method call) and on the example's worst-case mismatch plant
 /// (the controller designed for the nominal model, as a literal).
-/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
-pub fn rules() -> Vec<Box<dyn super::Rule>> {
-    super::legacy_rules(methods(), tune)
-}
-
-/// Every preset of this paper.
-pub fn presets() -> Vec<super::AnyPreset> {
-    legacy_presets()
-        .into_iter()
-        .map(super::AnyPreset::Legacy)
-        .collect()
-}
-
-/// The presets as JSON records (transitional).
-pub fn legacy_presets() -> Vec<Preset> {
+pub fn presets() -> Vec<AnyPreset> {
     let mut out = vec![];
     for s in studies() {
         for r in &s.rows {
@@ -1439,14 +1540,15 @@ pub fn legacy_presets() -> Vec<Preset> {
                 title: format!("{} — {} (Table {})", s.title, r.label, s.table),
                 description: r.description.clone(),
                 citation: r.citation.into(),
-                plant: family_json(&s.plant),
-                tune: r.tune.clone().unwrap_or(Value::Null),
-                controller: if r.tune.is_some() {
-                    Value::Null
-                } else {
-                    controller_json(c)
+                plant: s.plant.plant(),
+                design: match &r.tune {
+                    Some(params) => super::Design::Rule {
+                        method: ID.into(),
+                        params: params.clone(),
+                    },
+                    None => super::Design::Controller(c.clone()),
                 },
-                scenario: scenario_json(&s.scenario),
+                scenario: s.scenario.clone(),
             });
             out.push(Preset {
                 id: format!("{base}/mismatch"),
@@ -1459,12 +1561,11 @@ pub fn legacy_presets() -> Vec<Preset> {
                     r.description, s.mismatch_label
                 ),
                 citation: r.citation.into(),
-                plant: plant_json(&s.mismatch),
-                tune: Value::Null,
-                controller: controller_json(c),
-                scenario: scenario_json(&s.scenario),
+                plant: s.mismatch.clone(),
+                design: super::Design::Controller(c.clone()),
+                scenario: s.scenario.clone(),
             });
         }
     }
-    out
+    out.into_iter().map(AnyPreset::Typed).collect()
 }
