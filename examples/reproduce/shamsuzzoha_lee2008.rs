@@ -82,7 +82,9 @@ pub fn report() -> String {
         let (l, z, g) = (num("lambda"), num("zeta"), num("gamma"));
         match design(&st.plant, l, z, g, 100.0) {
             Ok(d) => {
-                let pp = row.printed_pid.unwrap_or([f64::NAN; 3]);
+                let pp = row
+                    .printed_pid
+                    .map_or([f64::NAN; 3], |p| [p.kc, p.ti, p.td]);
                 let f = &d.setpoint_filter;
                 let fr = if f.den.degree() == 2 {
                     format!(
@@ -191,7 +193,7 @@ pub fn report() -> String {
         );
         let mut csv = String::from("method,case,t,y,u\n");
         for r in &st.rows {
-            let pr = r.printed;
+            let pr = r.printed.columns();
             let Some(c) = &r.controller else {
                 let _ = writeln!(
                     o,

@@ -49,11 +49,13 @@ mod details;
 mod series;
 pub mod settings;
 pub mod studies;
+pub mod tables;
 
 pub use details::*;
 use series::*;
 pub use settings::{liu_load_response, presets, zhang1999_controller, zhang1999_pid};
-pub use studies::{studies, PrintedPerf, Study, StudyRow};
+pub use studies::{studies, Study, StudyRow};
+pub use tables::{PrintedPerf, PrintedPid};
 
 /// Method id (API.md).
 pub const ID: &str = "shamsuzzoha_lee";

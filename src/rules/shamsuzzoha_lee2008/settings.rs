@@ -2,6 +2,7 @@
 //! al., Luyben, Wang & Cluett, Rivera et al., Chidambaram & Sree) and the presets.
 
 use super::studies::studies;
+use super::tables::*;
 use super::ID;
 use crate::error::{Error, Result};
 use crate::model::controller::{lag, Controller, Pid};
@@ -48,6 +49,178 @@ pub(super) fn tf_desc(num: &[f64], den: &[f64]) -> Tf {
         den: Poly::from_desc(den),
     }
 }
+
+/// How a comparison row is mapped onto (Cr, Cy): the PID form and where its derivative acts
+/// (the printed set-point filter and series lag come with the row).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Mapping {
+    /// Series (cascade) form `K_c(1 + 1/(τ_I s))(1 + τ_D s)` instead of the ideal form.
+    pub series: bool,
+    /// Derivative on the measurement (set-point weight c = 0).
+    pub d_on_y: bool,
+}
+
+/// A comparison setting the paper quotes: its printed row, how we map it onto (Cr, Cy) (None:
+/// no (Cr, Cy) form), what the paper does not specify, and its source.
+#[derive(Debug, Clone, Copy)]
+pub struct LiteratureSetting {
+    /// The printed row.
+    pub row: PrintedRow,
+    /// How it is mapped onto (Cr, Cy).
+    pub mapping: Option<Mapping>,
+    /// How the row is mapped, and what is not specified by the paper.
+    pub description: &'static str,
+    /// Citation of the row's source.
+    pub citation: &'static str,
+}
+
+impl LiteratureSetting {
+    /// Our (Cr, Cy) for the row: the printed PID in the mapped form with the printed set-point
+    /// filter and series lag; None when the structure cannot be mapped.
+    pub fn controller(&self) -> Option<Controller> {
+        let m = self.mapping?;
+        let p = self.row.pid?;
+        lit_pid(
+            p.kc,
+            p.ti,
+            p.td,
+            m.series,
+            m.d_on_y,
+            self.row.setpoint_filter.map(|f| tf_desc(f.num, f.den)),
+            self.row.series_lag,
+        )
+    }
+}
+
+/// Table 1, wang_cai: the printed row and how it is mapped.
+pub const WANG_CAI: LiteratureSetting = LiteratureSetting {
+    row: T1_WANG_CAI,
+    mapping: Some(Mapping {
+        series: false,
+        d_on_y: false,
+    }),
+    description: "Wang & Cai PID K_c = 3.094, τ_I = 1.181, τ_D = 0.863 (ideal form, \
+                                  on the filtered error) with the printed weighting-type set-point \
+                                  filter of Eq. (27), γ = 0: f_R = 1/(1.0199s² + 1.1819s + 1)",
+    citation: C_WANG_CAI,
+};
+
+/// Table 1, zhang: the printed row and how it is mapped.
+pub const ZHANG: LiteratureSetting = LiteratureSetting {
+    row: T1_ZHANG,
+    mapping: Some(Mapping { series: false, d_on_y: false }),
+    description: "Zhang et al. PID K_c = 2.038, τ_I = 2.991, τ_D = 0.665 (ideal form) \
+                                  × F_t = 1/(0.145s + 1) on both paths, set-point filter Eq. (27) with \
+                                  γ = 0.3 as printed; the rule derived in `zhang1999_pid` gives these \
+                                  four numbers from λ = 0.597",
+    citation: C_ZHANG,
+};
+
+/// Table 2, liu: the printed row and how it is mapped.
+pub const LIU: LiteratureSetting = LiteratureSetting {
+    row: T2_LIU,
+    mapping: None,
+    description: "Liu et al.'s scheme is not a PID: a set-point tracking controller \
+                                  around a delay-free model, a stabilizer R(s) and a disturbance \
+                                  estimator F₀ acting on y − G̃e^(-θs)u. The paper prints only R(s) \
+                                  and F₀, not the set-point controller, and not where R sits; the \
+                                  nominal load response depends on F₀ alone and is computed exactly \
+                                  by `liu_load_response` (IAE 2.631, peak 0.389: printed 2.63, \
+                                  0.39); the set-point and mismatch columns cannot be, and there is \
+                                  no (Cr, Cy) preset: without R the scheme is internally unstable",
+    citation: C_LIU,
+};
+
+/// Table 2, skogestad: the printed row and how it is mapped.
+pub const SKOGESTAD: LiteratureSetting = LiteratureSetting {
+    row: T2_SKOGESTAD,
+    mapping: Some(Mapping {
+        series: true,
+        d_on_y: true,
+    }),
+    description: "SIMC for the double integrator, τ_c = 0.8: K_c = 1/(4(τ_c + θ)²) = \
+                                  0.0977, τ_I = τ_D = 4(τ_c + θ) = 6.4 in SIMC's series (cascade) \
+                                  form K_c(1 + 1/(τ_I s))(1 + τ_D s), no set-point filter; the \
+                                  derivative acts on the measurement (an ideal derivative of the \
+                                  set-point step would be an impulse; this reproduces the printed \
+                                  set-point IAE and overshoot within 1 %)",
+    citation: C_SKOG,
+};
+
+/// Table 3, gu: the printed row and how it is mapped.
+pub const GU: LiteratureSetting = LiteratureSetting {
+    row: T3_GU,
+    mapping: Some(Mapping {
+        series: false,
+        d_on_y: false,
+    }),
+    description: "Gu et al. PID K_c = 2.088, τ_I = 3.866, τ_D = 0.688 (ideal form) with \
+                                  the set-point filter of Eq. (27), γ = 0.3, as printed",
+    citation: C_GU,
+};
+
+/// Table 3, luyben2003: the printed row and how it is mapped.
+pub const LUYBEN_2003: LiteratureSetting = LiteratureSetting {
+    row: T3_LUYBEN,
+    mapping: Some(Mapping {
+        series: false,
+        d_on_y: false,
+    }),
+    description:
+        "Luyben (2003) PID, 25 % integral-time variant: K_c = 1.61, τ_I = \
+                                  5.75, τ_D = 1.15 (ideal form), set-point filter Eq. (27), γ = 0.3",
+    citation: C_LUYBEN03,
+};
+
+/// Table 4, wang_cluett: the printed row and how it is mapped.
+pub const WANG_CLUETT: LiteratureSetting = LiteratureSetting {
+    row: T4_WANG_CLUETT,
+    mapping: Some(Mapping { series: false, d_on_y: true }),
+    description: "Wang & Cluett PID K_c = 1.60, τ_I = 26.0, τ_D = 2.0, mapped as a \
+                                  ideal PID without set-point filter, derivative on the measurement \
+                                  (an ideal derivative of the set-point step would be an impulse). \
+                                  The paper reports a 3 % set-point offset, which no PID with \
+                                  integral action on this plant can have: Wang & Cluett's own \
+                                  controller structure is not given in the paper, so this row does \
+                                  not reproduce the printed indices",
+    citation: C_WC,
+};
+
+/// Table 4, rivera: the printed row and how it is mapped.
+pub const RIVERA: LiteratureSetting = LiteratureSetting {
+    row: T4_RIVERA,
+    mapping: Some(Mapping {
+        series: false,
+        d_on_y: false,
+    }),
+    description: "Rivera et al. IMC-PID K_c = 24.80, τ_I = 58.3, τ_D = 13.1 (ideal \
+                                  form), one degree of freedom, × F_t = 1/(300s + 1)",
+    citation: C_RIVERA,
+};
+
+/// Table 5, chidambaram_sree: the printed row and how it is mapped.
+pub const CHIDAMBARAM_SREE: LiteratureSetting = LiteratureSetting {
+    row: T5_CHIDAMBARAM_SREE,
+    mapping: Some(Mapping {
+        series: false,
+        d_on_y: false,
+    }),
+    description: "Chidambaram & Sree PID K_c = 4.066, τ_I = 27.0, τ_D = 2.70 (ideal \
+                                  form), set-point filter Eq. (27), γ = 0.5",
+    citation: C_CS,
+};
+
+/// Table 5, luyben1996: the printed row and how it is mapped.
+pub const LUYBEN_1996: LiteratureSetting = LiteratureSetting {
+    row: T5_LUYBEN,
+    mapping: Some(Mapping {
+        series: false,
+        d_on_y: false,
+    }),
+    description: "Luyben (1996) PID K_c = 2.564, τ_I = 56.32, τ_D = 3.56 (ideal form) × \
+                                  F_t = 1/(0.382s + 1), set-point filter Eq. (27), γ = 0.8",
+    citation: C_LUYBEN96,
+};
 
 /// A literature PID (ideal form unless `series`), with optional printed set-point filter and
 /// series lag, mapped onto (Cr, Cy) by [`Pid::to_controller`].
