@@ -168,7 +168,9 @@ fn lambda_hint(model: &ImcModel, lambda: f64, zeta: f64) -> String {
     "; no λ gives a valid PID for this design model (check φ)".to_string()
 }
 
-fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
+/// The inputs of the routine: λ, ζ > 0, a finite non-zero gain, θ ≥ 0, at least one pole and
+/// positive time constants.
+fn check_inputs(model: &ImcModel, lambda: f64, zeta: f64) -> Result<()> {
     if !(lambda.is_finite() && lambda > 0.0) {
         return Err(Error::new(
             "params.lambda",
@@ -205,6 +207,11 @@ fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
             "model time constants must be finite and > 0",
         ));
     }
+    Ok(())
+}
+
+fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
+    check_inputs(model, lambda, zeta)?;
     let m = model.lags.len();
     let theta = model.theta;
     // D(s) = Π(T_j s + 1): the invertible part P_M = K_m/D(s).
@@ -216,6 +223,64 @@ fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
     let base = Poly::from_asc(&[1.0, 2.0 * lambda * zeta, lambda * lambda]);
     let df = base.pow(r);
 
+    let beta = cancellation_beta(model, &df)?;
+    let mut nf_c = vec![1.0];
+    nf_c.extend(beta.iter().copied());
+    let nf = Poly::from_asc(&nf_c);
+
+    // Maclaurin reduction, Eqs. (14)-(17).
+    let den = series_sub(
+        &series_of(&df),
+        &series_mul(&series_delay(theta), &series_of(&nf)),
+    );
+    // den(0) = 1 − 1 = 0 exactly: G_c has an integrator; E(s) = den(s)/s.
+    let mut e = [0.0; NS];
+    e[..NS - 1].copy_from_slice(&den[1..]);
+    let e0 = e[0];
+    let num = series_of(&d_poly.mul(&nf));
+    let ek: Series = e.map(|x| x * model.gain);
+    let fser = series_div(&num, &ek).filter(|_| e0 > 0.0).ok_or_else(|| {
+        Error::new(
+            "params.lambda",
+            format!(
+                "no valid PID: the Maclaurin denominator E(0) = 2rλζ + θ − β₁ = {e0:.4e} is not \
+                 positive"
+            ),
+        )
+    })?;
+    let (f0, f1, f2) = (fser[0], fser[1], fser[2]);
+    let kc = f1;
+    let ti = f1 / f0;
+    let td = f2 / f1;
+    if ![kc, ti, td].iter().all(|x| x.is_finite()) {
+        return Err(Error::new(
+            "params.lambda",
+            "the PID reduction gave non-finite settings",
+        ));
+    }
+    if ti <= 0.0 || kc * model.gain <= 0.0 {
+        return Err(Error::new(
+            "params.lambda",
+            format!("no valid PID: K_c = {kc:.4e}, τ_I = {ti:.4e} (need K_c·K > 0 and τ_I > 0)"),
+        ));
+    }
+    Ok(ImcPid {
+        beta,
+        r,
+        f: [f0, f1, f2],
+        e0,
+        kc,
+        ti,
+        td,
+    })
+}
+
+/// β₁..β_m from the pole-cancellation conditions of Eq. (8): `1 − G̃Q = 0` at every model pole
+/// (and its derivatives up to the multiplicity − 1), linear in β; `df` is the filter
+/// denominator `(λ²s² + 2λζs + 1)^r`.
+fn cancellation_beta(model: &ImcModel, df: &Poly) -> Result<Vec<f64>> {
+    let m = model.lags.len();
+    let theta = model.theta;
     // Eq. (8) as a linear system in β (scaled: b_i = β_i c^i with c = max|p|).
     let poles = group_poles(&model.lags);
     let c = poles.iter().fold(0.0f64, |a, (p, _)| a.max(p.abs()));
@@ -267,55 +332,7 @@ fn imc_pid_raw(model: &ImcModel, lambda: f64, zeta: f64) -> Result<ImcPid> {
             "the pole-cancellation solve of Eq. (8) gave non-finite β (λ or φ out of range)",
         ));
     }
-    let mut nf_c = vec![1.0];
-    nf_c.extend(beta.iter().copied());
-    let nf = Poly::from_asc(&nf_c);
-
-    // Maclaurin reduction, Eqs. (14)-(17).
-    let den = series_sub(
-        &series_of(&df),
-        &series_mul(&series_delay(theta), &series_of(&nf)),
-    );
-    // den(0) = 1 − 1 = 0 exactly: G_c has an integrator; E(s) = den(s)/s.
-    let mut e = [0.0; NS];
-    e[..NS - 1].copy_from_slice(&den[1..]);
-    let e0 = e[0];
-    let num = series_of(&d_poly.mul(&nf));
-    let ek: Series = e.map(|x| x * model.gain);
-    let fser = series_div(&num, &ek).filter(|_| e0 > 0.0).ok_or_else(|| {
-        Error::new(
-            "params.lambda",
-            format!(
-                "no valid PID: the Maclaurin denominator E(0) = 2rλζ + θ − β₁ = {e0:.4e} is not \
-                 positive"
-            ),
-        )
-    })?;
-    let (f0, f1, f2) = (fser[0], fser[1], fser[2]);
-    let kc = f1;
-    let ti = f1 / f0;
-    let td = f2 / f1;
-    if ![kc, ti, td].iter().all(|x| x.is_finite()) {
-        return Err(Error::new(
-            "params.lambda",
-            "the PID reduction gave non-finite settings",
-        ));
-    }
-    if ti <= 0.0 || kc * model.gain <= 0.0 {
-        return Err(Error::new(
-            "params.lambda",
-            format!("no valid PID: K_c = {kc:.4e}, τ_I = {ti:.4e} (need K_c·K > 0 and τ_I > 0)"),
-        ));
-    }
-    Ok(ImcPid {
-        beta,
-        r,
-        f: [f0, f1, f2],
-        e0,
-        kc,
-        ti,
-        td,
-    })
+    Ok(beta)
 }
 
 // ---------------------------------------------------------------------------------------
