@@ -3,41 +3,13 @@
 //! worst-case mismatch), the printed closed forms, and the λ guideline curves of Figs. 7-9
 //! (CSV under `docs/figures/`).
 
-use pidlab::analysis::freq::analyze;
-use pidlab::model::controller::Controller;
-use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::shamsuzzoha_lee2008 as ssl;
-use pidlab::rules::shamsuzzoha_lee2008::{
-    design, imc_pid, lambda_for_ms, studies, weighting_filter, ImcModel, DIP_ALPHA,
+use pidlab::rules::shamsuzzoha_lee2008::studies::{
+    fig8_fig7_point, fig9_dip_lambdas, fitted_alpha, printed_closed_forms, simulate_row,
 };
-use pidlab::sim::{simulate, Scenario};
+use pidlab::rules::shamsuzzoha_lee2008::{design, studies, weighting_filter, DIP_ALPHA};
+use pidlab::sim::simulate;
 use std::fmt::Write;
-
-struct Perf {
-    sp_iae: f64,
-    sp_os: f64,
-    sp_tv: f64,
-    ld_iae: f64,
-    ld_pk: f64,
-    ld_tv: f64,
-}
-
-fn perf(p: &Plant, c: &Controller, sc: &Scenario) -> Option<Perf> {
-    let r = simulate(p, c, sc).ok()?;
-    if r.diverged {
-        return None;
-    }
-    let s = r.metrics.servo?;
-    let g = r.metrics.regulatory?;
-    Some(Perf {
-        sp_iae: s.iae,
-        sp_os: 1.0 + s.overshoot.unwrap_or(0.0),
-        sp_tv: s.tv,
-        ld_iae: g.iae,
-        ld_pk: g.peak_error,
-        ld_tv: g.tv,
-    })
-}
 
 fn cell(ours: f64, printed: f64) -> String {
     format!("{ours:.3} ({printed})")
@@ -64,7 +36,16 @@ pub fn report() -> String {
          reduction of Eqs. (14)-(17) by power-series arithmetic with e^(-θs) by its series.\n"
     );
 
-    // ------------------------------------------------------------------ parameters
+    parameters(&mut o);
+    closed_forms(&mut o);
+    simulations(&mut o);
+    weighting_filters(&mut o);
+    guidelines(&mut o);
+    o
+}
+
+/// Controller parameters and set-point filters (Tables 1-5).
+fn parameters(o: &mut String) {
     let _ = writeln!(
         o,
         "### Controller parameters and set-point filters (Tables 1-5)\n"
@@ -115,31 +96,13 @@ pub fn report() -> String {
          Example 4 on the FODIP part with ζ = 2 and F_t = 1/(300s + 1) in series, Example 5 with \
          γ = 0 (f_R = 1/(βs + 1), β = 12.186).\n"
     );
+}
 
-    // ------------------------------------------------------------------ closed forms
+/// The printed closed forms (Eqs. 23c, 30c).
+fn closed_forms(o: &mut String) {
     let _ = writeln!(o, "### Printed closed forms\n");
-    let fo = ImcModel {
-        gain: 100.0,
-        lags: vec![1.0, 100.0],
-        theta: 0.2,
-    };
-    let dip = ImcModel {
-        gain: 100.0 * 0.0506,
-        lags: vec![100.0],
-        theta: 6.0,
-    };
-    if let (Ok(p1), Ok(p5)) = (imc_pid(&fo, 0.433, 1.0), imc_pid(&dip, 3.437, 1.0)) {
-        let (th, l, z, phi, tau) = (0.2, 0.433, 1.0, 100.0, 1.0);
-        let (b1, b2) = (p1.beta[0], p1.beta[1]);
-        let e0 = 4.0 * l * z + th - b1;
-        let e1 = -th * th / 2.0 + th * b1 - b2 + 2.0 * l * l + 4.0 * l * l * z * z;
-        let e2p = -th * th * th / 2.0 + b1 * th * th / 2.0 + th * b2 + 4.0 * l * l * l * z;
-        let td23c = ((b2 + (tau + phi) * b1 + phi * tau) - e2p / e0) / p1.ti - e1 / e0;
-        let (th, l, z) = (6.0, 3.437, 1.0);
-        let b = p5.beta[0];
-        let e0 = th - b + 2.0 * l * z;
-        let e1 = l * l - th * th / 2.0 + b * th;
-        let td30c = (phi * b - (th * th / 6.0 - b * th * th / 2.0) / e0) / p5.ti - e1 / e0;
+    if let Some(cf) = printed_closed_forms() {
+        let (td23c, td30c) = (cf.td_23c_printed, cf.td_30c_printed);
         let _ = writeln!(
             o,
             "Eqs. (23a), (23b), (24), (25), (30a), (30b), (30d) agree with the generic routine to \
@@ -150,11 +113,13 @@ pub fn report() -> String {
              (23c) gives τ_D = {td23c:.4} for Example 1 (Table 1: 0.499, ours {:.4}) and (30c) \
              gives τ_D = {td30c:.4} for Example 5 (Table 5: 2.34, ours {:.4}); the corrected forms \
              agree with the routine.\n",
-            p1.td, p5.td
+            cf.td_ex1, cf.td_ex5
         );
     }
+}
 
-    // ------------------------------------------------------------------ simulations
+/// The simulation study (Tables 1-5).
+fn simulations(o: &mut String) {
     let _ = writeln!(o, "### Simulation study (Tables 1-5)\n");
     let _ = writeln!(
         o,
@@ -193,7 +158,7 @@ pub fn report() -> String {
         );
         let mut csv = String::from("method,case,t,y,u\n");
         for r in &st.rows {
-            let pr = r.printed.columns();
+            let (p, pr) = (&r.printed, r.printed.columns());
             let Some(c) = &r.controller else {
                 let _ = writeln!(
                     o,
@@ -202,28 +167,25 @@ pub fn report() -> String {
                 );
                 continue;
             };
-            let plant = st.plant.plant();
-            let ms = analyze(&plant, c)
-                .ok()
-                .and_then(|a| a.ms)
-                .map_or("—".into(), |m| format!("{m:.3}"));
-            let (n, m) = (perf(&plant, c, sc), perf(&st.mismatch, c, sc));
+            let res = simulate_row(&st, c);
+            let ms = res.ms.map_or("—".into(), |m| format!("{m:.3}"));
+            let (n, m) = (res.nominal, res.mismatch);
             match (n, m) {
                 (Some(n), Some(m)) => {
                     let _ = writeln!(
                         o,
                         "| {} | {ms} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
                         r.label,
-                        cell_pct(n.sp_iae, pr[0]),
-                        cell(n.sp_os, pr[1]),
-                        cell(n.sp_tv, pr[2]),
-                        cell_pct(m.sp_iae, pr[3]),
-                        cell(m.sp_os, pr[4]),
-                        cell_pct(n.ld_iae, pr[5]),
-                        cell(n.ld_pk, pr[6]),
-                        cell(n.ld_tv, pr[7]),
-                        cell_pct(m.ld_iae, pr[8]),
-                        cell(m.ld_pk, pr[9]),
+                        cell_pct(n.sp_iae, p.sp_iae),
+                        cell(n.sp_overshoot, p.sp_overshoot),
+                        cell(n.sp_tv, p.sp_tv),
+                        cell_pct(m.sp_iae, p.sp_iae_mismatch),
+                        cell(m.sp_overshoot, p.sp_overshoot_mismatch),
+                        cell_pct(n.ld_iae, p.ld_iae),
+                        cell(n.ld_peak, p.ld_peak),
+                        cell(n.ld_tv, p.ld_tv),
+                        cell_pct(m.ld_iae, p.ld_iae_mismatch),
+                        cell(m.ld_peak, p.ld_peak_mismatch),
                     );
                 }
                 _ => {
@@ -234,6 +196,7 @@ pub fn report() -> String {
                     );
                 }
             }
+            let plant = st.plant.plant();
             for (case, p) in [("nominal", &plant), ("mismatch", &st.mismatch)] {
                 if let Ok(res) = simulate(p, c, sc) {
                     let step = (res.t.len() / 200).max(1);
@@ -309,8 +272,10 @@ pub fn report() -> String {
             let _ = writeln!(o, "  Liu et al. load response: failed: {e}\n");
         }
     }
+}
 
-    // ------------------------------------------------------------------ Eq. (27)
+/// The weighting-type set-point filter of Eq. (27) for the comparison rows.
+fn weighting_filters(o: &mut String) {
     let _ = writeln!(
         o,
         "### The weighting-type set-point filter of Eq. (27) for the comparison rows\n\n\
@@ -378,17 +343,17 @@ pub fn report() -> String {
          Zhang et al. τ_I τ_D = 1.9911 needs τ_D = 0.6657, printed 0.665; Luyben 1996 \
          200.555 needs τ_D = 3.561, printed 3.56).\n"
     );
+}
 
-    // ------------------------------------------------------------------ λ guidelines
+/// λ guidelines (Figs. 8, 9) and IAE at Ms = 2 (Fig. 7).
+fn guidelines(o: &mut String) {
     let _ = writeln!(
         o,
         "### λ guidelines (Figs. 8, 9) and IAE at Ms = 2 (Fig. 7)\n"
     );
-    let levels = [1.6, 1.8, 2.0];
     // Fig. 9: DIP, λ vs θ
     let thetas = [0.5, 1.0, 2.0, 4.0, 6.0, 8.0, 10.0];
     let mut csv9 = String::from("theta,lambda_ms1.6,lambda_ms1.8,lambda_ms2.0\n");
-    let mut sums = [(0.0, 0.0); 3];
     let _ = writeln!(
         o,
         "DIP k·e^(-θs)/s, ζ = 1, φ = 100 (Fig. 9): λ for a target Ms\n"
@@ -397,12 +362,9 @@ pub fn report() -> String {
         o,
         "| θ | λ (Ms 1.6) | λ (Ms 1.8) | λ (Ms 2.0) |\n|---|---|---|---|"
     );
-    for th in thetas {
-        let f = Family::Piptd { k: 1.0, theta: th };
-        let ls: Vec<Option<f64>> = levels
-            .iter()
-            .map(|ms| lambda_for_ms(&f, *ms, 1.0, 0.3, 100.0).ok())
-            .collect();
+    let points = fig9_dip_lambdas(&thetas);
+    for p in &points {
+        let (th, ls) = (p.theta, p.lambda);
         let fmt = |x: &Option<f64>| x.map_or("—".into(), |v| format!("{v:.4}"));
         let _ = writeln!(
             o,
@@ -418,19 +380,12 @@ pub fn report() -> String {
             ls[1].unwrap_or(f64::NAN),
             ls[2].unwrap_or(f64::NAN)
         );
-        for (i, l) in ls.iter().enumerate() {
-            if let Some(l) = l {
-                sums[i].0 += l * th;
-                sums[i].1 += th * th;
-            }
-        }
     }
     let _ = writeln!(
         o,
         "\n| Ms | α fitted (λ = αθ, least squares through 0) | α printed |\n|---|---|---|"
     );
-    for (i, (ms, a)) in DIP_ALPHA.iter().enumerate() {
-        let fit = sums[i].0 / sums[i].1;
+    for ((ms, a), fit) in DIP_ALPHA.iter().zip(fitted_alpha(&points)) {
         let _ = writeln!(
             o,
             "| {ms} | {fit:.4} ({:+.1} %) | {a} |",
@@ -451,34 +406,8 @@ pub fn report() -> String {
     );
     let _ = writeln!(o, "| θ/τ | λ (Ms 1.6) | λ (Ms 1.8) | λ (Ms 2.0) | load IAE at Ms 2.0 | Zhang et al. λ (Ms 2.0) | Zhang et al. load IAE |\n|---|---|---|---|---|---|---|");
     for r in ratios {
-        let f = Family::Ifoptd {
-            k: 1.0,
-            tau: 1.0,
-            theta: r,
-        };
-        let ls: Vec<Option<f64>> = levels
-            .iter()
-            .map(|ms| lambda_for_ms(&f, *ms, 1.0, 0.3, 100.0).ok())
-            .collect();
-        let iae = ls[2].and_then(|l| {
-            let d = design(&f, l, 1.0, 0.3, 100.0).ok()?;
-            let t_end = 60.0 * (r + 1.0);
-            let sc = Scenario::steps(t_end, (r / 20.0).min(0.02), 0.0, 0.0, 0.0, 1.0);
-            let res = simulate(&f.plant(), &d.controller, &sc).ok()?;
-            res.metrics.regulatory.map(|m| m.iae)
-        });
-        // Zhang et al. (rule derived in `zhang1999_pid`) at the same Ms = 2
-        let zl = pidlab::analysis::freq::solve_for_ms(2.0, 1e-3 * r, 50.0 * (1.0 + r), |l| {
-            Ok((f.plant(), ssl::zhang1999_controller(&f, l)?))
-        })
-        .ok();
-        let ziae = zl.and_then(|l| {
-            let c = ssl::zhang1999_controller(&f, l).ok()?;
-            let t_end = 60.0 * (r + 1.0);
-            let sc = Scenario::steps(t_end, (r / 20.0).min(0.02), 0.0, 0.0, 0.0, 1.0);
-            let res = simulate(&f.plant(), &c, &sc).ok()?;
-            res.metrics.regulatory.map(|m| m.iae)
-        });
+        let p = fig8_fig7_point(r);
+        let (ls, iae, zl, ziae) = (p.lambda, p.load_iae, p.zhang_lambda, p.zhang_load_iae);
         let fmt = |x: &Option<f64>| x.map_or("—".into(), |v| format!("{v:.4}"));
         let _ = writeln!(
             o,
@@ -514,7 +443,6 @@ pub fn report() -> String {
          states nor quotes a setting of, so it is not regenerated. λ for any target Ms is exposed \
          as the `target_ms` parameter of `shamsuzzoha_lee`.\n"
     );
-    o
 }
 
 fn write_csv(name: &str, body: &str) {

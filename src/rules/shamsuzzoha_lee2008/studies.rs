@@ -4,11 +4,12 @@
 
 use super::settings::*;
 use super::tables::*;
-use super::{design, CITATION};
+use super::{design, imc_pid, lambda_for_ms, ImcModel, CITATION};
+use crate::analysis::freq::{analyze, solve_for_ms};
 use crate::model::controller::Controller;
 use crate::model::plant::{Family, Plant};
 use crate::rules::Params;
-use crate::sim::Scenario;
+use crate::sim::{simulate, Scenario};
 
 /// One row of a simulation-study table.
 #[derive(Debug, Clone)]
@@ -205,4 +206,200 @@ pub fn studies() -> Vec<Study> {
             ],
         },
     ]
+}
+
+// ---------------------------------------------------------------------------------------
+// The computations of the reproduction report
+// ---------------------------------------------------------------------------------------
+
+/// A loop's performance in the tables' terms (see [`PrintedPerf`](super::PrintedPerf)).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Perf {
+    /// Set point: IAE.
+    pub sp_iae: f64,
+    /// Set point: peak of y (1.0 = no overshoot).
+    pub sp_overshoot: f64,
+    /// Set point: TV of u.
+    pub sp_tv: f64,
+    /// Load: IAE.
+    pub ld_iae: f64,
+    /// Load: peak deviation.
+    pub ld_peak: f64,
+    /// Load: TV of u.
+    pub ld_tv: f64,
+}
+
+/// Simulates `c` on `plant` over the scenario; None when the simulation fails or diverges.
+pub fn perf(plant: &Plant, c: &Controller, sc: &Scenario) -> Option<Perf> {
+    let r = simulate(plant, c, sc).ok()?;
+    if r.diverged {
+        return None;
+    }
+    let s = r.metrics.servo?;
+    let g = r.metrics.regulatory?;
+    Some(Perf {
+        sp_iae: s.iae,
+        sp_overshoot: 1.0 + s.overshoot.unwrap_or(0.0),
+        sp_tv: s.tv,
+        ld_iae: g.iae,
+        ld_peak: g.peak_error,
+        ld_tv: g.tv,
+    })
+}
+
+/// A row of a study simulated: Ms on the nominal plant, and the performance on the nominal and
+/// on the mismatch plant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RowResult {
+    /// Ms of the loop on the nominal plant.
+    pub ms: Option<f64>,
+    /// Performance on the nominal plant.
+    pub nominal: Option<Perf>,
+    /// Performance on the worst-case mismatch plant.
+    pub mismatch: Option<Perf>,
+}
+
+/// Simulates the controller `c` of a row of `study`.
+pub fn simulate_row(study: &Study, c: &Controller) -> RowResult {
+    let plant = study.plant.plant();
+    RowResult {
+        ms: analyze(&plant, c).ok().and_then(|a| a.ms),
+        nominal: perf(&plant, c, &study.scenario),
+        mismatch: perf(&study.mismatch, c, &study.scenario),
+    }
+}
+
+/// τ_D from the printed (garbled) Eqs. (23c) and (30c) beside the routine's, for Examples 1
+/// and 5 (Tables 1 and 5).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PrintedClosedForms {
+    /// τ_D by Eq. (23c) as printed, Example 1.
+    pub td_23c_printed: f64,
+    /// τ_D of the routine, Example 1.
+    pub td_ex1: f64,
+    /// τ_D by Eq. (30c) as printed, Example 5.
+    pub td_30c_printed: f64,
+    /// τ_D of the routine, Example 5.
+    pub td_ex5: f64,
+}
+
+/// Evaluates the printed Eqs. (23c) (Example 1: K = 1, τ = 1, θ = 0.2, λ = 0.433) and (30c)
+/// (Example 5: K = 0.0506, θ = 6, λ = 3.437), ζ = 1, φ = 100, with β from the routine.
+pub fn printed_closed_forms() -> Option<PrintedClosedForms> {
+    let fo = ImcModel {
+        gain: 100.0,
+        lags: vec![1.0, 100.0],
+        theta: 0.2,
+    };
+    let dip = ImcModel {
+        gain: 100.0 * 0.0506,
+        lags: vec![100.0],
+        theta: 6.0,
+    };
+    let (p1, p5) = (
+        imc_pid(&fo, 0.433, 1.0).ok()?,
+        imc_pid(&dip, 3.437, 1.0).ok()?,
+    );
+    let (th, l, z, phi, tau) = (0.2, 0.433, 1.0, 100.0, 1.0);
+    let (b1, b2) = (p1.beta[0], p1.beta[1]);
+    let e0 = 4.0 * l * z + th - b1;
+    let e1 = -th * th / 2.0 + th * b1 - b2 + 2.0 * l * l + 4.0 * l * l * z * z;
+    let e2p = -th * th * th / 2.0 + b1 * th * th / 2.0 + th * b2 + 4.0 * l * l * l * z;
+    let td23c = ((b2 + (tau + phi) * b1 + phi * tau) - e2p / e0) / p1.ti - e1 / e0;
+    let (th, l, z) = (6.0, 3.437, 1.0);
+    let b = p5.beta[0];
+    let e0 = th - b + 2.0 * l * z;
+    let e1 = l * l - th * th / 2.0 + b * th;
+    let td30c = (phi * b - (th * th / 6.0 - b * th * th / 2.0) / e0) / p5.ti - e1 / e0;
+    Some(PrintedClosedForms {
+        td_23c_printed: td23c,
+        td_ex1: p1.td,
+        td_30c_printed: td30c,
+        td_ex5: p5.td,
+    })
+}
+
+/// The Ms levels of Figs. 8 and 9.
+pub const MS_LEVELS: [f64; 3] = [1.6, 1.8, 2.0];
+
+/// One θ of Fig. 9: λ for each of [`MS_LEVELS`] on the DIP `e^{−θs}/s` (ζ = 1, γ = 0.3, φ = 100).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DipLambdas {
+    /// θ.
+    pub theta: f64,
+    /// λ for Ms 1.6, 1.8, 2.0 (None: not reached).
+    pub lambda: [Option<f64>; 3],
+}
+
+/// Fig. 9: λ for the target Ms levels on the DIP `e^{−θs}/s` at each θ.
+pub fn fig9_dip_lambdas(thetas: &[f64]) -> Vec<DipLambdas> {
+    thetas
+        .iter()
+        .map(|&theta| {
+            let f = Family::Piptd { k: 1.0, theta };
+            DipLambdas {
+                theta,
+                lambda: MS_LEVELS.map(|ms| lambda_for_ms(&f, ms, 1.0, 0.3, 100.0).ok()),
+            }
+        })
+        .collect()
+}
+
+/// The slopes α of `λ = αθ` fitted to Fig. 9's points by least squares through 0, per Ms level.
+pub fn fitted_alpha(points: &[DipLambdas]) -> [f64; 3] {
+    let mut sums = [(0.0, 0.0); 3];
+    for p in points {
+        for (i, l) in p.lambda.iter().enumerate() {
+            if let Some(l) = l {
+                sums[i].0 += l * p.theta;
+                sums[i].1 += p.theta * p.theta;
+            }
+        }
+    }
+    sums.map(|(a, b)| a / b)
+}
+
+/// One θ/τ of Figs. 8 and 7 on the FODIP `e^{−θs}/(s(s + 1))` (ζ = 1, γ = 0.3, φ = 100).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FodipPoint {
+    /// θ/τ.
+    pub ratio: f64,
+    /// λ for Ms 1.6, 1.8, 2.0 (Fig. 8).
+    pub lambda: [Option<f64>; 3],
+    /// IAE of a unit load step at Ms = 2 (Fig. 7).
+    pub load_iae: Option<f64>,
+    /// Zhang et al.'s λ at Ms = 2.
+    pub zhang_lambda: Option<f64>,
+    /// Zhang et al.'s load IAE at Ms = 2.
+    pub zhang_load_iae: Option<f64>,
+}
+
+/// Figs. 8 and 7 at θ/τ = `r`: λ for the Ms levels, and the load IAE at Ms = 2 of the proposed
+/// controller and of Zhang et al.'s (rule derived in [`zhang1999_pid`](super::zhang1999_pid)).
+pub fn fig8_fig7_point(r: f64) -> FodipPoint {
+    let f = Family::Ifoptd {
+        k: 1.0,
+        tau: 1.0,
+        theta: r,
+    };
+    let lambda = MS_LEVELS.map(|ms| lambda_for_ms(&f, ms, 1.0, 0.3, 100.0).ok());
+    let t_end = 60.0 * (r + 1.0);
+    let sc = Scenario::steps(t_end, (r / 20.0).min(0.02), 0.0, 0.0, 0.0, 1.0);
+    let load_iae = |c: &Controller| -> Option<f64> {
+        let res = simulate(&f.plant(), c, &sc).ok()?;
+        res.metrics.regulatory.map(|m| m.iae)
+    };
+    let iae = lambda[2].and_then(|l| load_iae(&design(&f, l, 1.0, 0.3, 100.0).ok()?.controller));
+    let zl = solve_for_ms(2.0, 1e-3 * r, 50.0 * (1.0 + r), |l| {
+        Ok((f.plant(), zhang1999_controller(&f, l)?))
+    })
+    .ok();
+    let ziae = zl.and_then(|l| load_iae(&zhang1999_controller(&f, l).ok()?));
+    FodipPoint {
+        ratio: r,
+        lambda,
+        load_iae: iae,
+        zhang_lambda: zl,
+        zhang_load_iae: ziae,
+    }
 }
