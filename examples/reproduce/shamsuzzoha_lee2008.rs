@@ -224,54 +224,7 @@ fn simulations(o: &mut String) {
             &csv,
         );
     }
-    let _ = writeln!(
-        o,
-        "Differences from print, explained:\n\
-         - **Example 2's load step is 0.1**, not 1: with a unit load every printed disturbance \
-         IAE, peak and TV of Table 2 is 10× ours, for the proposed and Skogestad's rows alike \
-         (Liu et al.'s test uses a 0.1 load). With 0.1 they agree.\n\
-         - Table 1, Zhang et al.: the printed disturbance 'overshoot 1.72, TV 0.48' are swapped \
-         columns: our peak is 0.481 and TV 1.70.\n\
-         - Skogestad's SIMC setting for the double integrator (K_c = 1/(4(τ_c+θ)²), τ_I = τ_D = \
-         4(τ_c+θ)) is a series-form PID; with the derivative on the measurement (no set-point \
-         filter, and an ideal derivative of a set-point step would be an impulse) it reproduces \
-         the printed set-point IAE and overshoot within about 1 %.\n\
-         - Proposed rows: every simulated IAE is within 2 % of print except three cells: Example \
-         2's mismatch set-point (−2.6 %) and load (−2.4 %) IAE, where the mismatch loop is very \
-         lightly damped (Ms 6.8 on the mismatch plant) and the IAE sensitive to how it is \
-         simulated, and Example 3's mismatch set-point IAE (+2.9 %; nominal +1.8 %), which we \
-         could not trace to a structural choice (the load rows of Example 3 agree to 0.4 %).\n\
-         - TV: ours counts every move of the sampled u including the jump at the step (Cr is \
-         biproper: a set-point step moves u at once); the paper's sampling is not stated. Ours is \
-         larger for most set-point rows (Example 3: by about the initial jump), close for the \
-         load rows.\n\
-         - Example 4, Rivera et al.: the load row reproduces; the printed set-point IAE 39.0 \
-         does not follow from a 1DOF PID × F_t (ours about 22 with overshoot 1.27 vs 1.33): the \
-         paper's set-point path for this row is not fully specified.\n\
-         - Example 4, Wang & Cluett: the paper reports a 3 % set-point offset, impossible for a \
-         PID with integral action on an integrating plant; their controller structure is not \
-         given, so this row is not reproduced (mapped as an ideal PID, derivative on y).\n\
-         - Example 2, Liu et al.: a set-point controller around a delay-free model, a stabilizer \
-         R(s) = 0.4s/(0.1s+1) and a disturbance estimator F₀ acting on y − G̃e^(-θs)u. With a \
-         perfect model the load response depends on F₀ alone, y = Ge^(-θs)(1 − F₀Ge^(-θs))d, \
-         computed exactly below; the set-point controller is not printed and R's place in the \
-         scheme is not given (without R the scheme is internally unstable: the model's double \
-         integrator runs open loop), so the set-point and mismatch columns cannot be computed \
-         and there is no preset.\n"
-    );
-    match ssl::liu_load_response(50.0, 0.1, 100.0, 0.001) {
-        Ok((iae, peak, tv)) => {
-            let _ = writeln!(
-                o,
-                "  Liu et al. nominal load response (0.1 step): IAE {iae:.4} (printed 2.63), peak \
-                 {peak:.4} (0.39), TV of u {tv:.4} (0.37 ≈ ours + 0.1: the printed value looks like \
-                 the TV of u + d).\n"
-            );
-        }
-        Err(e) => {
-            let _ = writeln!(o, "  Liu et al. load response: failed: {e}\n");
-        }
-    }
+    differences(o);
 }
 
 /// The weighting-type set-point filter of Eq. (27) for the comparison rows.
@@ -448,5 +401,57 @@ fn guidelines(o: &mut String) {
 fn write_csv(name: &str, body: &str) {
     if std::fs::create_dir_all("docs/figures").is_ok() {
         let _ = std::fs::write(format!("docs/figures/{name}"), body);
+    }
+}
+
+/// The differences from print, explained (after the tables of the simulation study).
+fn differences(o: &mut String) {
+    let _ = writeln!(
+        o,
+        "Differences from print, explained:\n\
+         - **Example 2's load step is 0.1**, not 1: with a unit load every printed disturbance \
+         IAE, peak and TV of Table 2 is 10× ours, for the proposed and Skogestad's rows alike \
+         (Liu et al.'s test uses a 0.1 load). With 0.1 they agree.\n\
+         - Table 1, Zhang et al.: the printed disturbance 'overshoot 1.72, TV 0.48' are swapped \
+         columns: our peak is 0.481 and TV 1.70.\n\
+         - Skogestad's SIMC setting for the double integrator (K_c = 1/(4(τ_c+θ)²), τ_I = τ_D = \
+         4(τ_c+θ)) is a series-form PID; with the derivative on the measurement (no set-point \
+         filter, and an ideal derivative of a set-point step would be an impulse) it reproduces \
+         the printed set-point IAE and overshoot within about 1 %.\n\
+         - Proposed rows: every simulated IAE is within 2 % of print except three cells: Example \
+         2's mismatch set-point (−2.6 %) and load (−2.4 %) IAE, where the mismatch loop is very \
+         lightly damped (Ms 6.8 on the mismatch plant) and the IAE sensitive to how it is \
+         simulated, and Example 3's mismatch set-point IAE (+2.9 %; nominal +1.8 %), which we \
+         could not trace to a structural choice (the load rows of Example 3 agree to 0.4 %).\n\
+         - TV: ours counts every move of the sampled u including the jump at the step (Cr is \
+         biproper: a set-point step moves u at once); the paper's sampling is not stated. Ours is \
+         larger for most set-point rows (Example 3: by about the initial jump), close for the \
+         load rows.\n\
+         - Example 4, Rivera et al.: the load row reproduces; the printed set-point IAE 39.0 \
+         does not follow from a 1DOF PID × F_t (ours about 22 with overshoot 1.27 vs 1.33): the \
+         paper's set-point path for this row is not fully specified.\n\
+         - Example 4, Wang & Cluett: the paper reports a 3 % set-point offset, impossible for a \
+         PID with integral action on an integrating plant; their controller structure is not \
+         given, so this row is not reproduced (mapped as an ideal PID, derivative on y).\n\
+         - Example 2, Liu et al.: a set-point controller around a delay-free model, a stabilizer \
+         R(s) = 0.4s/(0.1s+1) and a disturbance estimator F₀ acting on y − G̃e^(-θs)u. With a \
+         perfect model the load response depends on F₀ alone, y = Ge^(-θs)(1 − F₀Ge^(-θs))d, \
+         computed exactly below; the set-point controller is not printed and R's place in the \
+         scheme is not given (without R the scheme is internally unstable: the model's double \
+         integrator runs open loop), so the set-point and mismatch columns cannot be computed \
+         and there is no preset.\n"
+    );
+    match ssl::liu_load_response(50.0, 0.1, 100.0, 0.001) {
+        Ok((iae, peak, tv)) => {
+            let _ = writeln!(
+                o,
+                "  Liu et al. nominal load response (0.1 step): IAE {iae:.4} (printed 2.63), peak \
+                 {peak:.4} (0.39), TV of u {tv:.4} (0.37 ≈ ours + 0.1: the printed value looks like \
+                 the TV of u + d).\n"
+            );
+        }
+        Err(e) => {
+            let _ = writeln!(o, "  Liu et al. load response: failed: {e}\n");
+        }
     }
 }
