@@ -3,12 +3,12 @@
 //! worst-case mismatch), the printed closed forms, and the λ guideline curves of Figs. 7-9
 //! (CSV under `docs/figures/`).
 
+use pidlab::analysis::simulate;
 use pidlab::rules::shamsuzzoha_lee2008 as ssl;
 use pidlab::rules::shamsuzzoha_lee2008::studies::{
     fig8_fig7_point, fig9_dip_lambdas, fitted_alpha, printed_closed_forms, simulate_row,
 };
 use pidlab::rules::shamsuzzoha_lee2008::{design, studies, weighting_filter, DIP_ALPHA};
-use pidlab::sim::simulate;
 use std::fmt::Write;
 
 fn cell(ours: f64, printed: f64) -> String {

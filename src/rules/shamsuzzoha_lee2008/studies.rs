@@ -6,10 +6,11 @@ use super::settings::*;
 use super::tables::*;
 use super::{design, imc_pid, lambda_for_ms, ImcModel, CITATION};
 use crate::analysis::freq::{analyze, solve_for_ms};
+use crate::analysis::simulate;
 use crate::model::controller::Controller;
 use crate::model::plant::{Family, Plant};
 use crate::rules::Params;
-use crate::sim::{simulate, Scenario};
+use crate::sim::Scenario;
 
 /// One row of a simulation-study table.
 #[derive(Debug, Clone)]
