@@ -139,12 +139,7 @@ fn printed_parameters_and_filters() {
             .with("zeta", r.zeta)
             .with("gamma", r.gamma);
         let t = rules::tune("shamsuzzoha_lee", &r.family.plant(), &params).unwrap();
-        assert_eq!(
-            pidlab::api::tuning_json(&t)["named"]["kc"].as_f64(),
-            Some(d.pid.kc),
-            "{}",
-            r.cite
-        );
+        assert_eq!(t.named("kc"), Some(d.pid.kc), "{}", r.cite);
     }
 }
 
@@ -379,10 +374,10 @@ fn table1_simulated_iae() {
     let (sp, os, ld, pk) = sim_metrics(&ex1.plant.plant(), c, &ex1.scenario);
     let (sp_m, os_m, ld_m, pk_m) = sim_metrics(&ex1.mismatch, c, &ex1.scenario);
     for (what, ours, printed) in [
-        ("set-point IAE nominal", sp, pr[0]),
-        ("set-point IAE 20% mismatch", sp_m, pr[3]),
-        ("load IAE nominal", ld, pr[5]),
-        ("load IAE 20% mismatch", ld_m, pr[8]),
+        ("set-point IAE nominal", sp, pr.sp_iae),
+        ("set-point IAE 20% mismatch", sp_m, pr.sp_iae_mismatch),
+        ("load IAE nominal", ld, pr.ld_iae),
+        ("load IAE 20% mismatch", ld_m, pr.ld_iae_mismatch),
     ] {
         assert!(
             rel(ours, printed) < 0.02,
@@ -401,7 +396,10 @@ fn table1_simulated_iae() {
         .to_controller()
         .unwrap();
     let (sp_b, _, _, _) = sim_metrics(&ex1.plant.plant(), &b, &ex1.scenario);
-    assert!(rel(sp_b, pr[0]) > 0.2, "derivative-on-y loop gives {sp_b}");
+    assert!(
+        rel(sp_b, pr.sp_iae) > 0.2,
+        "derivative-on-y loop gives {sp_b}"
+    );
 }
 
 /// λ for a target Ms: the paper tuned Example 1 to Ms = 1.65 (λ = 0.433 gives 1.652).
@@ -418,9 +416,11 @@ fn target_ms_solves_lambda() {
         &Params::default().with("target_ms", 1.65),
     )
     .unwrap();
-    let l = pidlab::api::tuning_json(&t)["details"]["lambda"]
-        .as_f64()
-        .unwrap();
+    let rules::Details::ShamsuzzohaLee2008(details) = &t.details else {
+        panic!("details of another paper: {:?}", t.details)
+    };
+    assert_eq!(details.lambda_source, "target_ms");
+    let l = details.lambda;
     let a = analyze(&f.plant(), &t.controller).unwrap();
     assert!(
         (a.ms.unwrap() - 1.65).abs() < 1e-4,
@@ -561,15 +561,24 @@ fn input_errors_name_the_field() {
 /// set-point IAE on the mismatch plant.
 #[wasm_bindgen_test(unsupported = test)]
 fn tables2to5_proposed_rows_simulated_iae() {
-    // (example, column index into PrintedPerf, measured relative difference)
-    let exceptions = [("ex2", 3, -0.026), ("ex2", 8, -0.024), ("ex3", 3, 0.029)];
+    // (example, column of PrintedPerf, measured relative difference)
+    let exceptions = [
+        ("ex2", "sp_iae_mismatch", -0.026),
+        ("ex2", "ld_iae_mismatch", -0.024),
+        ("ex3", "sp_iae_mismatch", 0.029),
+    ];
     for st in studies().iter().filter(|s| s.id != "ex1") {
         let row = st.rows.iter().find(|r| r.key == "proposed").unwrap();
         let c = row.controller.as_ref().unwrap();
         let (sp, _, ld, _) = sim_metrics(&st.plant.plant(), c, &st.scenario);
         let (sp_m, _, ld_m, _) = sim_metrics(&st.mismatch, c, &st.scenario);
-        for (col, ours) in [(0, sp), (3, sp_m), (5, ld), (8, ld_m)] {
-            let printed = row.printed[col];
+        let p = &row.printed;
+        for (col, ours, printed) in [
+            ("sp_iae", sp, p.sp_iae),
+            ("sp_iae_mismatch", sp_m, p.sp_iae_mismatch),
+            ("ld_iae", ld, p.ld_iae),
+            ("ld_iae_mismatch", ld_m, p.ld_iae_mismatch),
+        ] {
             let d = (ours - printed) / printed;
             match exceptions.iter().find(|(id, c, _)| *id == st.id && *c == col) {
                 Some((_, _, m)) => assert!(
@@ -587,31 +596,33 @@ fn tables2to5_proposed_rows_simulated_iae() {
     }
 }
 
-/// Every preset loads and runs through the JSON API: a method call that tunes (or a literal
+/// Every preset loads and runs: a method call that tunes through the registry (or a literal
 /// (Cr, Cy)), then its scenario simulates without diverging.
 #[wasm_bindgen_test(unsupported = test)]
 fn presets_load_and_simulate() {
-    let ps = pidlab::rules::shamsuzzoha_lee2008::legacy_presets();
+    let ps = pidlab::rules::shamsuzzoha_lee2008::presets();
     assert_eq!(
         ps.len(),
         2 * 14,
         "14 mappable rows (all but Liu et al.), nominal and mismatch"
     );
     for p in ps {
-        let controller = if p.tune.is_null() {
-            p.controller.clone()
-        } else {
-            let mut q = p.tune.clone();
-            q["plant"] = p.plant.clone();
-            pidlab::api::tune(&q).unwrap_or_else(|e| panic!("{}: {e}", p.id))["controller"].clone()
+        let rules::AnyPreset::Typed(p) = p else {
+            panic!("untyped preset")
         };
-        let r = pidlab::api::simulate(&serde_json::json!({
-            "plant": p.plant, "controller": controller, "scenario": p.scenario
-        }))
-        .unwrap_or_else(|e| panic!("{}: {e}", p.id));
-        let iae = r["metrics"]["regulatory"]["iae"].as_f64();
-        assert_eq!(r["diverged"], serde_json::json!(false), "{}", p.id);
-        assert!(iae.is_some_and(|x| x.is_finite()), "{}: {r:?}", p.id);
+        let controller = match &p.design {
+            rules::Design::Rule { method, params } => {
+                rules::tune(method, &p.plant, params)
+                    .unwrap_or_else(|e| panic!("{}: {e}", p.id))
+                    .controller
+            }
+            rules::Design::Controller(c) => c.clone(),
+        };
+        let r = simulate(&p.plant, &controller, &p.scenario)
+            .unwrap_or_else(|e| panic!("{}: {e}", p.id));
+        let iae = r.metrics.regulatory.as_ref().map(|m| m.iae);
+        assert!(!r.diverged, "{}", p.id);
+        assert!(iae.is_some_and(|x| x.is_finite()), "{}: {iae:?}", p.id);
     }
 }
 

@@ -114,6 +114,8 @@ pub enum Details {
     Arvanitis2012(arvanitis2012::Details),
     /// A paper not yet moved to typed details (transitional).
     Legacy(Map<String, Value>),
+    /// Shamsuzzoha & Lee 2008.
+    ShamsuzzohaLee2008(Box<shamsuzzoha_lee2008::Details>),
 }
 
 /// How a preset designs its controller.
