@@ -9,8 +9,8 @@ use pidlab::rules::{self, Params};
 use pidlab::sim::{simulate, Scenario};
 use std::fmt::Write;
 
-fn num(m: &serde_json::Map<String, serde_json::Value>, k: &str) -> f64 {
-    m.get(k).and_then(|v| v.as_f64()).unwrap_or(f64::NAN)
+fn details(t: &rules::Tuning) -> &pk::Details {
+    pk::details(t).expect("a tuning of praveen_kumar")
 }
 
 /// IAE, ISE, ITAE, M_p, t_s, TV (dt = 0.01), TV (every 10th sample, 0.1).
@@ -235,24 +235,15 @@ pub fn report() -> String {
         );
         let (l2, msmin, lmsmin) = match &t2 {
             Ok(t2) => (
-                num(
-                    pidlab::api::tuning_json(&t2)["details"]
-                        .as_object()
-                        .unwrap(),
-                    "lambda",
-                ),
-                num(
-                    pidlab::api::tuning_json(&t2)["details"]
-                        .as_object()
-                        .unwrap(),
-                    "ms_min",
-                ),
-                num(
-                    pidlab::api::tuning_json(&t2)["details"]
-                        .as_object()
-                        .unwrap(),
-                    "lambda_ms_min",
-                ),
+                details(&t2).lambda,
+                details(&t2)
+                    .ms_search
+                    .as_ref()
+                    .map_or(f64::NAN, |m| m.ms_min),
+                details(&t2)
+                    .ms_search
+                    .as_ref()
+                    .map_or(f64::NAN, |m| m.lambda_ms_min),
             ),
             Err(_) => (f64::NAN, f64::NAN, f64::NAN),
         };
@@ -261,9 +252,7 @@ pub fn report() -> String {
             .unwrap_or_else(|e| e.to_string());
         match t {
             Ok(t) => {
-                let w = pidlab::api::tuning_json(&t)["details"]
-                    .get("w_ms")
-                    .and_then(|v| v.as_f64());
+                let w = details(&t).w_ms();
                 let _ =
                     writeln!(
                     s,
@@ -272,10 +261,10 @@ pub fn report() -> String {
                     l2,
                     printed_l2[i],
                     pk::LAMBDA_PAPER[i],
-                    num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "ms"),
+                    details(&t).ms().unwrap_or(f64::NAN),
                     printed_ms[i],
                     w.map_or("ω → ∞ (limit 1/(1 − abs L∞))".to_string(), |w| format!("{w:.4}")),
-                    num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "l_inf"),
+                    details(&t).l_inf,
                     msmin,
                     lmsmin
                 );
@@ -294,7 +283,7 @@ pub fn report() -> String {
          admissible interval (the gains blow up at λ_b, abs L(j∞) → 1 at its upper end); the λ for a \
          target Ms is taken on the rising, fast branch, which is the branch the paper reads.\n",
         rules::tune(pk::ID, &pk::EX1.plant(), &Params::default().with("lambda", 1.9))
-            .map(|t| num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "ms"))
+            .map(|t| details(&t).ms().unwrap_or(f64::NAN))
             .unwrap_or(f64::NAN)
     );
 
@@ -465,7 +454,7 @@ pub fn report() -> String {
          (1 − (z/τ)ŝ)e^{{−(θ/τ)ŝ}}/(ŝ(ŝ + 1)), ŝ = τs; the gain k does not affect λ. Example 1 is \
          θ/τ = 0.094, z/τ = 0.394 (λτ = {:.4}).\n",
         1.06 * rules::tune(pk::ID, &pk::EX1.plant(), &Params::default().with("target_ms", 2.0))
-            .map(|t| num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "lambda"))
+            .map(|t| details(&t).lambda)
             .unwrap_or(f64::NAN)
     );
     let zs = [0.1, 0.2, 0.4, 0.6, 0.8, 1.0];
@@ -490,13 +479,7 @@ pub fn report() -> String {
                 &p.plant(),
                 &Params::default().with("target_ms", 2.0),
             ) {
-                Ok(t) => format!(
-                    "{:.4}",
-                    num(
-                        pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
-                        "lambda"
-                    )
-                ),
+                Ok(t) => format!("{:.4}", details(&t).lambda),
                 Err(_) => "—".into(),
             };
             let _ = write!(s, " {cell} |");

@@ -112,6 +112,8 @@ impl Tuning {
 pub enum Details {
     /// A paper not yet moved to typed details (transitional).
     Legacy(Map<String, Value>),
+    /// Praveen Kumar & Narayana.
+    PraveenKumarNarayana(praveen_kumar_narayana::Details),
 }
 
 /// How a preset designs its controller.
