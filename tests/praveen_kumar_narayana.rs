@@ -22,20 +22,23 @@ fn details(t: &rules::Tuning) -> &pk::Details {
     pk::details(t).expect("a tuning of praveen_kumar")
 }
 
-/// Table 1, "Proposed" rows: (plant, λ, k_p, k_i, k_d, α, β). λ from the text of each example
-/// (Example 1: λ = 1.9; Example 2: λ = 0.8 on the reduced model of Eq. 22).
-const TABLE1: [(IpdtIr, f64, [f64; 5]); 2] = [
-    (pk::EX1, 1.9, [3.9468, 1.5338, 2.5361, 0.05, 0.0334]),
-    (
-        pk::EX2_REDUCED,
-        0.8,
-        [1.2805, 0.2180, 1.1928, 0.4050, 0.1362],
-    ),
-];
+/// Table 1, "Proposed" rows ([`pk::tables::TABLE1_PROPOSED`]) with their plants: (plant, λ,
+/// k_p, k_i, k_d, α, β). λ from the text of each example (Example 1: λ = 1.9; Example 2:
+/// λ = 0.8 on the reduced model of Eq. 22).
+fn table1() -> [(IpdtIr, f64, [f64; 5]); 2] {
+    let plants = [pk::EX1, pk::EX2_REDUCED];
+    pk::tables::TABLE1_PROPOSED.map(|r| {
+        (
+            plants[r.example - 1],
+            r.lambda,
+            [r.kp, r.ki, r.kd, r.alpha, r.beta],
+        )
+    })
+}
 
 #[wasm_bindgen_test(unsupported = test)]
 fn table1_parameters_to_printed_digits() {
-    for (p, lambda, printed) in TABLE1 {
+    for (p, lambda, printed) in table1() {
         let t = rules::tune(
             pk::ID,
             &plant_of(&p),
@@ -67,7 +70,7 @@ fn table1_parameters_to_printed_digits() {
 fn eqs_13_14_closed_forms_agree_with_the_solve() {
     // Eqs. (13)-(14) are printed intact; the linear solve must agree with them everywhere
     // in the admissible range (independent reference for k_p, k_i).
-    for (p, _, _) in TABLE1 {
+    for (p, _, _) in table1() {
         let (lo, hi) = pk::lambda_range(&p, true).unwrap();
         let hi = hi.unwrap_or(lo * 100.0);
         for i in 1..20 {
@@ -112,7 +115,7 @@ fn char_residual(p: &IpdtIr, c: &pidlab::model::controller::Controller, lambda: 
 
 #[wasm_bindgen_test(unsupported = test)]
 fn characteristic_equation_has_the_designed_roots() {
-    for (p, lambda, _) in TABLE1 {
+    for (p, lambda, _) in table1() {
         let t = rules::tune(
             pk::ID,
             &plant_of(&p),

@@ -4,7 +4,7 @@
 use pidlab::analysis::freq::analyze;
 use pidlab::model::controller::Controller;
 use pidlab::model::plant::Plant;
-use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
+use pidlab::rules::praveen_kumar_narayana::{self as pk, tables, IpdtIr};
 use pidlab::rules::{self, Params};
 use pidlab::sim::{simulate, Scenario};
 use std::fmt::Write;
@@ -101,55 +101,6 @@ fn ultimate_point(p: &Plant) -> (f64, f64) {
     (lo, p.eval_jw(lo).norm())
 }
 
-/// Printed Tables 2-5: per (example, condition): [Pai servo, Pai reg, Proposed servo, Proposed reg],
-/// each IAE, ISE, ITAE, M_p, t_s, TV.
-const PRINTED: [(&str, usize, bool, [[f64; 6]; 4]); 4] = [
-    (
-        "Example 1, nominal (Tables 2-3)",
-        0,
-        false,
-        [
-            [0.5948, 0.07047, 1.93, 0.3276, 13.8783, 8.95],
-            [0.1683, 0.006101, 0.6784, 0.0730, 14.8463, 2.6959],
-            [0.4163, 0.06497, 0.6607, 0.2001, 4.3765, 0.8229],
-            [0.1445, 0.005695, 0.5008, 0.0603, 6.0863, 0.7017],
-        ],
-    ),
-    (
-        "Example 2, nominal (Tables 2-3)",
-        1,
-        false,
-        [
-            [1.626, 0.1829, 14.42, 0.3662, 39.0119, 2.3503],
-            [1.236, 0.1385, 12.6, 0.2204, 35.5875, 1.6357],
-            [0.9593, 0.1423, 2.922, 0.2021, 9.9881, 0.4589],
-            [0.8433, 0.09507, 5.132, 0.1931, 15.5198, 0.7375],
-        ],
-    ),
-    (
-        "Example 1, +40 % dead time (Tables 4-5)",
-        0,
-        true,
-        [
-            [1.617, 0.1317, 21.78, 0.3556, 51.75, 25.4306],
-            [0.526, 0.01372, 7.726, 0.0808, 51.5634, 8.8742],
-            [0.4136, 0.06588, 0.5956, 0.2001, 4.6187, 0.9759],
-            [0.1412, 0.006135, 0.4022, 0.0669, 6.1231, 0.8220],
-        ],
-    ),
-    (
-        "Example 2, +40 % dead time (Tables 4-5)",
-        1,
-        true,
-        [
-            [9.311, 0.8367, 592.2, 0.4269, 257.5645, 12.4225],
-            [7.08, 0.5262, 458.3, 0.2508, 234.0339, 9.3979],
-            [0.9817, 0.1487, 3.282, 0.2066, 13.2435, 0.5918],
-            [1.002, 0.1377, 7.065, 0.2247, 21.7980, 1.0358],
-        ],
-    ),
-];
-
 pub fn report() -> String {
     let mut s = String::new();
     let _ = writeln!(
@@ -170,10 +121,6 @@ pub fn report() -> String {
     let _ = writeln!(s, "### Table 1: controller parameters\n");
     let _ = writeln!(s, "| example | λ | | k_p | k_i | k_d | α | β |");
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
-    let printed = [
-        [3.9468, 1.5338, 2.5361, 0.05, 0.0334],
-        [1.2805, 0.2180, 1.1928, 0.4050, 0.1362],
-    ];
     for (i, p) in [pk::EX1, pk::EX2_REDUCED].iter().enumerate() {
         let l = pk::LAMBDA_PAPER[i];
         match pk::design(p, l) {
@@ -188,11 +135,11 @@ pub fn report() -> String {
                     d.alpha,
                     d.beta
                 );
-                let q = printed[i];
+                let q = tables::TABLE1_PROPOSED[i];
                 let _ = writeln!(
                     s,
                     "| | | printed | {} | {} | {} | {} | {} |",
-                    q[0], q[1], q[2], q[3], q[4]
+                    q.kp, q.ki, q.kd, q.alpha, q.beta
                 );
                 let _ = writeln!(
                     s,
@@ -220,8 +167,6 @@ pub fn report() -> String {
         "| example | λ(Ms = 2) ours | printed | λ used | Ms ours | printed | ω of Ms | abs L(j∞) | admissible λ | Ms minimum (at λ) |"
     );
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
-    let printed_l2 = [1.1474, 0.6914];
-    let printed_ms = [5.53, 3.9051];
     for (i, p) in [pk::EX1, pk::EX2_REDUCED].iter().enumerate() {
         let t2 = rules::tune(
             pk::ID,
@@ -259,10 +204,10 @@ pub fn report() -> String {
                     "| {} | {:.5} | {} | {} | {:.4} | {} | {} | {:.4} | {range} | {:.4} ({:.4}) |",
                     i + 1,
                     l2,
-                    printed_l2[i],
+                    tables::MS_QUOTES[i].lambda_ms2,
                     pk::LAMBDA_PAPER[i],
                     details(&t).ms().unwrap_or(f64::NAN),
-                    printed_ms[i],
+                    tables::MS_QUOTES[i].ms,
                     w.map_or("ω → ∞ (limit 1/(1 − abs L∞))".to_string(), |w| format!("{w:.4}")),
                     details(&t).l_inf,
                     msmin,
@@ -323,7 +268,15 @@ pub fn report() -> String {
     );
     let designs = [pk::design(&pk::EX1, 1.9), pk::design(&pk::EX2_REDUCED, 0.8)];
     let plants = [pk::EX1.plant(), full.clone()];
-    for (title, ex, perturbed, pr) in PRINTED {
+    for table in tables::TABLES_2_TO_5 {
+        let (title, ex, perturbed) = (table.title, table.example - 1, table.delay_plus_40);
+        let pr = [
+            table.pai_servo,
+            table.pai_regulatory,
+            table.proposed_servo,
+            table.proposed_regulatory,
+        ]
+        .map(|r| r.values());
         let _ = writeln!(s, "#### {title}\n");
         let _ = writeln!(
             s,
@@ -335,7 +288,7 @@ pub fn report() -> String {
             plant.delay *= 1.4;
         }
         let t_end = if ex == 0 { 100.0 } else { 600.0 };
-        let (kc, ti, td) = pk::PAI2010[ex];
+        let tables::PaiRow { kc, ti, td, .. } = tables::TABLE1_PAI2010[ex];
         let pai = pk::pai2010_controller(kc, ti, td).map_err(|e| e.to_string());
         let prop = designs[ex]
             .as_ref()
@@ -425,7 +378,7 @@ pub fn report() -> String {
     {
         let mut full40 = full.clone();
         full40.delay *= 1.4;
-        let (kc, ti, td) = pk::PAI2010[1];
+        let tables::PaiRow { kc, ti, td, .. } = tables::TABLE1_PAI2010[1];
         if let Ok(c) = pk::pai2010_controller(kc, ti, td) {
             for (name, pl) in [("nominal", &full), ("+40 % delay", &full40)] {
                 if let Ok(a) = analyze(pl, &c) {

@@ -81,6 +81,10 @@ use crate::model::poly::Poly;
 use crate::sim::Scenario;
 use nalgebra::{Matrix4, Vector4};
 
+pub mod tables;
+pub use tables::LAMBDA_PAPER;
+use tables::{PaiRow, TABLE1_PAI2010};
+
 /// Method id (API.md).
 pub const ID: &str = "praveen_kumar";
 
@@ -826,10 +830,6 @@ pub const EX2_REDUCED: IpdtIr = IpdtIr {
     z: 0.4699,
     theta: 0.81,
 };
-/// λ of the paper's designs (Example 1, Example 2).
-pub const LAMBDA_PAPER: [f64; 2] = [1.9, 0.8];
-/// Pai et al. 2010 settings quoted in Table 1 as `(K_c, τ_I, τ_D)`: Example 1, Example 2.
-pub const PAI2010: [(f64, f64, f64); 2] = [(4.066, 2.683, 0.650), (1.267, 5.782, 1.12)];
 
 /// Example 2's process, Eq. (21): `0.5(1 − 0.5s)e^{−0.7s}/(s(0.4s + 1)(0.1s + 1)(0.5s + 1))`.
 pub fn ex2_process() -> Plant {
@@ -954,7 +954,7 @@ fn example1_presets() -> Vec<AnyPreset> {
             scenario(100.0, 50.0),
         ),
     ] {
-        let (kc, ti, td) = PAI2010[0];
+        let PaiRow { kc, ti, td, .. } = TABLE1_PAI2010[0];
         if let Ok(c) = pai2010_controller(kc, ti, td) {
             v.push(preset(
                 name,
@@ -1026,7 +1026,7 @@ fn example2_presets() -> Vec<AnyPreset> {
             }
         }
     }
-    let (kc, ti, td) = PAI2010[1];
+    let PaiRow { kc, ti, td, .. } = TABLE1_PAI2010[1];
     if let Ok(c) = pai2010_controller(kc, ti, td) {
         for (name, plant, extra) in [
             ("ex2/pai2010", &full, ""),
