@@ -113,7 +113,7 @@ pub enum Details {
     /// A paper not yet moved to typed details (transitional).
     Legacy(Map<String, Value>),
     /// Praveen Kumar & Narayana.
-    PraveenKumarNarayana(praveen_kumar_narayana::Details),
+    PraveenKumarNarayana(Box<praveen_kumar_narayana::Details>),
 }
 
 /// How a preset designs its controller.

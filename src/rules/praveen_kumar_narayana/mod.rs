@@ -79,6 +79,7 @@ use crate::model::poly::Poly;
 use nalgebra::{Matrix4, Vector4};
 
 pub mod settings;
+pub mod studies;
 pub mod tables;
 pub use settings::{ex2_process, pai2010_controller, presets, CITATION_PAI, EX1, EX2_REDUCED};
 pub use tables::LAMBDA_PAPER;
@@ -335,6 +336,28 @@ pub fn lambda_b(p: &IpdtIr) -> f64 {
     crate::numerics::bisect_predicate(|x| eq17_b(p, x) > 0.0, hi, 0.0, 1e-15, 200)
 }
 
+/// The printed Eq. (17) for β (incomplete in the text), evaluated as printed.
+pub fn eq17_beta_printed(p: &IpdtIr, l: f64) -> f64 {
+    let (t, th, z) = (p.tau, p.theta, p.z);
+    let (l2, l3, l4) = (l * l, l * l * l, l * l * l * l);
+    let nb = l4 * th.powi(3) * z * z
+        + t * l4 * th.powi(3) * z
+        + 2.0 * l4 * th * th * z.powi(3)
+        + 2.0 * t * l4 * th * th * z * z
+        + 4.0 * t * l4 * th * z.powi(3)
+        + 8.0 * l3 * th * th * z * z
+        + 8.0 * t * l3 * th * th * z
+        + 16.0 * l3 * th * z * z
+        + 16.0 * t * l3 * th * z
+        + 32.0 * t * l3 * z * z
+        + 24.0 * l2 * th * z
+        + 24.0 * t * l2 * th
+        + 48.0 * t * l2 * z
+        + 32.0 * t * l
+        - 8.0;
+    -nb / eq17_b(p, l)
+}
+
 /// |L(j∞)| of the designed loop with the ideal derivative on the measurement:
 /// `Cy ~ k_d (α/β) s`, plant `~ −k z/(τ s)`, so `|L(j∞)| = |k z k_d α/(τ β)|`
 /// (0 when z = 0 or θ = 0: then the loop is not neutral).
@@ -576,7 +599,7 @@ impl Details {
 /// The details of a tuning of this paper, if `t` is one.
 pub fn details(t: &Tuning) -> Option<&Details> {
     match &t.details {
-        super::Details::PraveenKumarNarayana(d) => Some(d),
+        super::Details::PraveenKumarNarayana(d) => Some(&**d),
         #[allow(unreachable_patterns)]
         _ => None,
     }
@@ -619,27 +642,7 @@ fn tune_validated(plant: &Plant, params: &Params, decl: &[ParamInfo]) -> Result<
             ))
         }
     };
-    let range_text = match lmax {
-        Some(h) => format!("({lb:.6}, {h:.6})"),
-        None => format!("({lb:.6}, ∞)"),
-    };
-    let d = design(&p, lambda).map_err(|e| {
-        Error::new(
-            e.path,
-            format!("{}; admissible λ ∈ {range_text}", e.message),
-        )
-    })?;
-    let linf = l_inf(&p, &d);
-    if neutral && linf >= 1.0 {
-        let which = if lambda < lb { "small" } else { "large" };
-        return Err(Error::new(
-            "params.lambda",
-            format!(
-                "λ too {which}: |L(j∞)| = |k z k_d α/(τ β)| = {linf:.4} ≥ 1 with the ideal derivative: \
-                 the loop is neutral and unstable for any dead time; admissible λ ∈ {range_text}"
-            ),
-        ));
-    }
+    let (d, linf) = design_in_range(&p, lambda, neutral, (lb, lmax))?;
     if neutral && params.0.contains_key("n") {
         warnings.push(
             "params.n ignored: the derivative filter applies to derivative = \"error\" only".into(),
@@ -711,8 +714,41 @@ fn tune_validated(plant: &Plant, params: &Params, decl: &[ParamInfo]) -> Result<
         method: ID.into(),
         controller: c,
         named,
-        details: super::Details::PraveenKumarNarayana(details),
+        details: super::Details::PraveenKumarNarayana(Box::new(details)),
     })
+}
+
+/// The design at λ, its errors completed with the admissible interval `range`, and
+/// |L(j∞)|; with the ideal derivative (`neutral`) a neutral, unstable loop (|L(j∞)| ≥ 1) is an
+/// error too.
+fn design_in_range(
+    p: &IpdtIr,
+    lambda: f64,
+    neutral: bool,
+    (lb, lmax): (f64, Option<f64>),
+) -> Result<(Design, f64)> {
+    let range_text = match lmax {
+        Some(h) => format!("({lb:.6}, {h:.6})"),
+        None => format!("({lb:.6}, ∞)"),
+    };
+    let d = design(p, lambda).map_err(|e| {
+        Error::new(
+            e.path,
+            format!("{}; admissible λ ∈ {range_text}", e.message),
+        )
+    })?;
+    let linf = l_inf(p, &d);
+    if neutral && linf >= 1.0 {
+        let which = if lambda < lb { "small" } else { "large" };
+        return Err(Error::new(
+            "params.lambda",
+            format!(
+                "λ too {which}: |L(j∞)| = |k z k_d α/(τ β)| = {linf:.4} ≥ 1 with the ideal derivative: \
+                 the loop is neutral and unstable for any dead time; admissible λ ∈ {range_text}"
+            ),
+        ));
+    }
+    Ok((d, linf))
 }
 
 /// Warnings from the frequency analysis of the exact-delay loop: not stable, Ms above 2, or the
