@@ -70,6 +70,15 @@
 //! designed on the reduced model of Eq. (22) (taken as printed, see [`EX2_REDUCED`]) and
 //! simulated on Eq. (21) (the printed servo rows match that). Pai et al. 2010's settings are
 //! presets with our reconstruction of their structure ([`pai2010_controller`]).
+//!
+//! ## Files
+//! - `mod.rs`: the rule (Eqs. 10-17 and 19 beside the code), its parameter declarations
+//!   ([`param_decls`], authoritative: the registry validates calls against them) and its typed
+//!   [`Details`];
+//! - [`tables`]: the printed Table 1, the λ and Ms quoted in the text, Tables 2-5, as named data;
+//! - [`settings`]: the example plants (Eqs. 20-22), Pai et al. 2010's settings mapped onto
+//!   (Cr, Cy), the presets;
+//! - [`studies`]: the simulation studies of the reproduction report, as typed results.
 
 use super::{DesignCheck, MethodInfo, ParamInfo, Params, Tuning};
 use crate::error::{Error, Result};
