@@ -9,11 +9,12 @@ use super::{
     EX1, EX2_REDUCED, ID, LAMBDA_PAPER,
 };
 use crate::analysis::freq::{analyze, Analysis};
+use crate::analysis::simulate;
 use crate::error::Result;
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::rules::{self, Params, Tuning};
-use crate::sim::{simulate, Scenario};
+use crate::sim::Scenario;
 
 /// The set-point weight of the paper's simulations.
 const EPSILON: f64 = 0.2;
