@@ -195,3 +195,61 @@ pub fn golden_min(
     }
     Ok(if fc <= fd { (c, fc, n) } else { (d, fd, n) })
 }
+
+// ------------------------------------------------------------------------------------------
+// Praveen Kumar & Narayana: bisection on a predicate, golden section returning its bracket.
+
+/// Bisection on a predicate: `good` satisfies `pred`, `bad` does not (either may be the larger).
+/// Halves the bracket at most `maxit` times, stopping once
+/// `|bad − good| ≤ rel·max(|bad|, |good|)`; returns the last point known to satisfy `pred`.
+pub fn bisect_predicate(
+    pred: impl Fn(f64) -> bool,
+    mut good: f64,
+    mut bad: f64,
+    rel: f64,
+    maxit: usize,
+) -> f64 {
+    for _ in 0..maxit {
+        let mid = 0.5 * (good + bad);
+        if pred(mid) {
+            good = mid;
+        } else {
+            bad = mid;
+        }
+        if (bad - good).abs() <= rel * bad.abs().max(good.abs()) {
+            break;
+        }
+    }
+    good
+}
+
+/// Golden-section search for a minimum of `f` on `[a, b]` with a fixed number of `steps`
+/// (each one evaluation after the first two); returns the final bracket, whose middle is the
+/// estimate (for a caller that wants a fixed cost rather than a tolerance, cf. [`golden_min`]).
+pub fn golden_bracket(
+    mut f: impl FnMut(f64) -> f64,
+    mut a: f64,
+    mut b: f64,
+    steps: usize,
+) -> (f64, f64) {
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    let mut c = b - r * (b - a);
+    let mut d = a + r * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..steps {
+        if fc <= fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - r * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + r * (b - a);
+            fd = f(d);
+        }
+    }
+    (a, b)
+}

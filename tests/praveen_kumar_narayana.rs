@@ -19,24 +19,27 @@ fn plant_of(p: &IpdtIr) -> pidlab::model::plant::Plant {
     .plant()
 }
 
-fn num(v: &serde_json::Map<String, serde_json::Value>, k: &str) -> f64 {
-    v.get(k).and_then(|x| x.as_f64()).unwrap_or(f64::NAN)
+fn details(t: &rules::Tuning) -> &pk::Details {
+    pk::details(t).expect("a tuning of praveen_kumar")
 }
 
-/// Table 1, "Proposed" rows: (plant, λ, k_p, k_i, k_d, α, β). λ from the text of each example
-/// (Example 1: λ = 1.9; Example 2: λ = 0.8 on the reduced model of Eq. 22).
-const TABLE1: [(IpdtIr, f64, [f64; 5]); 2] = [
-    (pk::EX1, 1.9, [3.9468, 1.5338, 2.5361, 0.05, 0.0334]),
-    (
-        pk::EX2_REDUCED,
-        0.8,
-        [1.2805, 0.2180, 1.1928, 0.4050, 0.1362],
-    ),
-];
+/// Table 1, "Proposed" rows ([`pk::tables::TABLE1_PROPOSED`]) with their plants: (plant, λ,
+/// k_p, k_i, k_d, α, β). λ from the text of each example (Example 1: λ = 1.9; Example 2:
+/// λ = 0.8 on the reduced model of Eq. 22).
+fn table1() -> [(IpdtIr, f64, [f64; 5]); 2] {
+    let plants = [pk::EX1, pk::EX2_REDUCED];
+    pk::tables::TABLE1_PROPOSED.map(|r| {
+        (
+            plants[r.example - 1],
+            r.lambda,
+            [r.kp, r.ki, r.kd, r.alpha, r.beta],
+        )
+    })
+}
 
 #[wasm_bindgen_test(unsupported = test)]
 fn table1_parameters_to_printed_digits() {
-    for (p, lambda, printed) in TABLE1 {
+    for (p, lambda, printed) in table1() {
         let t = rules::tune(
             pk::ID,
             &plant_of(&p),
@@ -44,26 +47,11 @@ fn table1_parameters_to_printed_digits() {
         )
         .unwrap();
         let ours = [
-            num(
-                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-                "kp",
-            ),
-            num(
-                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-                "ki",
-            ),
-            num(
-                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-                "kd",
-            ),
-            num(
-                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-                "alpha",
-            ),
-            num(
-                pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-                "beta",
-            ),
+            t.named("kp").unwrap(),
+            t.named("ki").unwrap(),
+            t.named("kd").unwrap(),
+            t.named("alpha").unwrap(),
+            t.named("beta").unwrap(),
         ];
         // Every entry of Table 1 is printed with 4 decimals (α = 0.05 exactly): half a unit
         // of the last printed digit.
@@ -83,7 +71,7 @@ fn table1_parameters_to_printed_digits() {
 fn eqs_13_14_closed_forms_agree_with_the_solve() {
     // Eqs. (13)-(14) are printed intact; the linear solve must agree with them everywhere
     // in the admissible range (independent reference for k_p, k_i).
-    for (p, _, _) in TABLE1 {
+    for (p, _, _) in table1() {
         let (lo, hi) = pk::lambda_range(&p, true).unwrap();
         let hi = hi.unwrap_or(lo * 100.0);
         for i in 1..20 {
@@ -128,7 +116,7 @@ fn char_residual(p: &IpdtIr, c: &pidlab::model::controller::Controller, lambda: 
 
 #[wasm_bindgen_test(unsupported = test)]
 fn characteristic_equation_has_the_designed_roots() {
-    for (p, lambda, _) in TABLE1 {
+    for (p, lambda, _) in table1() {
         let t = rules::tune(
             pk::ID,
             &plant_of(&p),
@@ -182,18 +170,12 @@ fn random_plants_give_a_stable_filter_or_a_named_error() {
         ) {
             Ok(t) => {
                 ok += 1;
-                let beta = num(
-                    pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-                    "beta",
-                );
+                let beta = t.named("beta").unwrap();
                 assert!(
                     beta > 0.0 && beta.is_finite(),
                     "{p:?} λ = {lambda}: β = {beta}"
                 );
-                let linf = num(
-                    pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
-                    "l_inf",
-                );
+                let linf = details(&t).l_inf;
                 assert!(linf < 1.0, "{p:?} λ = {lambda}: |L(j∞)| = {linf}");
                 let r = char_residual(&p, &t.controller, lambda);
                 assert!(r <= 1e-9, "{p:?} λ = {lambda}: residual {r}");
@@ -359,10 +341,7 @@ fn design_ms_and_lambda_for_ms_2() {
         &Params::default().with("lambda", 0.8),
     )
     .unwrap();
-    let ms = num(
-        pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
-        "ms",
-    );
+    let ms = details(&t).ms().unwrap();
     assert!(ms >= 3.9051 - 0.00005 && ms - 3.9051 <= 5e-4, "Ms {ms}");
     // Example 1 (λ = 1.9): the supremum is the high-frequency limit 1/(1 − |L(j∞)|), with
     // |L(j∞)| = |k z k_d α/(τ β)| ≈ 0.8194; printed 5.53 (ERRATA: 5.52 near 8,700 rad/s).
@@ -372,16 +351,7 @@ fn design_ms_and_lambda_for_ms_2() {
         &Params::default().with("lambda", 1.9),
     )
     .unwrap();
-    let (ms, linf) = (
-        num(
-            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
-            "ms",
-        ),
-        num(
-            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
-            "l_inf",
-        ),
-    );
+    let (ms, linf) = (details(&t).ms().unwrap(), details(&t).l_inf);
     assert!(
         (ms - 1.0 / (1.0 - linf)).abs() <= 1e-6 * ms,
         "Ms {ms}, |L∞| {linf}"
@@ -402,10 +372,7 @@ fn design_ms_and_lambda_for_ms_2() {
             &Params::default().with("target_ms", 2.0),
         )
         .unwrap();
-        let l = num(
-            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
-            "lambda",
-        );
+        let l = details(&t).lambda;
         assert!((l - printed).abs() <= tol, "λ(Ms = 2) {l} vs {printed}");
         // and the returned design has Ms = 2 on the exact-delay loop
         let a = analyze(&p.plant(), &t.controller).unwrap();
@@ -423,38 +390,13 @@ fn derivative_on_error_is_filtered_and_simulates() {
     let t = rules::tune(pk::ID, &pk::EX1.plant(), &params).unwrap();
     // Both paths proper (no impulse on a set-point step), filter T_f = k_d/(k_p N).
     assert!(t.controller.cr.relative_degree() >= 0 && t.controller.cy.relative_degree() >= 0);
-    let (kp, kd) = (
-        num(
-            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-            "kp",
-        ),
-        num(
-            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-            "kd",
-        ),
-    );
-    assert!(
-        (num(
-            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
-            "tf"
-        ) - kd / kp / 10.0)
-            .abs()
-            <= 1e-15
-    );
+    let (kp, kd) = (t.named("kp").unwrap(), t.named("kd").unwrap());
+    assert!((details(&t).tf.unwrap() - kd / kp / 10.0).abs() <= 1e-15);
     // Cr at s = 1 equals (ε k_p + k_i + k_d/(T_f + 1))·(α + 1)/(β + 1)
     let (ki, a, b) = (
-        num(
-            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-            "ki",
-        ),
-        num(
-            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-            "alpha",
-        ),
-        num(
-            pidlab::api::tuning_json(&t)["named"].as_object().unwrap(),
-            "beta",
-        ),
+        t.named("ki").unwrap(),
+        t.named("alpha").unwrap(),
+        t.named("beta").unwrap(),
     );
     let tf = kd / kp / 10.0;
     let want = (0.2 * kp + ki + kd / (tf + 1.0)) * (a + 1.0) / (b + 1.0);
@@ -462,38 +404,52 @@ fn derivative_on_error_is_filtered_and_simulates() {
     let sc = Scenario::steps(30.0, 0.01, 0.0, 0.2, 15.0, 0.2);
     let r = simulate(&pk::EX1.plant(), &t.controller, &sc).unwrap();
     assert!(!r.diverged);
-    assert!(
-        num(
-            pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
-            "l_inf"
-        ) == 0.0
-    );
+    assert!(details(&t).l_inf == 0.0);
 }
 
 #[wasm_bindgen_test(unsupported = test)]
 fn presets_load_and_tune_through_the_api() {
-    let ps = pk::legacy_presets();
+    let ps = pk::presets();
     assert!(ps.len() >= 8);
-    for p in &ps {
+    for any in &ps {
+        let rules::AnyPreset::Typed(p) = any else {
+            panic!("a preset of this paper is not typed");
+        };
         assert!(p.id.starts_with("praveen_kumar_narayana/"));
-        assert!(p.tune.is_null() != p.controller.is_null(), "{}", p.id);
-        pidlab::api::parse_plant(&p.plant, "plant").unwrap();
-        pidlab::api::parse_scenario(&p.scenario, "scenario").unwrap();
-        if p.controller.is_null() {
-            // λ given directly only (the target_ms presets are covered above)
-            if p.tune["params"].get("lambda").is_some() {
-                let mut input = p.tune.clone();
-                input["plant"] = p.plant.clone();
-                let out = pidlab::api::tune(&input).unwrap();
-                assert!(
-                    out["controller"]["beta"].as_f64().unwrap() > 0.0,
+        // The JSON view the page loads: exactly one of tune and controller, and every part
+        // parses back.
+        let j = pidlab::api::preset_json(any);
+        assert!(j["tune"].is_null() != j["controller"].is_null(), "{}", p.id);
+        pidlab::api::parse_plant(&j["plant"], "plant").unwrap();
+        pidlab::api::parse_scenario(&j["scenario"], "scenario").unwrap();
+        match &p.design {
+            rules::Design::Rule { method, params } => {
+                // λ given directly only (the target_ms presets are covered above)
+                if params.0.contains_key("lambda") {
+                    let mut input = j["tune"].clone();
+                    input["plant"] = j["plant"].clone();
+                    let out = pidlab::api::tune(&input).unwrap();
+                    assert!(
+                        out["controller"]["beta"].as_f64().unwrap() > 0.0,
+                        "{}",
+                        p.id
+                    );
+                    assert!(out["details"]["ms"].as_f64().unwrap() > 1.0, "{}", p.id);
+                    // and the typed call agrees
+                    let t = rules::tune(method, &p.plant, params).unwrap();
+                    assert!(t.named("beta").unwrap() > 0.0, "{}", p.id);
+                    assert!(details(&t).ms().unwrap() > 1.0, "{}", p.id);
+                }
+            }
+            rules::Design::Controller(c) => {
+                let back = pidlab::api::parse_controller(&j["controller"], "controller").unwrap();
+                assert_eq!(
+                    back.model_loop.is_some(),
+                    c.model_loop.is_some(),
                     "{}",
                     p.id
                 );
-                assert!(out["details"]["ms"].as_f64().unwrap() > 1.0, "{}", p.id);
             }
-        } else {
-            pidlab::api::parse_controller(&p.controller, "controller").unwrap();
         }
     }
     // Table 1 through the JSON API: named parameters beside cr and cy.

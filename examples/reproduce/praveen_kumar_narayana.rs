@@ -1,63 +1,10 @@
 //! Reproduction section: Praveen Kumar & Narayana, PID × lead-lag for IFOPDT processes with
-//! inverse response (`praveen_kumar`).
+//! inverse response (`praveen_kumar`). The computations live in
+//! `pidlab::rules::praveen_kumar_narayana::studies`; this file formats them.
 
-use pidlab::analysis::freq::analyze;
-use pidlab::analysis::simulate;
-use pidlab::model::controller::Controller;
-use pidlab::model::plant::Plant;
-use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
-use pidlab::rules::{self, Params};
-use pidlab::sim::Scenario;
+use pidlab::rules::praveen_kumar_narayana::studies::{self, RunMetrics};
+use pidlab::rules::praveen_kumar_narayana::{self as pk, tables};
 use std::fmt::Write;
-
-fn num(m: &serde_json::Map<String, serde_json::Value>, k: &str) -> f64 {
-    m.get(k).and_then(|v| v.as_f64()).unwrap_or(f64::NAN)
-}
-
-/// IAE, ISE, ITAE, M_p, t_s, TV (dt = 0.01), TV (every 10th sample, 0.1).
-type Row = [f64; 7];
-
-/// Separate servo (r: 0.2 step at 0) and regulatory (d: 0.2 step at 0) runs, as the paper's
-/// figures show them. M_p: the peak of y (servo; the paper prints 0.2001 for a response that
-/// barely overshoots 0.2) or of the deviation (regulatory).
-fn runs(plant: &Plant, c: &Controller, t_end: f64) -> Result<(Row, Row), String> {
-    let mut out = [[f64::NAN; 7]; 2];
-    for (i, (sp, d)) in [(0.2, 0.0), (0.0, 0.2)].into_iter().enumerate() {
-        let sc = Scenario::steps(t_end, 0.01, 0.0, sp, 0.0, d);
-        let r = simulate(plant, c, &sc).map_err(|e| e.to_string())?;
-        if r.diverged {
-            return Err(format!("diverged at {:?}", r.diverged_at));
-        }
-        let m = if i == 0 {
-            r.metrics.servo
-        } else {
-            r.metrics.regulatory
-        }
-        .ok_or("no metrics")?;
-        let mp = if i == 0 {
-            0.2 * (1.0 + m.overshoot.unwrap_or(0.0))
-        } else {
-            m.peak_error
-        };
-        let coarse: f64 =
-            r.u.iter()
-                .step_by(10)
-                .collect::<Vec<_>>()
-                .windows(2)
-                .map(|w| (w[1] - w[0]).abs())
-                .sum();
-        out[i] = [
-            m.iae,
-            m.ise,
-            m.itae,
-            mp,
-            m.settling_time.unwrap_or(f64::NAN),
-            m.tv,
-            coarse,
-        ];
-    }
-    Ok((out[0], out[1]))
-}
 
 fn g(x: f64) -> String {
     if !x.is_finite() {
@@ -71,85 +18,10 @@ fn g(x: f64) -> String {
     }
 }
 
-/// Frequency of the first −180° crossing of the unwrapped phase of a plant (with its delay),
-/// and |P| there (the relay-test / ultimate point), by a fine sweep and bisection.
-fn ultimate_point(p: &Plant) -> (f64, f64) {
-    let phase = |w: f64| {
-        // unwrapped: rational part's phase continued from ω → 0 plus −ωθ
-        let n = 4000;
-        let mut prev = p.tf.eval_jw(1e-6);
-        let mut ph = prev.arg();
-        for i in 1..=n {
-            let x = 1e-6 + (w - 1e-6) * i as f64 / n as f64;
-            let cur = p.tf.eval_jw(x);
-            ph += (cur / prev).arg();
-            prev = cur;
-        }
-        ph - w * p.delay
-    };
-    let (mut lo, mut hi) = (1e-3, 1.0);
-    while phase(hi) > -std::f64::consts::PI {
-        hi *= 2.0;
-    }
-    for _ in 0..60 {
-        let m = 0.5 * (lo + hi);
-        if phase(m) > -std::f64::consts::PI {
-            lo = m;
-        } else {
-            hi = m;
-        }
-    }
-    (lo, p.eval_jw(lo).norm())
+/// IAE, ISE, ITAE, M_p, t_s, TV (dt = 0.01), TV (every 10th sample, 0.1).
+fn row(m: &RunMetrics) -> [f64; 7] {
+    [m.iae, m.ise, m.itae, m.mp, m.ts, m.tv, m.tv_coarse]
 }
-
-/// Printed Tables 2-5: per (example, condition): [Pai servo, Pai reg, Proposed servo, Proposed reg],
-/// each IAE, ISE, ITAE, M_p, t_s, TV.
-const PRINTED: [(&str, usize, bool, [[f64; 6]; 4]); 4] = [
-    (
-        "Example 1, nominal (Tables 2-3)",
-        0,
-        false,
-        [
-            [0.5948, 0.07047, 1.93, 0.3276, 13.8783, 8.95],
-            [0.1683, 0.006101, 0.6784, 0.0730, 14.8463, 2.6959],
-            [0.4163, 0.06497, 0.6607, 0.2001, 4.3765, 0.8229],
-            [0.1445, 0.005695, 0.5008, 0.0603, 6.0863, 0.7017],
-        ],
-    ),
-    (
-        "Example 2, nominal (Tables 2-3)",
-        1,
-        false,
-        [
-            [1.626, 0.1829, 14.42, 0.3662, 39.0119, 2.3503],
-            [1.236, 0.1385, 12.6, 0.2204, 35.5875, 1.6357],
-            [0.9593, 0.1423, 2.922, 0.2021, 9.9881, 0.4589],
-            [0.8433, 0.09507, 5.132, 0.1931, 15.5198, 0.7375],
-        ],
-    ),
-    (
-        "Example 1, +40 % dead time (Tables 4-5)",
-        0,
-        true,
-        [
-            [1.617, 0.1317, 21.78, 0.3556, 51.75, 25.4306],
-            [0.526, 0.01372, 7.726, 0.0808, 51.5634, 8.8742],
-            [0.4136, 0.06588, 0.5956, 0.2001, 4.6187, 0.9759],
-            [0.1412, 0.006135, 0.4022, 0.0669, 6.1231, 0.8220],
-        ],
-    ),
-    (
-        "Example 2, +40 % dead time (Tables 4-5)",
-        1,
-        true,
-        [
-            [9.311, 0.8367, 592.2, 0.4269, 257.5645, 12.4225],
-            [7.08, 0.5262, 458.3, 0.2508, 234.0339, 9.3979],
-            [0.9817, 0.1487, 3.282, 0.2066, 13.2435, 0.5918],
-            [1.002, 0.1377, 7.065, 0.2247, 21.7980, 1.0358],
-        ],
-    ),
-];
 
 pub fn report() -> String {
     let mut s = String::new();
@@ -166,15 +38,19 @@ pub fn report() -> String {
          measurement, ε = 0.2 on the proportional term, the lead-lag after the PID on both paths. \
          All simulations use the exact dead time.\n"
     );
+    table1(&mut s);
+    ms_section(&mut s);
+    reduced_model(&mut s);
+    tables_2_to_5(&mut s);
+    fig2(&mut s);
+    s
+}
 
-    // ---- Table 1
+/// Table 1: ours, printed, Eqs. (13)-(14) and the printed Eq. (17) for β.
+fn table1(s: &mut String) {
     let _ = writeln!(s, "### Table 1: controller parameters\n");
     let _ = writeln!(s, "| example | λ | | k_p | k_i | k_d | α | β |");
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
-    let printed = [
-        [3.9468, 1.5338, 2.5361, 0.05, 0.0334],
-        [1.2805, 0.2180, 1.1928, 0.4050, 0.1362],
-    ];
     for (i, p) in [pk::EX1, pk::EX2_REDUCED].iter().enumerate() {
         let l = pk::LAMBDA_PAPER[i];
         match pk::design(p, l) {
@@ -189,18 +65,18 @@ pub fn report() -> String {
                     d.alpha,
                     d.beta
                 );
-                let q = printed[i];
+                let q = tables::TABLE1_PROPOSED[i];
                 let _ = writeln!(
                     s,
                     "| | | printed | {} | {} | {} | {} | {} |",
-                    q[0], q[1], q[2], q[3], q[4]
+                    q.kp, q.ki, q.kd, q.alpha, q.beta
                 );
                 let _ = writeln!(
                     s,
                     "| | | Eqs. (13), (14) | {:.6} | {:.6} | truncated | | printed Eq. (17): {:.4} |",
                     pk::eq13_kp(p, l),
                     pk::eq14_ki(p, l),
-                    printed_eq17_beta(p, l)
+                    pk::eq17_beta_printed(p, l)
                 );
             }
             Err(e) => {
@@ -213,72 +89,44 @@ pub fn report() -> String {
         "\nEvery printed digit is reproduced. Pai et al. 2010 settings (Table 1): Example 1 K_c = 4.066, \
          τ_I = 2.683, τ_D = 0.650; Example 2 K_c = 1.267, τ_I = 5.782, τ_D = 1.12 (presets).\n"
     );
+}
 
-    // ---- λ and Ms
+/// λ for Ms = 2 and the Ms of the designs.
+fn ms_section(s: &mut String) {
     let _ = writeln!(s, "### λ for Ms = 2 (Fig. 2) and the Ms of the designs\n");
     let _ = writeln!(
         s,
         "| example | λ(Ms = 2) ours | printed | λ used | Ms ours | printed | ω of Ms | abs L(j∞) | admissible λ | Ms minimum (at λ) |"
     );
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
-    let printed_l2 = [1.1474, 0.6914];
-    let printed_ms = [5.53, 3.9051];
-    for (i, p) in [pk::EX1, pk::EX2_REDUCED].iter().enumerate() {
-        let t2 = rules::tune(
-            pk::ID,
-            &p.plant(),
-            &Params::default().with("target_ms", 2.0),
-        );
-        let t = rules::tune(
-            pk::ID,
-            &p.plant(),
-            &Params::default().with("lambda", pk::LAMBDA_PAPER[i]),
-        );
-        let (l2, msmin, lmsmin) = match &t2 {
-            Ok(t2) => (
-                num(
-                    pidlab::api::tuning_json(&t2)["details"]
-                        .as_object()
-                        .unwrap(),
-                    "lambda",
-                ),
-                num(
-                    pidlab::api::tuning_json(&t2)["details"]
-                        .as_object()
-                        .unwrap(),
-                    "ms_min",
-                ),
-                num(
-                    pidlab::api::tuning_json(&t2)["details"]
-                        .as_object()
-                        .unwrap(),
-                    "lambda_ms_min",
-                ),
-            ),
-            Err(_) => (f64::NAN, f64::NAN, f64::NAN),
-        };
-        let range = pk::lambda_range(p, true)
+    let mut ex1_ms = f64::NAN;
+    for i in 0..2 {
+        let st = studies::ms_study(i + 1);
+        let range = st
+            .range
             .map(|(a, b)| format!("({a:.4}, {})", b.map_or("∞".into(), |b| format!("{b:.4}"))))
             .unwrap_or_else(|e| e.to_string());
-        match t {
+        match st.design {
             Ok(t) => {
-                let w = pidlab::api::tuning_json(&t)["details"]
-                    .get("w_ms")
-                    .and_then(|v| v.as_f64());
+                let d = pk::details(&t).expect("a tuning of praveen_kumar");
+                if i == 0 {
+                    ex1_ms = d.ms().unwrap_or(f64::NAN);
+                }
+                let w = d.w_ms();
                 let _ =
                     writeln!(
                     s,
                     "| {} | {:.5} | {} | {} | {:.4} | {} | {} | {:.4} | {range} | {:.4} ({:.4}) |",
                     i + 1,
-                    l2,
-                    printed_l2[i],
+                    st.lambda_ms2,
+                    tables::MS_QUOTES[i].lambda_ms2,
                     pk::LAMBDA_PAPER[i],
-                    num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "ms"),
-                    printed_ms[i],
+                    d.ms().unwrap_or(f64::NAN),
+                    tables::MS_QUOTES[i].ms,
                     w.map_or("ω → ∞ (limit 1/(1 − abs L∞))".to_string(), |w| format!("{w:.4}")),
-                    num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "l_inf"),
-                    msmin,
-                    lmsmin
+                    d.l_inf,
+                    st.ms_min,
+                    st.lambda_ms_min
                 );
             }
             Err(e) => {
@@ -294,16 +142,14 @@ pub fn report() -> String {
          ERRATA quotes 5.52 near 8,700 rad/s, the supremum is {:.4}). Ms(λ) is U-shaped on the \
          admissible interval (the gains blow up at λ_b, abs L(j∞) → 1 at its upper end); the λ for a \
          target Ms is taken on the rising, fast branch, which is the branch the paper reads.\n",
-        rules::tune(pk::ID, &pk::EX1.plant(), &Params::default().with("lambda", 1.9))
-            .map(|t| num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "ms"))
-            .unwrap_or(f64::NAN)
+        ex1_ms
     );
+}
 
-    // ---- Example 2's reduced model
-    let full = pk::ex2_process();
-    let red = pk::EX2_REDUCED.plant();
-    let (wu_f, m_f) = ultimate_point(&full);
-    let (wu_r, m_r) = ultimate_point(&red);
+/// Example 2's reduced model against the process.
+fn reduced_model(s: &mut String) {
+    let (wu_f, m_f) = studies::ultimate_point(&pk::ex2_process());
+    let (wu_r, m_r) = studies::ultimate_point(&pk::EX2_REDUCED.plant());
     let _ = writeln!(s, "### Example 2's reduced model (Eq. 22)\n");
     let _ = writeln!(
         s,
@@ -316,8 +162,10 @@ pub fn report() -> String {
          the design and the printed Ms = 3.9051 are computed on it and reproduce; the simulations \
          below run on the true process, Eq. (21).\n"
     );
+}
 
-    // ---- Tables 2-5
+/// Tables 2-5, Example 2 on the reduced model, what reproduces, Pai et al. on Example 2.
+fn tables_2_to_5(s: &mut String) {
     let _ = writeln!(
         s,
         "### Tables 2-5: 0.2 steps in set point and load, ours / printed\n"
@@ -333,38 +181,31 @@ pub fn report() -> String {
          the series PID K_c(1 + 1/(τ_I s))(1 + τ_D s/(0.1τ_D s + 1)) on the error (ε = 1), the form \
          that reproduces the printed regulatory rows of Example 1.\n"
     );
-    let designs = [pk::design(&pk::EX1, 1.9), pk::design(&pk::EX2_REDUCED, 0.8)];
-    let plants = [pk::EX1.plant(), full.clone()];
-    for (title, ex, perturbed, pr) in PRINTED {
-        let _ = writeln!(s, "#### {title}\n");
+    for st in studies::tables_2_to_5() {
+        let table = st.printed;
+        let pr = [
+            table.pai_servo,
+            table.pai_regulatory,
+            table.proposed_servo,
+            table.proposed_regulatory,
+        ]
+        .map(|r| r.values());
+        let _ = writeln!(s, "#### {}\n", table.title);
         let _ = writeln!(
             s,
             "| method | response | IAE | ISE | ITAE | M_p | t_s | TV | TV(0.1) |"
         );
         let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|");
-        let mut plant = plants[ex].clone();
-        if perturbed {
-            plant.delay *= 1.4;
-        }
-        let t_end = if ex == 0 { 100.0 } else { 600.0 };
-        let (kc, ti, td) = pk::PAI2010[ex];
-        let pai = pk::pai2010_controller(kc, ti, td).map_err(|e| e.to_string());
-        let prop = designs[ex]
-            .as_ref()
-            .map_err(|e| e.to_string())
-            .and_then(|d| {
-                pk::controller(d, 0.2, pk::Derivative::Measurement).map_err(|e| e.to_string())
-            });
-        for (mi, (mname, c)) in [("Pai et al. 2010", pai), ("Proposed", prop)]
+        for (mi, (mname, runs)) in [("Pai et al. 2010", st.pai), ("Proposed", st.proposed)]
             .into_iter()
             .enumerate()
         {
-            match c.and_then(|c| runs(&plant, &c, t_end)) {
+            match runs {
                 Ok((sv, rg)) => {
-                    for (ri, (rname, row)) in
+                    for (ri, (rname, m)) in
                         [("servo", sv), ("regulatory", rg)].into_iter().enumerate()
                     {
-                        let p = pr[2 * mi + ri];
+                        let (p, row) = (pr[2 * mi + ri], row(&m));
                         let _ = writeln!(
                             s,
                             "| {mname} | {rname} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {} |",
@@ -386,22 +227,19 @@ pub fn report() -> String {
     );
     let _ = writeln!(s, "| response | IAE | ISE | ITAE | M_p | t_s | TV |");
     let _ = writeln!(s, "|---|---|---|---|---|---|---|");
-    if let Ok(d) = &designs[1] {
-        if let Ok(c) = pk::controller(d, 0.2, pk::Derivative::Measurement) {
-            if let Ok((sv, rg)) = runs(&red, &c, 600.0) {
-                for (n, r) in [("servo", sv), ("regulatory", rg)] {
-                    let _ = writeln!(
-                        s,
-                        "| {n} | {} | {} | {} | {} | {} | {} |",
-                        g(r[0]),
-                        g(r[1]),
-                        g(r[2]),
-                        g(r[3]),
-                        g(r[4]),
-                        g(r[5])
-                    );
-                }
-            }
+    if let Ok((sv, rg)) = studies::example2_on_reduced_model() {
+        for (n, m) in [("servo", sv), ("regulatory", rg)] {
+            let r = row(&m);
+            let _ = writeln!(
+                s,
+                "| {n} | {} | {} | {} | {} | {} | {} |",
+                g(r[0]),
+                g(r[1]),
+                g(r[2]),
+                g(r[3]),
+                g(r[4]),
+                g(r[5])
+            );
         }
     }
     let _ = writeln!(s);
@@ -433,29 +271,23 @@ pub fn report() -> String {
          one settles after 257 s, i.e. it is barely stable too). The comparison rows are reported, \
          not held to a tolerance.\n"
     );
-
-    {
-        let mut full40 = full.clone();
-        full40.delay *= 1.4;
-        let (kc, ti, td) = pk::PAI2010[1];
-        if let Ok(c) = pk::pai2010_controller(kc, ti, td) {
-            for (name, pl) in [("nominal", &full), ("+40 % delay", &full40)] {
-                if let Ok(a) = analyze(pl, &c) {
-                    let _ = writeln!(
-                        s,
-                        "Pai et al. (our mapping), Example 2 {name}: {} (Ms {}, delay margin {}).\n",
-                        a.verdict,
-                        a.ms.map_or("—".into(), |m| format!("{m:.3}")),
-                        a.delay_margin
-                            .filter(|_| a.stable)
-                            .map_or("—".into(), |m| format!("{m:.4}"))
-                    );
-                }
-            }
+    for (name, a) in studies::pai2010_example2_analysis() {
+        if let Ok(a) = a {
+            let _ = writeln!(
+                s,
+                "Pai et al. (our mapping), Example 2 {name}: {} (Ms {}, delay margin {}).\n",
+                a.verdict,
+                a.ms.map_or("—".into(), |m| format!("{m:.3}")),
+                a.delay_margin
+                    .filter(|_| a.stable)
+                    .map_or("—".into(), |m| format!("{m:.4}"))
+            );
         }
     }
+}
 
-    // ---- Fig. 2
+/// Fig. 2 regenerated.
+fn fig2(s: &mut String) {
     let _ = writeln!(
         s,
         "### Fig. 2 regenerated: λτ for Ms = 2 on the normalized plant of Eq. (18)\n"
@@ -465,9 +297,7 @@ pub fn report() -> String {
         "Exact λ (solved on the exact-delay loop, derivative on the measurement, ε irrelevant to Ms) for \
          (1 − (z/τ)ŝ)e^{{−(θ/τ)ŝ}}/(ŝ(ŝ + 1)), ŝ = τs; the gain k does not affect λ. Example 1 is \
          θ/τ = 0.094, z/τ = 0.394 (λτ = {:.4}).\n",
-        1.06 * rules::tune(pk::ID, &pk::EX1.plant(), &Params::default().with("target_ms", 2.0))
-            .map(|t| num(pidlab::api::tuning_json(&t)["details"].as_object().unwrap(), "lambda"))
-            .unwrap_or(f64::NAN)
+        pk::EX1.tau * studies::lambda_for_ms2(&pk::EX1).unwrap_or(f64::NAN)
     );
     let zs = [0.1, 0.2, 0.4, 0.6, 0.8, 1.0];
     let ths = [0.05, 0.1, 0.2, 0.4, 0.6];
@@ -477,29 +307,10 @@ pub fn report() -> String {
     }
     let _ = writeln!(s);
     let _ = writeln!(s, "|---|{}", "---|".repeat(zs.len()));
-    for th in ths {
+    for (th, cells) in ths.iter().zip(studies::fig2_grid(&zs, &ths)) {
         let _ = write!(s, "| {th} |");
-        for z in zs {
-            let p = IpdtIr {
-                k: 1.0,
-                tau: 1.0,
-                z,
-                theta: th,
-            };
-            let cell = match rules::tune(
-                pk::ID,
-                &p.plant(),
-                &Params::default().with("target_ms", 2.0),
-            ) {
-                Ok(t) => format!(
-                    "{:.4}",
-                    num(
-                        pidlab::api::tuning_json(&t)["details"].as_object().unwrap(),
-                        "lambda"
-                    )
-                ),
-                Err(_) => "—".into(),
-            };
+        for cell in cells {
+            let cell = cell.map_or("—".into(), |l| format!("{l:.4}"));
             let _ = write!(s, " {cell} |");
         }
         let _ = writeln!(s);
@@ -508,27 +319,4 @@ pub fn report() -> String {
         s,
         "\n(— : Ms = 2 not reachable: the smallest Ms of the admissible λ interval exceeds 2.)\n"
     );
-    s
-}
-
-/// The printed Eq. (17) for β (incomplete in the text), evaluated as printed.
-fn printed_eq17_beta(p: &IpdtIr, l: f64) -> f64 {
-    let (t, th, z) = (p.tau, p.theta, p.z);
-    let (l2, l3, l4) = (l * l, l * l * l, l * l * l * l);
-    let nb = l4 * th.powi(3) * z * z
-        + t * l4 * th.powi(3) * z
-        + 2.0 * l4 * th * th * z.powi(3)
-        + 2.0 * t * l4 * th * th * z * z
-        + 4.0 * t * l4 * th * z.powi(3)
-        + 8.0 * l3 * th * th * z * z
-        + 8.0 * t * l3 * th * th * z
-        + 16.0 * l3 * th * z * z
-        + 16.0 * t * l3 * th * z
-        + 32.0 * t * l3 * z * z
-        + 24.0 * l2 * th * z
-        + 24.0 * t * l2 * th
-        + 48.0 * t * l2 * z
-        + 32.0 * t * l
-        - 8.0;
-    -nb / pk::eq17_b(p, l)
 }

@@ -116,6 +116,8 @@ pub enum Details {
     Legacy(Map<String, Value>),
     /// Shamsuzzoha & Lee 2008.
     ShamsuzzohaLee2008(Box<shamsuzzoha_lee2008::Details>),
+    /// Praveen Kumar & Narayana.
+    PraveenKumarNarayana(Box<praveen_kumar_narayana::Details>),
 }
 
 /// How a preset designs its controller.

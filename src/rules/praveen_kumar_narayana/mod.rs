@@ -70,14 +70,28 @@
 //! designed on the reduced model of Eq. (22) (taken as printed, see [`EX2_REDUCED`]) and
 //! simulated on Eq. (21) (the printed servo rows match that). Pai et al. 2010's settings are
 //! presets with our reconstruction of their structure ([`pai2010_controller`]).
+//!
+//! ## Files
+//! - `mod.rs`: the rule (Eqs. 10-17 and 19 beside the code), its parameter declarations
+//!   ([`param_decls`], authoritative: the registry validates calls against them) and its typed
+//!   [`Details`];
+//! - [`tables`]: the printed Table 1, the λ and Ms quoted in the text, Tables 2-5, as named data;
+//! - [`settings`]: the example plants (Eqs. 20-22), Pai et al. 2010's settings mapped onto
+//!   (Cr, Cy), the presets;
+//! - [`studies`]: the simulation studies of the reproduction report, as typed results.
 
-use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
+use super::{DesignCheck, MethodInfo, ParamInfo, Params, Tuning};
 use crate::error::{Error, Result};
 use crate::model::controller::{lead_lag, Controller, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use nalgebra::{Matrix4, Vector4};
-use serde_json::{json, Map, Value};
+
+pub mod settings;
+pub mod studies;
+pub mod tables;
+pub use settings::{ex2_process, pai2010_controller, presets, CITATION_PAI, EX1, EX2_REDUCED};
+pub use tables::LAMBDA_PAPER;
 
 /// Method id (API.md).
 pub const ID: &str = "praveen_kumar";
@@ -86,11 +100,6 @@ pub const ID: &str = "praveen_kumar";
 pub const CITATION: &str =
     "M. Praveen Kumar, K. V. L. Narayana, \"A new PID controller for IFOPDT \
 process with inverse response\" (PID × lead-lag by pole placement, set-point weighting)";
-
-/// Citation of the comparison settings quoted by the paper.
-pub const CITATION_PAI: &str = "N.-S. Pai, S.-C. Chang, C.-T. Huang (2010), \"Tuning PI/PID \
-controllers for integrating processes with deadtime and inverse response by simple calculations\", \
-J. Process Control 20(6) 726-733 (settings as quoted in Praveen Kumar & Narayana, Table 1)";
 
 /// Default set-point weight ε (the paper uses 0.2 in all examples).
 pub const EPSILON_DEFAULT: f64 = 0.2;
@@ -329,23 +338,33 @@ pub fn design(p: &IpdtIr, lambda: f64) -> Result<Design> {
 /// constant −8 are ≥ 0 and the λ¹ one is 32τ > 0, so the root is unique; found by bisection.
 pub fn lambda_b(p: &IpdtIr) -> f64 {
     let mut hi = 1.0 / (4.0 * p.tau); // b(1/(4τ)) ≥ 32τ/(4τ) − 8 = 0
-    let mut lo = 0.0;
     if eq17_b(p, hi) <= 0.0 {
         // Only possible through rounding (b(1/(4τ)) ≥ 0 exactly); widen.
         hi *= 2.0;
     }
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if eq17_b(p, mid) > 0.0 {
-            hi = mid;
-        } else {
-            lo = mid;
-        }
-        if hi - lo <= 1e-15 * hi {
-            break;
-        }
-    }
-    hi
+    crate::numerics::bisect_predicate(|x| eq17_b(p, x) > 0.0, hi, 0.0, 1e-15, 200)
+}
+
+/// The printed Eq. (17) for β (incomplete in the text), evaluated as printed.
+pub fn eq17_beta_printed(p: &IpdtIr, l: f64) -> f64 {
+    let (t, th, z) = (p.tau, p.theta, p.z);
+    let (l2, l3, l4) = (l * l, l * l * l, l * l * l * l);
+    let nb = l4 * th.powi(3) * z * z
+        + t * l4 * th.powi(3) * z
+        + 2.0 * l4 * th * th * z.powi(3)
+        + 2.0 * t * l4 * th * th * z * z
+        + 4.0 * t * l4 * th * z.powi(3)
+        + 8.0 * l3 * th * th * z * z
+        + 8.0 * t * l3 * th * th * z
+        + 16.0 * l3 * th * z * z
+        + 16.0 * t * l3 * th * z
+        + 32.0 * t * l3 * z * z
+        + 24.0 * l2 * th * z
+        + 24.0 * t * l2 * th
+        + 48.0 * t * l2 * z
+        + 32.0 * t * l
+        - 8.0;
+    -nb / eq17_b(p, l)
 }
 
 /// |L(j∞)| of the designed loop with the ideal derivative on the measurement:
@@ -373,19 +392,8 @@ pub fn lambda_range(p: &IpdtIr, neutral: bool) -> Result<(f64, Option<f64>)> {
     let lb = lambda_b(p);
     let steps = 600;
     let ratio = (1e6f64).powf(1.0 / steps as f64);
-    let bisect = |mut ok: f64, mut bad: f64| {
-        for _ in 0..100 {
-            let mid = 0.5 * (ok + bad);
-            if admissible(p, mid, neutral) {
-                ok = mid;
-            } else {
-                bad = mid;
-            }
-            if (bad - ok).abs() <= 1e-13 * bad.abs().max(ok.abs()) {
-                break;
-            }
-        }
-        ok
+    let bisect = |ok: f64, bad: f64| {
+        crate::numerics::bisect_predicate(|x| admissible(p, x, neutral), ok, bad, 1e-13, 100)
     };
     let mut prev = lb;
     let mut x = lb;
@@ -446,9 +454,47 @@ pub fn controller(d: &Design, epsilon: f64, deriv: Derivative) -> Result<Control
         .map_err(|e| e.within("params"))
 }
 
-/// Methods of this paper.
-pub fn methods() -> Vec<MethodInfo> {
-    vec![MethodInfo {
+/// The parameter declarations of the rule (authoritative: the registry validates calls against
+/// them and the rule reads its values through them).
+pub fn param_decls() -> Vec<ParamInfo> {
+    vec![
+        ParamInfo::number("lambda", "λ (closed-loop poles at −λ)", None, 1e-6, 1e6)
+            .unit("1/time unit")
+            .help(
+                "required unless target_ms is given; the admissible interval depends on the \
+                 plant and is reported in details.lambda_range",
+            ),
+        ParamInfo::number(
+            "epsilon",
+            "ε (set-point weight, Eq. 19)",
+            Some(EPSILON_DEFAULT),
+            0.0,
+            1.0,
+        ),
+        ParamInfo::number("target_ms", "target Ms (solves λ)", None, 1.1, 20.0).help(
+            "when given, λ is solved so that the exact-delay loop has this Ms (Fig. 2 uses 2)",
+        ),
+        ParamInfo::choice(
+            "derivative",
+            "derivative acts on",
+            "measurement",
+            &["measurement", "error"],
+        )
+        .help("'measurement' reproduces the paper's TV; 'error' uses a filtered derivative (N)"),
+        ParamInfo::number(
+            "n",
+            "N (derivative filter, derivative = error only)",
+            Some(N_DEFAULT),
+            1e-3,
+            1e6,
+        )
+        .help("T_f = k_d/(k_p N); ignored (with a warning) for derivative = measurement"),
+    ]
+}
+
+/// What `methods()` lists for the rule.
+pub fn method_info() -> MethodInfo {
+    MethodInfo {
         id: ID.into(),
         title: "Praveen Kumar & Narayana: PID × lead-lag by pole placement (s + λ)⁴, set-point weight ε"
             .into(),
@@ -457,42 +503,130 @@ pub fn methods() -> Vec<MethodInfo> {
         structure: "PID (derivative on the measurement) × lead-lag (θs/2 + 1)/(βs + 1), \
                     set-point weight ε on the proportional term"
             .into(),
-        params: vec![
-            ParamInfo::number("lambda", "λ (closed-loop poles at −λ)", None, 0.01, 20.0)
-                .required()
-                .help("required unless target_ms is given; admissible interval in details.lambda_range"),
-            ParamInfo::number("epsilon", "ε (set-point weight, Eq. 19)", Some(EPSILON_DEFAULT), 0.0, 1.0),
-            ParamInfo::number("target_ms", "target Ms (solves λ)", None, 1.1, 20.0)
-                .help("when given, λ is solved so that the exact-delay loop has this Ms (Fig. 2 uses 2)"),
-            ParamInfo::choice(
-                "derivative",
-                "derivative acts on",
-                "measurement",
-                &["measurement", "error"],
-            )
-            .help("'measurement' reproduces the paper's TV; 'error' uses a filtered derivative (N)"),
-            ParamInfo::number("n", "N (derivative filter, derivative = error only)", Some(N_DEFAULT), 1.0, 1000.0),
-        ],
-    }]
-}
-
-/// Tunes method `id` if it belongs to this paper.
-pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> {
-    if id != ID {
-        return None;
+        params: param_decls(),
     }
-    Some(tune_impl(plant, params))
 }
 
-fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
+/// The rule of this paper behind the [`super::Rule`] interface.
+struct PraveenKumar;
+
+impl super::Rule for PraveenKumar {
+    fn info(&self) -> MethodInfo {
+        method_info()
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        tune_validated(plant, params, &param_decls())
+    }
+}
+
+/// The rules of this paper.
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    vec![Box::new(PraveenKumar)]
+}
+
+/// The admissible λ interval as reported in [`Details`].
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct LambdaRange {
+    /// Lower end (λ_b or above).
+    pub min: f64,
+    /// Upper end (none: unbounded in the scanned range).
+    pub max: Option<f64>,
+    /// The conditions that bound it.
+    pub note: String,
+}
+
+/// The search of λ for a target Ms (present when `target_ms` is given).
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct MsSearch {
+    /// The smallest Ms of the admissible λ interval.
+    pub ms_min: f64,
+    /// The λ where it is reached.
+    pub lambda_ms_min: f64,
+    /// The requested Ms.
+    pub target_ms: f64,
+}
+
+/// The details of a tuning of this paper.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct Details {
+    /// λ of the design (given or solved).
+    pub lambda: f64,
+    /// The admissible λ interval.
+    pub lambda_range: LambdaRange,
+    /// Eq. (10) with the solved parameters, descending `[A₄, A₃, A₂, A₁, A₀]`.
+    pub char_poly_eq10: Vec<f64>,
+    /// Relative residual of Eq. (10) against A₄(s + λ)⁴.
+    pub char_residual: f64,
+    /// The designed roots in words.
+    pub design_roots: String,
+    /// The printed `b` of Eq. (17).
+    pub eq17_b: f64,
+    /// The printed `c` of Eq. (17).
+    pub eq17_c: f64,
+    /// Eq. (13), closed form of k_p (cross-check).
+    pub eq13_kp: f64,
+    /// Eq. (14), closed form of k_i (cross-check).
+    pub eq14_ki: f64,
+    /// |L(j∞)| of the neutral loop (0 with the filtered derivative).
+    pub l_inf: f64,
+    /// Which derivative structure, in words.
+    pub derivative: String,
+    /// Derivative filter N (derivative on the error only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub n: Option<f64>,
+    /// Derivative filter time constant T_f = k_d/(k_p N) (derivative on the error only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tf: Option<f64>,
+    /// The λ search for `target_ms`.
+    #[serde(flatten)]
+    pub ms_search: Option<MsSearch>,
+    /// The exact-delay frequency analysis of the design.
+    #[serde(flatten)]
+    pub check: DesignCheck,
+    /// Warnings.
+    pub warnings: Vec<String>,
+}
+
+impl Details {
+    /// Ms of the exact-delay loop (none when the analysis failed or found none).
+    pub fn ms(&self) -> Option<f64> {
+        match &self.check {
+            DesignCheck::Done { ms, .. } => *ms,
+            DesignCheck::Failed { .. } => None,
+        }
+    }
+
+    /// The frequency of Ms (none when Ms is the ω → ∞ limit).
+    pub fn w_ms(&self) -> Option<f64> {
+        match &self.check {
+            DesignCheck::Done { w_ms, .. } => *w_ms,
+            DesignCheck::Failed { .. } => None,
+        }
+    }
+}
+
+/// The details of a tuning of this paper, if `t` is one.
+pub fn details(t: &Tuning) -> Option<&Details> {
+    match &t.details {
+        super::Details::PraveenKumarNarayana(d) => Some(&**d),
+        #[allow(unreachable_patterns)]
+        _ => None,
+    }
+}
+
+/// Tunes `plant` with `params` (validated here against [`param_decls`]).
+pub fn tune(plant: &Plant, params: &Params) -> Result<Tuning> {
+    let decl = param_decls();
+    params.validate(ID, &decl)?;
+    tune_validated(plant, params, &decl)
+}
+
+fn tune_validated(plant: &Plant, params: &Params, decl: &[ParamInfo]) -> Result<Tuning> {
     let p = IpdtIr::from_plant(plant)?;
-    let epsilon = params.f64_in("epsilon", EPSILON_DEFAULT, 0.0, 1.0)?;
-    let deriv = match params
-        .choice("derivative", "measurement", &["measurement", "error"])?
-        .as_str()
-    {
+    let epsilon = params.number(decl, "epsilon")?;
+    let deriv = match params.text(decl, "derivative")?.as_str() {
         "error" => Derivative::Error {
-            n: params.f64_in("n", N_DEFAULT, 1e-3, 1e6)?,
+            n: params.number(decl, "n")?,
         },
         _ => Derivative::Measurement,
     };
@@ -500,22 +634,16 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
     let lambda_given = params.opt_f64("lambda")?;
     let neutral = deriv == Derivative::Measurement;
     let (lb, lmax) = lambda_range(&p, neutral)?;
-    let mut details = Map::new();
     let mut warnings: Vec<String> = vec![];
-    let lambda = match (target_ms, lambda_given) {
+    let (lambda, ms_search) = match (target_ms, lambda_given) {
         (Some(ms), _) => {
-            if ms <= 1.0 {
-                return Err(Error::new(
-                    "params.target_ms",
-                    format!("must be > 1 (got {ms})"),
-                ));
-            }
             if lambda_given.is_some() {
                 warnings.push("params.lambda ignored: λ solved from params.target_ms".into());
             }
-            lambda_for_ms(&p, ms, epsilon, deriv, &mut details)?
+            let (l, search) = lambda_for_ms(&p, ms, epsilon, deriv)?;
+            (l, Some(search))
         }
-        (None, Some(l)) => l,
+        (None, Some(l)) => (l, None),
         (None, None) => {
             return Err(Error::new(
                 "params.lambda",
@@ -523,17 +651,102 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
             ))
         }
     };
+    let (d, linf) = design_in_range(&p, lambda, neutral, (lb, lmax))?;
+    if neutral && params.0.contains_key("n") {
+        warnings.push(
+            "params.n ignored: the derivative filter applies to derivative = \"error\" only".into(),
+        );
+    }
+    let c = controller(&d, epsilon, deriv)?;
+    let named = [
+        ("kp", d.kp),
+        ("ki", d.ki),
+        ("kd", d.kd),
+        ("alpha", d.alpha),
+        ("beta", d.beta),
+        ("epsilon", epsilon),
+        ("lambda", d.lambda),
+    ]
+    .iter()
+    .map(|(k, v)| (k.to_string(), *v))
+    .collect();
+    if p.k * d.kp < 0.0 || p.k * d.kd < 0.0 {
+        warnings.push(format!(
+            "gains of mixed sign: k_p = {:.4}, k_d = {:.4} (k = {})",
+            d.kp, d.kd, p.k
+        ));
+    }
+    let (derivative, n, tf) = match deriv {
+        Derivative::Measurement => ("measurement (ideal, Cy improper by one)", None, None),
+        Derivative::Error { n } => {
+            warnings.push(
+                "derivative on the error uses a filter k_d s/(T_f s + 1) on both paths: the loop \
+                 differs from the design, whose characteristic roots hold for the ideal derivative"
+                    .into(),
+            );
+            ("error, filtered", Some(n), Some((d.kd / d.kp / n).abs()))
+        }
+    };
+    let check = DesignCheck::of(&p.plant(), &c);
+    frequency_warnings(&check, &mut warnings);
+    let details = Details {
+        lambda: d.lambda,
+        lambda_range: LambdaRange {
+            min: lb,
+            max: lmax,
+            note: if neutral {
+                "b > 0 (Eq. 17), β > 0, |L(j∞)| < 1 (ideal derivative on the measurement)"
+            } else {
+                "b > 0 (Eq. 17), β > 0"
+            }
+            .into(),
+        },
+        char_poly_eq10: d.char_poly.clone(),
+        char_residual: d.residual,
+        design_roots: format!(
+            "s = −{} (×4), Padé Eq. (9) inside the design only",
+            d.lambda
+        ),
+        eq17_b: d.b,
+        eq17_c: d.c,
+        eq13_kp: eq13_kp(&p, d.lambda),
+        eq14_ki: eq14_ki(&p, d.lambda),
+        l_inf: if neutral { linf } else { 0.0 },
+        derivative: derivative.into(),
+        n,
+        tf,
+        ms_search,
+        check,
+        warnings,
+    };
+    Ok(Tuning {
+        method: ID.into(),
+        controller: c,
+        named,
+        details: super::Details::PraveenKumarNarayana(Box::new(details)),
+    })
+}
+
+/// The design at λ, its errors completed with the admissible interval `range`, and
+/// |L(j∞)|; with the ideal derivative (`neutral`) a neutral, unstable loop (|L(j∞)| ≥ 1) is an
+/// error too.
+fn design_in_range(
+    p: &IpdtIr,
+    lambda: f64,
+    neutral: bool,
+    (lb, lmax): (f64, Option<f64>),
+) -> Result<(Design, f64)> {
     let range_text = match lmax {
         Some(h) => format!("({lb:.6}, {h:.6})"),
         None => format!("({lb:.6}, ∞)"),
     };
-    let d = design(&p, lambda).map_err(|e| {
+    let d = design(p, lambda).map_err(|e| {
         Error::new(
             e.path,
             format!("{}; admissible λ ∈ {range_text}", e.message),
         )
     })?;
-    let linf = l_inf(&p, &d);
+    let linf = l_inf(p, &d);
     if neutral && linf >= 1.0 {
         let which = if lambda < lb { "small" } else { "large" };
         return Err(Error::new(
@@ -544,126 +757,43 @@ fn tune_impl(plant: &Plant, params: &Params) -> Result<Tuning> {
             ),
         ));
     }
-    if neutral && params.opt_f64("n")?.is_some() {
-        warnings.push(
-            "params.n ignored: the derivative filter applies to derivative = \"error\" only".into(),
-        );
-    }
-    let c = controller(&d, epsilon, deriv)?;
-    let plant_exact = p.plant();
-    let mut named = Map::new();
-    for (k, v) in [
-        ("kp", d.kp),
-        ("ki", d.ki),
-        ("kd", d.kd),
-        ("alpha", d.alpha),
-        ("beta", d.beta),
-        ("epsilon", epsilon),
-        ("lambda", d.lambda),
-    ] {
-        named.insert(k.into(), json!(v));
-    }
-    if p.k * d.kp < 0.0 || p.k * d.kd < 0.0 {
-        warnings.push(format!(
-            "gains of mixed sign: k_p = {:.4}, k_d = {:.4} (k = {})",
-            d.kp, d.kd, p.k
-        ));
-    }
-    details.insert("lambda".into(), json!(d.lambda));
-    details.insert(
-        "lambda_range".into(),
-        json!({ "min": lb, "max": lmax, "note": if neutral {
-            "b > 0 (Eq. 17), β > 0, |L(j∞)| < 1 (ideal derivative on the measurement)"
-        } else {
-            "b > 0 (Eq. 17), β > 0"
-        } }),
-    );
-    details.insert("char_poly_eq10".into(), json!(d.char_poly));
-    details.insert("char_residual".into(), json!(d.residual));
-    details.insert(
-        "design_roots".into(),
-        json!(format!(
-            "s = −{} (×4), Padé Eq. (9) inside the design only",
-            d.lambda
-        )),
-    );
-    details.insert("eq17_b".into(), json!(d.b));
-    details.insert("eq17_c".into(), json!(d.c));
-    details.insert("eq13_kp".into(), json!(eq13_kp(&p, d.lambda)));
-    details.insert("eq14_ki".into(), json!(eq14_ki(&p, d.lambda)));
-    details.insert(
-        "l_inf".into(),
-        json!(match deriv {
-            Derivative::Measurement => linf,
-            Derivative::Error { .. } => 0.0,
-        }),
-    );
-    match deriv {
-        Derivative::Measurement => {
-            details.insert(
-                "derivative".into(),
-                json!("measurement (ideal, Cy improper by one)"),
-            );
-        }
-        Derivative::Error { n } => {
-            details.insert("derivative".into(), json!("error, filtered"));
-            details.insert("n".into(), json!(n));
-            details.insert("tf".into(), json!((d.kd / d.kp / n).abs()));
-            warnings.push(
-                "derivative on the error uses a filter k_d s/(T_f s + 1) on both paths: the loop \
-                 differs from the design, whose characteristic roots hold for the ideal derivative"
-                    .into(),
-            );
-        }
-    }
-    add_frequency_details(&plant_exact, &c, &mut details, &mut warnings);
-    details.insert("warnings".into(), json!(warnings));
-    Ok(Tuning {
-        method: ID.into(),
-        controller: c,
-        named,
-        details,
-    })
+    Ok((d, linf))
 }
 
-/// Frequency analysis of the exact-delay loop ([`crate::analysis::freq::analyze`]): Ms (the true
-/// supremum, including the high-frequency limit of the neutral loop), its frequency, |L(j∞)|,
-/// GM, PM, delay margin and Nyquist stability.
-fn add_frequency_details(
-    plant: &Plant,
-    c: &Controller,
-    details: &mut Map<String, Value>,
-    warnings: &mut Vec<String>,
-) {
-    match super::add_analysis(plant, c, details) {
-        Some(a) => {
-            if !a.stable {
+/// Warnings from the frequency analysis of the exact-delay loop: not stable, Ms above 2, or the
+/// analysis failed.
+fn frequency_warnings(check: &DesignCheck, warnings: &mut Vec<String>) {
+    match check {
+        DesignCheck::Done {
+            stable,
+            verdict,
+            ms,
+            w_ms,
+            l_inf_analysis,
+            ..
+        } => {
+            if !stable {
                 warnings.push(format!(
-                    "the loop with the exact dead time is not stable ({}): the Padé design of \
-                     Eq. (9) does not carry over at this λ",
-                    a.verdict
+                    "the loop with the exact dead time is not stable ({verdict}): the Padé design of \
+                     Eq. (9) does not carry over at this λ"
                 ));
             }
-            if let Some(ms) = a.ms {
+            if let Some(ms) = *ms {
                 if ms > 2.0 {
-                    let at = match a.w_ms {
+                    let at = match w_ms {
                         Some(w) => format!("at ω = {w:.4}"),
                         None => "as ω → ∞".into(),
                     };
                     warnings.push(format!(
-                        "Ms = {ms:.3} {at} (|L(j∞)| = {:.3}): far above the usual 1.4-2 range",
-                        a.l_inf
+                        "Ms = {ms:.3} {at} (|L(j∞)| = {l_inf_analysis:.3}): far above the usual \
+                         1.4-2 range"
                     ));
                 }
             }
         }
-        None => warnings.push(format!(
-            "frequency analysis failed: {}",
-            details
-                .get("analysis_error")
-                .and_then(|v| v.as_str())
-                .unwrap_or("")
-        )),
+        DesignCheck::Failed { analysis_error } => {
+            warnings.push(format!("frequency analysis failed: {analysis_error}"))
+        }
     }
 }
 
@@ -672,13 +802,7 @@ fn add_frequency_details(
 /// located first (golden-section search on log λ) and λ is solved on the branch above it, the
 /// fast-response branch the paper's Fig. 2 reads (Ms increases with λ, "higher values assure
 /// faster responses with degraded robust performance").
-fn lambda_for_ms(
-    p: &IpdtIr,
-    ms: f64,
-    epsilon: f64,
-    deriv: Derivative,
-    details: &mut Map<String, Value>,
-) -> Result<f64> {
+fn lambda_for_ms(p: &IpdtIr, ms: f64, epsilon: f64, deriv: Derivative) -> Result<(f64, MsSearch)> {
     let neutral = deriv == Derivative::Measurement;
     let (lo, hi) = lambda_range(p, neutral)?;
     let hi = hi.unwrap_or(lo * 1e4);
@@ -694,31 +818,16 @@ fn lambda_for_ms(
             .and_then(|a| if a.stable { a.ms } else { None })
             .unwrap_or(f64::INFINITY)
     };
-    // Golden-section search for the minimum of Ms on log λ (inner 99.99 % of the interval).
-    let (mut a, mut b) = ((lo * 1.0001).ln(), (hi * 0.9999).ln());
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let mut x1 = b - g * (b - a);
-    let mut x2 = a + g * (b - a);
-    let (mut f1, mut f2) = (ms_of(x1.exp()), ms_of(x2.exp()));
-    for _ in 0..40 {
-        if f1 <= f2 {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - g * (b - a);
-            f1 = ms_of(x1.exp());
-        } else {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + g * (b - a);
-            f2 = ms_of(x2.exp());
-        }
-    }
+    // Golden-section search for the minimum of Ms on log λ (inner 99.99 % of the interval),
+    // 40 steps; the minimum is taken at the middle of the final bracket.
+    let (a, b) = crate::numerics::golden_bracket(
+        |x| ms_of(x.exp()),
+        (lo * 1.0001).ln(),
+        (hi * 0.9999).ln(),
+        40,
+    );
     let l_min = (0.5 * (a + b)).exp();
     let ms_min = ms_of(l_min);
-    details.insert("ms_min".into(), json!(ms_min));
-    details.insert("lambda_ms_min".into(), json!(l_min));
     if ms <= ms_min {
         return Err(Error::new(
             "params.target_ms",
@@ -729,256 +838,12 @@ fn lambda_for_ms(
         ));
     }
     let l = crate::analysis::freq::solve_for_ms(ms, l_min, hi * 0.9999, loop_of)?;
-    details.insert("target_ms".into(), json!(ms));
-    Ok(l)
-}
-
-/// Example 1 (Eq. 20): the boiler steam drum `0.547(1 − 0.418s)e^{−0.1s}/(s(1.06s + 1))`.
-pub const EX1: IpdtIr = IpdtIr {
-    k: 0.547,
-    tau: 1.06,
-    z: 0.418,
-    theta: 0.1,
-};
-/// Example 2, the reduced model of Eq. (22) as printed: `0.5183(1 − 0.4699s)e^{−0.81s}/(s(1.1609s + 1))`.
-///
-/// The paper does not say how it was obtained from Eq. (21). It is not a low-frequency match
-/// (velocity gain 0.5183 against the process's 0.5), nor an ultimate-point match (see the
-/// reproduction report), nor a least-squares fit of the step or frequency response (such fits
-/// give roughly `0.50(1 − 0.46s)e^{−1.08s}/(s(0.66s + 1))`). We take it as printed: the design
-/// (Table 1) and the printed Ms = 3.9051 are computed on it, and reproduce exactly.
-pub const EX2_REDUCED: IpdtIr = IpdtIr {
-    k: 0.5183,
-    tau: 1.1609,
-    z: 0.4699,
-    theta: 0.81,
-};
-/// λ of the paper's designs (Example 1, Example 2).
-pub const LAMBDA_PAPER: [f64; 2] = [1.9, 0.8];
-/// Pai et al. 2010 settings quoted in Table 1 as `(K_c, τ_I, τ_D)`: Example 1, Example 2.
-pub const PAI2010: [(f64, f64, f64); 2] = [(4.066, 2.683, 0.650), (1.267, 5.782, 1.12)];
-
-/// Example 2's process, Eq. (21): `0.5(1 − 0.5s)e^{−0.7s}/(s(0.4s + 1)(0.1s + 1)(0.5s + 1))`.
-pub fn ex2_process() -> Plant {
-    let den = Poly::from_asc(&[0.0, 1.0])
-        .mul(&Poly::linear(0.4, 1.0))
-        .mul(&Poly::linear(0.1, 1.0))
-        .mul(&Poly::linear(0.5, 1.0));
-    Plant {
-        tf: crate::model::tf::Tf {
-            num: Poly::linear(-0.25, 0.5),
-            den,
+    Ok((
+        l,
+        MsSearch {
+            ms_min,
+            lambda_ms_min: l_min,
+            target_ms: ms,
         },
-        delay: 0.7,
-        family: None,
-    }
-}
-
-/// Pai et al. 2010's PID as we map it: the series (interacting) PID with a derivative filter
-/// `K_c(1 + 1/(τ_I s))(1 + τ_D s/(0.1τ_D s + 1))`, one degree of freedom (ε = 1, as the paper
-/// uses for it). The paper does not state Pai's structure; among the forms we simulated this
-/// one reproduces the printed regulatory rows of Example 1 (IAE 0.1696 vs 0.1683, ISE 0.006122
-/// vs 0.006101, M_p 0.0731 vs 0.0730, t_s 14.87 vs 14.85); the servo rows are not reproduced
-/// (see the reproduction report).
-pub fn pai2010_controller(kc: f64, ti: f64, td: f64) -> Result<Controller> {
-    Pid::parallel(kc, kc / ti, 0.0)
-        .series_filter(lead_lag(1.1 * td, 0.1 * td))
-        .to_controller()
-}
-
-const PAI_STRUCTURE: &str = "Comparison setting of Table 1 as series PID K_c(1 + 1/(τ_I s))(1 + τ_D s/(0.1τ_D s + 1)) \
-on the error (ε = 1); the structure is our reconstruction (it reproduces the printed regulatory rows)";
-
-fn controller_value(c: &Controller) -> Value {
-    let (rn, rd) = c.cr.to_desc();
-    let (yn, yd) = c.cy.to_desc();
-    json!({ "cr": { "num": rn, "den": rd }, "cy": { "num": yn, "den": yd } })
-}
-
-fn family_value(p: &IpdtIr) -> Value {
-    json!({ "family": "ipdt_ir", "k": p.k, "tau": p.tau, "tau_z": p.z, "theta": p.theta })
-}
-
-fn plant_value(p: &Plant) -> Value {
-    let (n, d) = p.tf.to_desc();
-    json!({ "num": n, "den": d, "delay": p.delay })
-}
-
-/// The scenario of the paper's simulations: 0.2 steps in set point and load. The paper shows
-/// them as separate runs (Figs. 3-6); the preset puts the load step after the servo response.
-fn scenario(t_end: f64, d_time: f64) -> Value {
-    json!({ "t_end": t_end, "dt": 0.01,
-            "setpoint": { "time": 0.0, "size": 0.2 },
-            "disturbance": { "time": d_time, "size": 0.2 } })
-}
-
-/// Presets of this paper: both examples with the proposed design (also for Ms = 2), the
-/// +40 % delay perturbation with the nominal controller, and Pai et al. 2010's settings.
-/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
-pub fn rules() -> Vec<Box<dyn super::Rule>> {
-    super::legacy_rules(methods(), tune)
-}
-
-/// Every preset of this paper.
-pub fn presets() -> Vec<super::AnyPreset> {
-    legacy_presets()
-        .into_iter()
-        .map(super::AnyPreset::Legacy)
-        .collect()
-}
-
-/// The presets as JSON records (transitional).
-pub fn legacy_presets() -> Vec<Preset> {
-    let mut v = vec![];
-    let pre = "praveen_kumar_narayana";
-    // Example 1
-    let ex1 = family_value(&EX1);
-    let sc1 = scenario(60.0, 30.0);
-    v.push(Preset {
-        id: format!("{pre}/ex1/proposed"),
-        title: "Boiler steam drum: PID × lead-lag, λ = 1.9, ε = 0.2".into(),
-        description: "Example 1 (Eq. 20): 0.547(1 − 0.418s)e^{−0.1s}/(s(1.06s + 1)); Table 1 design \
-                      (k_p 3.9468, k_i 1.5338, k_d 2.5361, α 0.05, β 0.0334), Ms 5.53 (neutral loop)"
-            .into(),
-        citation: CITATION.into(),
-        plant: ex1.clone(),
-        tune: json!({ "method": ID, "params": { "lambda": 1.9, "epsilon": 0.2 } }),
-        controller: Value::Null,
-        scenario: sc1.clone(),
-    });
-    v.push(Preset {
-        id: format!("{pre}/ex1/ms2"),
-        title: "Boiler steam drum: λ for Ms = 2 (Fig. 2; paper λ = 1.1474)".into(),
-        description: "Example 1 with λ solved exactly for Ms = 2 of the exact-delay loop".into(),
-        citation: CITATION.into(),
-        plant: ex1.clone(),
-        tune: json!({ "method": ID, "params": { "target_ms": 2.0, "epsilon": 0.2 } }),
-        controller: Value::Null,
-        scenario: sc1.clone(),
-    });
-    let mut perturbed1 = EX1;
-    perturbed1.theta *= 1.4;
-    if let Ok(d) = design(&EX1, LAMBDA_PAPER[0]) {
-        if let Ok(c) = controller(&d, EPSILON_DEFAULT, Derivative::Measurement) {
-            v.push(Preset {
-                id: format!("{pre}/ex1/proposed_delay+40"),
-                title: "Boiler, +40 % dead time, nominal λ = 1.9 design".into(),
-                description: "Tables 4-5: the λ = 1.9 controller on the plant with θ = 0.14".into(),
-                citation: CITATION.into(),
-                plant: family_value(&perturbed1),
-                tune: Value::Null,
-                controller: controller_value(&c),
-                scenario: scenario(100.0, 50.0),
-            });
-        }
-    }
-    for (name, plant, sc) in [
-        ("ex1/pai2010", ex1.clone(), sc1.clone()),
-        (
-            "ex1/pai2010_delay+40",
-            family_value(&perturbed1),
-            scenario(100.0, 50.0),
-        ),
-    ] {
-        let (kc, ti, td) = PAI2010[0];
-        if let Ok(c) = pai2010_controller(kc, ti, td) {
-            v.push(Preset {
-                id: format!("{pre}/{name}"),
-                title: format!(
-                    "Boiler: Pai et al. 2010 PID (K_c {kc}, τ_I {ti}, τ_D {td}){}",
-                    if name.ends_with("+40") {
-                        ", +40 % dead time"
-                    } else {
-                        ""
-                    }
-                ),
-                description: PAI_STRUCTURE.into(),
-                citation: CITATION_PAI.into(),
-                plant,
-                tune: Value::Null,
-                controller: controller_value(&c),
-                scenario: sc,
-            });
-        }
-    }
-    // Example 2
-    let full = ex2_process();
-    let mut full40 = full.clone();
-    full40.delay *= 1.4;
-    let sc2 = scenario(300.0, 150.0);
-    v.push(Preset {
-        id: format!("{pre}/ex2/reduced_proposed"),
-        title: "Example 2, reduced model (Eq. 22): PID × lead-lag, λ = 0.8".into(),
-        description: "0.5183(1 − 0.4699s)e^{−0.81s}/(s(1.1609s + 1)); Table 1 design (k_p 1.2805, \
-                      k_i 0.2180, k_d 1.1928, α 0.4050, β 0.1362), Ms 3.91"
-            .into(),
-        citation: CITATION.into(),
-        plant: family_value(&EX2_REDUCED),
-        tune: json!({ "method": ID, "params": { "lambda": 0.8, "epsilon": 0.2 } }),
-        controller: Value::Null,
-        scenario: scenario(60.0, 30.0),
-    });
-    v.push(Preset {
-        id: format!("{pre}/ex2/reduced_ms2"),
-        title: "Example 2, reduced model: λ for Ms = 2 (paper λ = 0.6914)".into(),
-        description: "λ solved exactly for Ms = 2 on the reduced model of Eq. (22)".into(),
-        citation: CITATION.into(),
-        plant: family_value(&EX2_REDUCED),
-        tune: json!({ "method": ID, "params": { "target_ms": 2.0, "epsilon": 0.2 } }),
-        controller: Value::Null,
-        scenario: scenario(60.0, 30.0),
-    });
-    if let Ok(d) = design(&EX2_REDUCED, LAMBDA_PAPER[1]) {
-        if let Ok(c) = controller(&d, EPSILON_DEFAULT, Derivative::Measurement) {
-            for (name, plant, extra) in [
-                ("ex2/proposed", &full, ""),
-                ("ex2/proposed_delay+40", &full40, ", +40 % dead time"),
-            ] {
-                v.push(Preset {
-                    id: format!("{pre}/{name}"),
-                    title: format!(
-                        "Example 2 process (Eq. 21): λ = 0.8 design from the reduced model{extra}"
-                    ),
-                    description:
-                        "0.5(1 − 0.5s)e^{−0.7s}/(s(0.4s + 1)(0.1s + 1)(0.5s + 1)) with the \
-                                  Table 1 controller designed on Eq. (22)"
-                            .into(),
-                    citation: CITATION.into(),
-                    plant: plant_value(plant),
-                    tune: Value::Null,
-                    controller: controller_value(&c),
-                    scenario: sc2.clone(),
-                });
-            }
-        }
-    }
-    let (kc, ti, td) = PAI2010[1];
-    if let Ok(c) = pai2010_controller(kc, ti, td) {
-        for (name, plant, extra) in [
-            ("ex2/pai2010", &full, ""),
-            ("ex2/pai2010_delay+40", &full40, ", +40 % dead time"),
-        ] {
-            v.push(Preset {
-                id: format!("{pre}/{name}"),
-                title: format!(
-                    "Example 2 process: Pai et al. 2010 PID (K_c {kc}, τ_I {ti}, τ_D {td}){extra}"
-                ),
-                description: if extra.is_empty() {
-                    PAI_STRUCTURE.into()
-                } else {
-                    format!("{PAI_STRUCTURE}; with this mapping the +40 % delay loop is unstable (the printed one settles only after 257 s)")
-                },
-                citation: CITATION_PAI.into(),
-                plant: plant_value(plant),
-                tune: Value::Null,
-                controller: controller_value(&c),
-                scenario: if extra.is_empty() {
-                    sc2.clone()
-                } else {
-                    scenario(600.0, 300.0)
-                },
-            });
-        }
-    }
-    v
+    ))
 }
