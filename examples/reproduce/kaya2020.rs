@@ -336,7 +336,7 @@ pub fn report() -> String {
          Then |L(j∞)| = |K K_c|(1+N)T₀/T and Ms ≥ 1/(1 − |L(j∞)|); the loop is unstable for |L(j∞)| ≥ 1. \
          Default N: the largest N ≤ 10 with |L(j∞)| ≤ 0.5 (here N = {:.3}). The reference row is the loop the paper \
          optimized: the 3/3 Padé delay with the ideal derivative (rational, so well-posed).\n",
-        example_ipd(1, Criterion::Iste, None).map(|t| pidlab::api::tuning_json(&t)["named"]["n"].as_f64().unwrap_or(f64::NAN)).unwrap_or(f64::NAN)
+        example_ipd(1, Criterion::Iste, None).ok().and_then(|t| t.named("n")).unwrap_or(f64::NAN)
     );
     let _ = write!(
         w,
@@ -382,14 +382,12 @@ pub fn report() -> String {
         Some(3.5),
     ] {
         let t = example_ipd(1, Criterion::Iste, n).unwrap();
-        let hf = pidlab::api::tuning_json(&t)["details"]["derivative_filter"]["hf_loop_gain"]
-            .as_f64()
+        let hf = kaya2020::Details::of(&t)
+            .and_then(|d| d.derivative_filter.hf_loop_gain)
             .unwrap_or(f64::NAN);
         let label = format!(
             "N = {:.3}{} (\\|L(j∞)\\| = {hf:.3})",
-            pidlab::api::tuning_json(&t)["named"]["n"]
-                .as_f64()
-                .unwrap_or(f64::NAN),
+            t.named("n").unwrap_or(f64::NAN),
             if n.is_none() { " default" } else { "" }
         );
         let _ = write!(w, "{}", row(&label, &run(&EX1.plant(), &t.controller, 1)));
@@ -404,7 +402,7 @@ pub fn report() -> String {
          leaving the derivative action as strong as that allows. Here the derivative buys little: N = 0.25-0.5 \
          gives Ms ≈ 1.6 with responses within 1 % of the default's (pass `n` for that); the default stays the \
          one closest to Eq. (4) within Ms ≤ 2.\n",
-        1.0 / (0.5848 * example_ipd(1, Criterion::Iste, Some(1.0)).map(|t| pidlab::api::tuning_json(&t)["named"]["kc"].as_f64().unwrap_or(f64::NAN)).unwrap_or(f64::NAN) * 0.3546 / 0.6302) - 1.0
+        1.0 / (0.5848 * example_ipd(1, Criterion::Iste, Some(1.0)).ok().and_then(|t| t.named("kc")).unwrap_or(f64::NAN) * 0.3546 / 0.6302) - 1.0
     );
 
     // ---------------------------------------------------------------- Example 1 (Figs. 4, 5)
@@ -430,9 +428,7 @@ pub fn report() -> String {
             let label = format!(
                 "I-PD {} (N = {:.2})",
                 crit.id().to_uppercase(),
-                pidlab::api::tuning_json(&t)["named"]["n"]
-                    .as_f64()
-                    .unwrap_or(f64::NAN)
+                t.named("n").unwrap_or(f64::NAN)
             );
             rows.push((label, run(&plant.plant(), &t.controller, 1)));
         }
@@ -480,12 +476,7 @@ pub fn report() -> String {
             let label = format!(
                 "{label}{}",
                 if n.is_none() {
-                    format!(
-                        " = {:.3}",
-                        pidlab::api::tuning_json(&t)["named"]["n"]
-                            .as_f64()
-                            .unwrap_or(f64::NAN)
-                    )
+                    format!(" = {:.3}", t.named("n").unwrap_or(f64::NAN))
                 } else {
                     String::new()
                 }

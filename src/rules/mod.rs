@@ -112,6 +112,8 @@ impl Tuning {
 pub enum Details {
     /// A paper not yet moved to typed details (transitional).
     Legacy(Map<String, Value>),
+    /// Kaya (2020).
+    Kaya2020(Box<kaya2020::Details>),
 }
 
 /// How a preset designs its controller.

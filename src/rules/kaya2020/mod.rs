@@ -30,13 +30,13 @@
 //! first-order Taylor approximations of the smaller lags, reproduces the printed models of
 //! Examples 2 and 3.
 
-use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
-use crate::api::{controller_json, family_json, plant_json};
+use super::{AnyPreset, Design, MethodInfo, ParamInfo, Params, Preset, Rule, Tuning};
 use crate::error::{Error, Result};
-use crate::model::controller::Pid;
+use crate::model::controller::{Controller, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::C64;
-use serde_json::{json, Map, Value};
+use crate::sim::Scenario;
+use serde::Serialize;
 
 /// Citation of the paper.
 pub const CITATION: &str = "I. Kaya, \"I-PD Controller Design Based on Analytical Rules for \
@@ -367,7 +367,7 @@ impl Reduction {
 ///
 /// Returns the model as a [`Family::FopdtIr`] and details (time constants, what was lumped
 /// where, the rule, notes).
-pub fn reduce_to_fopdt_ir(plant: &Plant) -> Result<(Family, Map<String, Value>)> {
+pub fn reduce_to_fopdt_ir(plant: &Plant) -> Result<(Family, ReductionDetails)> {
     reduce_to_fopdt_ir_with(plant, Reduction::Paper)
 }
 
@@ -454,7 +454,7 @@ fn lag_time_constants(den: &crate::model::poly::Poly) -> Result<Vec<f64>> {
 pub fn reduce_to_fopdt_ir_with(
     plant: &Plant,
     rule: Reduction,
-) -> Result<(Family, Map<String, Value>)> {
+) -> Result<(Family, ReductionDetails)> {
     let num = &plant.tf.num;
     let den = &plant.tf.den;
     if !num.is_finite() || !den.is_finite() || den.is_zero() {
@@ -555,16 +555,6 @@ pub fn reduce_to_fopdt_ir_with(
         theta,
     };
     fam.validate().map_err(|e| e.within("model"))?;
-    let mut d = Map::new();
-    d.insert("rule".into(), json!(rule.id()));
-    d.insert("k".into(), json!(k));
-    d.insert("tau_z".into(), json!(t0));
-    d.insert("time_constants".into(), json!(taus));
-    d.insert("lumped_into_tau".into(), json!(retained));
-    d.insert("moved_to_delay".into(), json!(to_delay));
-    d.insert("delay_given".into(), json!(plant.delay));
-    d.insert("theta_over_t".into(), json!(theta / t));
-    d.insert("t0_over_t".into(), json!(t0 / t));
     let note = match rule {
         Reduction::Paper => {
             "Seborg et al. [14] first-order Taylor approximations: the largest lags lumped \
@@ -578,14 +568,70 @@ pub fn reduce_to_fopdt_ir_with(
             "Skogestad's half rule: half of the second-largest lag to T, half to θ, the rest to θ."
         }
     };
-    d.insert("note".into(), json!(note));
-    Ok((fam, d))
+    let details = ReductionDetails {
+        rule: rule.id(),
+        k,
+        tau_z: t0,
+        time_constants: taus,
+        lumped_into_tau: retained,
+        moved_to_delay: to_delay,
+        delay_given: plant.delay,
+        theta_over_t: theta / t,
+        t0_over_t: t0 / t,
+        note,
+    };
+    Ok((fam, details))
 }
 
-/// Methods of this paper.
-pub fn methods() -> Vec<MethodInfo> {
-    vec![MethodInfo {
-        id: "kaya".into(),
+/// What [`reduce_to_fopdt_ir_with`] did (`reduce().details`, `tune().details.reduction`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ReductionDetails {
+    /// The rule's id ([`Reduction::id`]).
+    pub rule: &'static str,
+    /// Static gain K.
+    pub k: f64,
+    /// The right-half-plane zero's time constant T₀.
+    pub tau_z: f64,
+    /// The plant's lag time constants, descending.
+    pub time_constants: Vec<f64>,
+    /// The (parts of) lags lumped into T.
+    pub lumped_into_tau: Vec<f64>,
+    /// The (parts of) lags moved to the dead time.
+    pub moved_to_delay: Vec<f64>,
+    /// The plant's own dead time.
+    pub delay_given: f64,
+    /// θ/T of the model.
+    pub theta_over_t: f64,
+    /// T₀/T of the model.
+    pub t0_over_t: f64,
+    /// The rule in words.
+    pub note: &'static str,
+}
+
+/// Method id of the rule.
+pub const METHOD: &str = "kaya";
+
+/// Note on the derivative filter (`details.derivative_filter.note`).
+const FILTER_NOTE: &str = "Eq. (4) is an ideal derivative; on the biproper FOPDT-IR plant it \
+    makes the exact-delay loop ill-posed, so K_c T_d s is implemented as K_c T_d s/(T_d s/N + 1). \
+    Cy(∞) = K_c(1+N), |L(j∞)| = |K K_c|(1+N)T₀/T.";
+
+/// The rule's parameter declarations (authoritative: the registry validates against them).
+pub fn param_decls() -> Vec<ParamInfo> {
+    vec![
+        ParamInfo::choice("criterion", "criterion", "iste", &Criterion::IDS)
+            .help("ISTE / IST²E / IST³E column of Tables I-II (Eqs. 5-7)"),
+        ParamInfo::number("n", "derivative filter N (0: ideal)", None, 0.0, 100.0).help(
+            "T_f = T_d/N; default: largest N ≤ 10 with |L(j∞)| = |KK_c|(1+N)T₀/T ≤ 0.5 \
+             (the biproper plant makes an ideal derivative ill-posed)",
+        ),
+    ]
+}
+
+/// What `methods()` lists for the rule.
+pub fn method_info() -> MethodInfo {
+    MethodInfo {
+        id: METHOD.into(),
         title: "Kaya 2020: optimal I-PD rules for stable inverse-response processes".into(),
         citation: CITATION.into(),
         // "custom": any rational plant with real stable poles and one RHP zero is first reduced
@@ -594,39 +640,97 @@ pub fn methods() -> Vec<MethodInfo> {
         structure: "I-PD: G_c1 = K_c/(T_i s) on the error, G_c2 = K_c(1 + T_d s) on the \
                     measurement (derivative filtered, T_f = T_d/N)"
             .into(),
-        params: vec![
-            ParamInfo::choice("criterion", "criterion", "iste", &Criterion::IDS)
-                .help("ISTE / IST²E / IST³E column of Tables I-II (Eqs. 5-7)"),
-            ParamInfo::number("n", "derivative filter N (0: ideal)", None, 0.0, 100.0).help(
-                "T_f = T_d/N; default: largest N ≤ 10 with |L(j∞)| = |KK_c|(1+N)T₀/T ≤ 0.5 \
-                 (the biproper plant makes an ideal derivative ill-posed)",
-            ),
-        ],
-    }]
+        params: param_decls(),
+    }
 }
 
-/// The rule on a plant: a `fopdt_ir` family plant as is, any other plant (real stable poles,
-/// at most one RHP zero) through [`reduce_to_fopdt_ir`] first.
-pub fn tune_plant(plant: &Plant, params: &Params) -> Result<Tuning> {
-    let crit_id = params.choice("criterion", "iste", &Criterion::IDS)?;
-    let criterion = Criterion::from_id(&crit_id).unwrap_or(Criterion::Iste);
-    let n_param = params.opt_f64("n")?;
-    if let Some(n) = n_param {
-        if !(0.0..=1e6).contains(&n) {
-            return Err(Error::new(
-                "params.n",
-                format!("must lie in [0, 1e6] (0: ideal derivative) (got {n})"),
-            ));
+/// The rule of Eqs. (3)-(7) behind the [`Rule`] interface.
+pub struct Kaya;
+
+impl Rule for Kaya {
+    fn info(&self) -> MethodInfo {
+        method_info()
+    }
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        tune_plant(plant, params)
+    }
+}
+
+/// The FOPDT-IR model the rule was applied to (`details.model`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Model {
+    /// Always `"fopdt_ir"`.
+    pub family: &'static str,
+    /// K.
+    pub k: f64,
+    /// T.
+    pub tau: f64,
+    /// T₀.
+    pub tau_z: f64,
+    /// θ.
+    pub theta: f64,
+}
+
+/// The derivative filter `K_c T_d s/(T_d s/N + 1)` (`details.derivative_filter`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DerivativeFilter {
+    /// N (0: ideal derivative).
+    pub n: f64,
+    /// Where N came from (given, or the default rule).
+    pub source: &'static str,
+    /// T_f = T_d/N (None for the ideal derivative).
+    pub tf: Option<f64>,
+    /// |L(j∞)| of the loop on the model (None: infinite, ideal derivative on a biproper plant).
+    pub hf_loop_gain: Option<f64>,
+    /// 1/(1 − |L(j∞)|) when |L(j∞)| < 1.
+    pub ms_lower_bound: Option<f64>,
+    /// The filter in words.
+    pub note: &'static str,
+}
+
+/// The details of a tuning by the rule (`tune().details`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Details {
+    /// The reduction to FOPDT-IR, when the plant was not a `fopdt_ir` family plant.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reduction: Option<ReductionDetails>,
+    /// Criterion id.
+    pub criterion: &'static str,
+    /// The FOPDT-IR model.
+    pub model: Model,
+    /// θ/T.
+    pub theta_over_t: f64,
+    /// T₀/T.
+    pub t0_over_t: f64,
+    /// `"I"` or `"II"`.
+    pub table: &'static str,
+    /// K·K_c (Eq. 5).
+    pub kkc: f64,
+    /// T_i/T (Eq. 6).
+    pub ti_over_t: f64,
+    /// T_d/T (Eq. 7).
+    pub td_over_t: f64,
+    /// The derivative filter.
+    pub derivative_filter: DerivativeFilter,
+    /// Fit-range and filter warnings.
+    pub warnings: Vec<String>,
+}
+
+impl Details {
+    /// The details of a tuning by this rule (`None` for another paper's tuning).
+    pub fn of(t: &Tuning) -> Option<&Details> {
+        match &t.details {
+            super::Details::Kaya2020(d) => Some(d),
+            _ => None,
         }
     }
-    let mut details = Map::new();
-    let (k, tau, tau_z, theta) = match plant.family {
-        Some(Family::FopdtIr {
-            k,
-            tau,
-            tau_z,
-            theta,
-        }) => (k, tau, tau_z, theta),
+}
+
+/// The FOPDT-IR model `(K, T, T₀, θ)` of `plant`: a `fopdt_ir` family plant as is, any other
+/// plant through [`reduce_to_fopdt_ir`] (and what the reduction did).
+fn fopdt_ir_model(plant: &Plant) -> Result<([f64; 4], Option<ReductionDetails>)> {
+    let (fam, red) = match plant.family {
+        Some(f @ Family::FopdtIr { .. }) => (f, None),
         Some(f) => {
             return Err(Error::new(
                 "plant.family",
@@ -635,52 +739,60 @@ pub fn tune_plant(plant: &Plant, params: &Params) -> Result<Tuning> {
         }
         None => {
             let (fam, red) = reduce_to_fopdt_ir(plant)?;
-            details.insert("reduction".into(), Value::Object(red));
-            match fam {
-                Family::FopdtIr {
-                    k,
-                    tau,
-                    tau_z,
-                    theta,
-                } => (k, tau, tau_z, theta),
-                _ => {
-                    return Err(Error::new(
-                        "plant",
-                        "reduction did not give a FOPDT-IR model",
-                    ))
-                }
-            }
+            (fam, Some(red))
         }
     };
-    let s = settings(k, tau, tau_z, theta, criterion)?;
-    let mut warnings = s.warnings.clone();
-    let hf_plant = k.abs() * tau_z / tau; // |G(j∞)| of the model
-    let (n, n_source) = match n_param {
-        Some(n) => (n, "given"),
-        None => match default_n(s.kkc, s.t0_over_t) {
-            Some((n, _)) => (
-                n,
-                "default: largest N ≤ 10 with |L(j∞)| ≤ 0.5, at least 0.1",
+    match fam {
+        Family::FopdtIr {
+            k,
+            tau,
+            tau_z,
+            theta,
+        } => Ok(([k, tau, tau_z, theta], red)),
+        _ => Err(Error::new(
+            "plant",
+            "reduction did not give a FOPDT-IR model",
+        )),
+    }
+}
+
+/// The derivative filter's N: the given one, or [`default_n`] (an error when no N makes the
+/// loop stable).
+fn filter_n(given: Option<f64>, s: &Settings) -> Result<(f64, &'static str)> {
+    if let Some(n) = given {
+        return Ok((n, "given"));
+    }
+    match default_n(s.kkc, s.t0_over_t) {
+        Some((n, _)) => Ok((
+            n,
+            "default: largest N ≤ 10 with |L(j∞)| ≤ 0.5, at least 0.1",
+        )),
+        None => Err(Error::new(
+            "plant.tau_z",
+            format!(
+                "|K K_c|·T₀/T = {:.3}: the fitted proportional gain alone makes the \
+                 high-frequency loop gain ≥ 1 on this biproper plant, so the loop with \
+                 the exact dead time is unstable for any derivative filter (far outside \
+                 the fits' range)",
+                s.kkc.abs() * s.t0_over_t
             ),
-            None => {
-                return Err(Error::new(
-                    "plant.tau_z",
-                    format!(
-                        "|K K_c|·T₀/T = {:.3}: the fitted proportional gain alone makes the \
-                         high-frequency loop gain ≥ 1 on this biproper plant, so the loop with \
-                         the exact dead time is unstable for any derivative filter (far outside \
-                         the fits' range)",
-                        s.kkc.abs() * s.t0_over_t
-                    ),
-                ))
-            }
-        },
-    };
-    let kp = s.kc;
-    let ki = s.kc / s.ti;
-    let kd = s.kc * s.td;
+        )),
+    }
+}
+
+/// The I-PD of Eqs. (3)-(4) with the derivative filter N as (Cr, Cy), and the loop's
+/// high-frequency gain |L(j∞)| on the model whose |G(j∞)| is `hf_plant`; warnings when the
+/// filter makes the exact-delay loop ill-posed or poorly damped.
+fn ipd_controller(
+    s: &Settings,
+    n: f64,
+    hf_plant: f64,
+    theta: f64,
+    warnings: &mut Vec<String>,
+) -> Result<(Controller, f64)> {
+    let (kp, ki, kd) = (s.kc, s.kc / s.ti, s.kc * s.td);
     let pid = Pid::ipd(kp, ki, kd);
-    let (controller, hf_loop) = if n == 0.0 {
+    if n == 0.0 {
         if hf_plant > 0.0 && kd != 0.0 {
             warnings.push(
                 "n = 0: ideal derivative on a biproper plant: the loop with the exact dead time \
@@ -689,73 +801,84 @@ pub fn tune_plant(plant: &Plant, params: &Params) -> Result<Tuning> {
                     .to_string(),
             );
         }
-        (
-            pid.to_controller()?,
-            if kd != 0.0 && hf_plant > 0.0 {
-                f64::INFINITY
-            } else {
-                (kp * hf_plant).abs()
-            },
-        )
-    } else {
-        let l = (kp * (1.0 + n) * hf_plant).abs();
-        if l >= 1.0 && theta > 0.0 {
-            warnings.push(format!(
-                "N = {n}: high-frequency loop gain |L(j∞)| = {l:.3} ≥ 1 on the biproper plant: \
-                 the loop with the exact dead time is unstable (choose a smaller N)"
-            ));
-        } else if (0.8..1.0).contains(&l) {
-            warnings.push(format!(
-                "N = {n}: high-frequency loop gain |L(j∞)| = {l:.3} gives Ms ≥ {:.1}",
-                1.0 / (1.0 - l)
-            ));
-        }
-        (pid.filter_n(n).to_controller()?, l)
-    };
-    let mut named = Map::new();
-    named.insert("kc".into(), json!(s.kc));
-    named.insert("ti".into(), json!(s.ti));
-    named.insert("td".into(), json!(s.td));
-    named.insert("kp".into(), json!(kp));
-    named.insert("ki".into(), json!(ki));
-    named.insert("kd".into(), json!(kd));
-    named.insert("n".into(), json!(n));
-    details.insert("criterion".into(), json!(criterion.id()));
-    details.insert(
-        "model".into(),
-        json!({"family": "fopdt_ir", "k": k, "tau": tau, "tau_z": tau_z, "theta": theta}),
-    );
-    details.insert("theta_over_t".into(), json!(s.theta_over_t));
-    details.insert("t0_over_t".into(), json!(s.t0_over_t));
-    details.insert("table".into(), json!(if s.table == 1 { "I" } else { "II" }));
-    details.insert("kkc".into(), json!(s.kkc));
-    details.insert("ti_over_t".into(), json!(s.ti_over_t));
-    details.insert("td_over_t".into(), json!(s.td_over_t));
-    details.insert(
-        "derivative_filter".into(),
-        json!({
-            "n": n,
-            "source": n_source,
-            "tf": if n > 0.0 { json!(s.td / n) } else { Value::Null },
-            "hf_loop_gain": if hf_loop.is_finite() { json!(hf_loop) } else { Value::Null },
-            "ms_lower_bound": if hf_loop < 1.0 { json!(1.0 / (1.0 - hf_loop)) } else { Value::Null },
-            "note": "Eq. (4) is an ideal derivative; on the biproper FOPDT-IR plant it makes the \
-                     exact-delay loop ill-posed, so K_c T_d s is implemented as \
-                     K_c T_d s/(T_d s/N + 1). Cy(∞) = K_c(1+N), |L(j∞)| = |K K_c|(1+N)T₀/T."
-        }),
-    );
-    details.insert("warnings".into(), json!(warnings));
-    Ok(Tuning {
-        method: "kaya".into(),
-        controller,
-        named,
-        details,
-    })
+        let hf_loop = if kd != 0.0 && hf_plant > 0.0 {
+            f64::INFINITY
+        } else {
+            (kp * hf_plant).abs()
+        };
+        return Ok((pid.to_controller()?, hf_loop));
+    }
+    let l = (kp * (1.0 + n) * hf_plant).abs();
+    if l >= 1.0 && theta > 0.0 {
+        warnings.push(format!(
+            "N = {n}: high-frequency loop gain |L(j∞)| = {l:.3} ≥ 1 on the biproper plant: \
+             the loop with the exact dead time is unstable (choose a smaller N)"
+        ));
+    } else if (0.8..1.0).contains(&l) {
+        warnings.push(format!(
+            "N = {n}: high-frequency loop gain |L(j∞)| = {l:.3} gives Ms ≥ {:.1}",
+            1.0 / (1.0 - l)
+        ));
+    }
+    Ok((pid.filter_n(n).to_controller()?, l))
 }
 
-/// Tunes method `id` if it belongs to this paper.
-pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> {
-    (id == "kaya").then(|| tune_plant(plant, params))
+/// The rule on a plant: a `fopdt_ir` family plant as is, any other plant (real stable poles,
+/// at most one RHP zero) through [`reduce_to_fopdt_ir`] first. `params` are validated against
+/// [`param_decls`].
+pub fn tune_plant(plant: &Plant, params: &Params) -> Result<Tuning> {
+    let decl = param_decls();
+    params.validate(METHOD, &decl)?;
+    let crit_id = params.text(&decl, "criterion")?;
+    let criterion = Criterion::from_id(&crit_id).unwrap_or(Criterion::Iste);
+    let ([k, tau, tau_z, theta], reduction) = fopdt_ir_model(plant)?;
+    let s = settings(k, tau, tau_z, theta, criterion)?;
+    let mut warnings = s.warnings.clone();
+    let hf_plant = k.abs() * tau_z / tau; // |G(j∞)| of the model
+    let (n, source) = filter_n(params.opt_f64("n")?, &s)?;
+    let (controller, hf_loop) = ipd_controller(&s, n, hf_plant, theta, &mut warnings)?;
+    let (kp, ki, kd) = (s.kc, s.kc / s.ti, s.kc * s.td);
+    let named = [
+        ("kc", s.kc),
+        ("ti", s.ti),
+        ("td", s.td),
+        ("kp", kp),
+        ("ki", ki),
+        ("kd", kd),
+        ("n", n),
+    ];
+    let details = Details {
+        reduction,
+        criterion: criterion.id(),
+        model: Model {
+            family: "fopdt_ir",
+            k,
+            tau,
+            tau_z,
+            theta,
+        },
+        theta_over_t: s.theta_over_t,
+        t0_over_t: s.t0_over_t,
+        table: if s.table == 1 { "I" } else { "II" },
+        kkc: s.kkc,
+        ti_over_t: s.ti_over_t,
+        td_over_t: s.td_over_t,
+        derivative_filter: DerivativeFilter {
+            n,
+            source,
+            tf: (n > 0.0).then(|| s.td / n),
+            hf_loop_gain: hf_loop.is_finite().then_some(hf_loop),
+            ms_lower_bound: (hf_loop < 1.0).then(|| 1.0 / (1.0 - hf_loop)),
+            note: FILTER_NOTE,
+        },
+        warnings,
+    };
+    Ok(Tuning {
+        method: METHOD.into(),
+        controller,
+        named: named.iter().map(|(k, x)| (k.to_string(), *x)).collect(),
+        details: super::Details::Kaya2020(Box::new(details)),
+    })
 }
 
 // ---------------------------------------------------------------------------------------
@@ -989,14 +1112,12 @@ pub fn scenario_of(example: usize) -> (f64, f64, f64, f64) {
     }
 }
 
-fn scenario_json(example: usize) -> Value {
-    let (t_end, sp, dt_, dsize) = scenario_of(example);
-    json!({
-        "t_end": t_end,
-        "dt": if example == 1 { 0.005 } else { 0.02 },
-        "setpoint": {"time": 0.0, "size": sp},
-        "disturbance": {"time": dt_, "size": dsize},
-    })
+/// The paper's scenario of each example as a [`Scenario`] (output every 0.005 for Example 1,
+/// 0.02 for Examples 2-3).
+pub fn scenario(example: usize) -> Scenario {
+    let (t_end, sp, d_time, d_size) = scenario_of(example);
+    let dt = if example == 1 { 0.005 } else { 0.02 };
+    Scenario::steps(t_end, dt, 0.0, sp, d_time, d_size)
 }
 
 /// The I-PD of the rule for Examples 2 and 3 as simulated on the higher-order process:
@@ -1014,23 +1135,27 @@ pub fn example_ipd(example: usize, criterion: Criterion, n: Option<f64>) -> Resu
     tune_plant(&fam.plant(), &p)
 }
 
-/// Presets: the three examples (the rule, each criterion for Example 1; the +20 % plant of
-/// Fig. 5) and every comparison setting, with the paper's scenario.
-/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
-pub fn rules() -> Vec<Box<dyn super::Rule>> {
-    super::legacy_rules(methods(), tune)
+/// The rules of this paper.
+pub fn rules() -> Vec<Box<dyn Rule>> {
+    vec![Box::new(Kaya)]
 }
 
 /// Every preset of this paper.
-pub fn presets() -> Vec<super::AnyPreset> {
-    legacy_presets()
-        .into_iter()
-        .map(super::AnyPreset::Legacy)
-        .collect()
+pub fn presets() -> Vec<AnyPreset> {
+    typed_presets().into_iter().map(AnyPreset::Typed).collect()
 }
 
-/// The presets as JSON records (transitional).
-pub fn legacy_presets() -> Vec<Preset> {
+fn rule_design(params: Params) -> Design {
+    Design::Rule {
+        method: METHOD.into(),
+        params,
+    }
+}
+
+/// Presets: the three examples (the rule, each criterion for Example 1; the +20 % plant of
+/// Fig. 5; the rule on the processes of Examples 2-3, which it reduces to the printed models)
+/// and every comparison setting, with the paper's scenario.
+pub fn typed_presets() -> Vec<Preset> {
     let mut v = Vec::new();
     for crit in [Criterion::Iste, Criterion::Ist2e, Criterion::Ist3e] {
         v.push(Preset {
@@ -1041,34 +1166,33 @@ pub fn legacy_presets() -> Vec<Preset> {
                           default N (the plant is biproper). Unit set-point step, load 0.5 at t = 10 (Fig. 4)."
                 .into(),
             citation: CITATION.into(),
-            plant: family_json(&EX1),
-            tune: json!({"method": "kaya", "params": {"criterion": crit.id()}}),
-            controller: Value::Null,
-            scenario: scenario_json(1),
+            plant: EX1.plant(),
+            design: rule_design(Params::default().with("criterion", crit.id())),
+            scenario: scenario(1),
         });
     }
-    v.push(Preset {
-        id: "kaya2020/ex1/ipd_iste_perturbed".into(),
-        title: "Kaya 2020 Ex. 1, +20 % in K, T₀, T, θ: I-PD (ISTE)".into(),
-        description: "The ISTE I-PD designed on the nominal model, run on the plant with every \
-                      parameter +20 % (Fig. 5)."
-            .into(),
-        citation: CITATION.into(),
-        plant: family_json(&EX1_PERTURBED),
-        tune: Value::Null,
-        controller: example_ipd(1, Criterion::Iste, None)
-            .map(|t| controller_json(&t.controller))
-            .unwrap_or(Value::Null),
-        scenario: scenario_json(1),
-    });
-    for (ex, plant, model) in [(2, ex2_plant(), EX2_MODEL), (3, ex3_plant(), EX3_MODEL)] {
+    if let Ok(t) = example_ipd(1, Criterion::Iste, None) {
+        v.push(Preset {
+            id: "kaya2020/ex1/ipd_iste_perturbed".into(),
+            title: "Kaya 2020 Ex. 1, +20 % in K, T₀, T, θ: I-PD (ISTE)".into(),
+            description:
+                "The ISTE I-PD designed on the nominal model, run on the plant with every \
+                          parameter +20 % (Fig. 5)."
+                    .into(),
+            citation: CITATION.into(),
+            plant: EX1_PERTURBED.plant(),
+            design: Design::Controller(t.controller),
+            scenario: scenario(1),
+        });
+    }
+    for (ex, plant) in [(2, ex2_plant()), (3, ex3_plant())] {
         v.push(Preset {
             id: format!("kaya2020/ex{ex}/ipd_iste"),
             title: format!("Kaya 2020 Ex. {ex}: I-PD (ISTE) on the higher-order process"),
             description: format!(
-                "Designed on the reduced model {} (tune.plant), simulated on the process itself \
-                 with the ideal derivative of Eq. (4) (n = 0; the process is strictly proper). \
-                 Unit set-point step, load {} at t = {} (Figs. {}-{}).",
+                "Designed on the reduced model {} (the rule reduces the process to it first), \
+                 simulated on the process itself with the ideal derivative of Eq. (4) (n = 0; the \
+                 process is strictly proper). Unit set-point step, load {} at t = {} (Figs. {}-{}).",
                 if ex == 2 {
                     "(−2s+1)e^{−2s}/(2s+1)"
                 } else {
@@ -1080,20 +1204,20 @@ pub fn legacy_presets() -> Vec<Preset> {
                 2 * ex + 3
             ),
             citation: CITATION.into(),
-            plant: plant_json(&plant),
-            tune: json!({"method": "kaya", "params": {"criterion": "iste", "n": 0.0},
-                         "plant": family_json(&model)}),
-            controller: example_ipd(ex, Criterion::Iste, Some(0.0))
-                .map(|t| controller_json(&t.controller))
-                .unwrap_or(Value::Null),
-            scenario: scenario_json(ex),
+            plant,
+            design: rule_design(
+                Params::default()
+                    .with("criterion", "iste")
+                    .with("n", 0.0),
+            ),
+            scenario: scenario(ex),
         });
     }
     for c in comparisons() {
         let plant = match c.example {
-            1 => family_json(&EX1),
-            2 => plant_json(&ex2_plant()),
-            _ => plant_json(&ex3_plant()),
+            1 => EX1.plant(),
+            2 => ex2_plant(),
+            _ => ex3_plant(),
         };
         let mut desc = format!("{}: K_c = {}, T_i = {}", c.who, c.kc, c.ti);
         if let Some(td) = c.td {
@@ -1103,18 +1227,17 @@ pub fn legacy_presets() -> Vec<Preset> {
             desc.push_str(&format!(", λ = {l}"));
         }
         desc.push_str(&format!(" (Kaya 2020, {}). {}.", c.table, c.note));
+        let Ok(controller) = c.controller() else {
+            continue;
+        };
         v.push(Preset {
             id: format!("kaya2020/ex{}/{}", c.example, c.key),
             title: format!("Kaya 2020 Ex. {}: {}", c.example, c.who),
             description: desc,
             citation: CITATION.into(),
             plant,
-            tune: Value::Null,
-            controller: c
-                .controller()
-                .map(|k| controller_json(&k))
-                .unwrap_or(Value::Null),
-            scenario: scenario_json(c.example),
+            design: Design::Controller(controller),
+            scenario: scenario(c.example),
         });
     }
     v
