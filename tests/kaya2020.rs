@@ -100,14 +100,14 @@ fn printed_ratios_and_table_choice() {
 #[wasm_bindgen_test(unsupported = test)]
 fn table_i_iste_erratum() {
     let mut printed = TABLE_I;
-    printed[0][1][0] = kaya2020::PRINTED_TABLE_I_ISTE_A2_D3.0;
-    printed[0][2][3] = kaya2020::PRINTED_TABLE_I_ISTE_A2_D3.1;
+    printed.iste.ti.a = kaya2020::PRINTED_TABLE_I_ISTE.a2;
+    printed.iste.td.d = kaya2020::PRINTED_TABLE_I_ISTE.d3;
     let (x1, y1) = (0.3567 / 0.6302, 0.3546 / 0.6302);
     let (_, ti_t, td_t) = normalized_settings(&printed, Criterion::Iste, x1, y1);
     assert!((ti_t * 0.6302 - 0.587).abs() > 0.05);
     assert!((td_t * 0.6302 - 0.069).abs() > 0.02);
     let mut errata = TABLE_I;
-    errata[0][1][0] = kaya2020::ERRATA_TABLE_I_ISTE_A2;
+    errata.iste.ti.a = kaya2020::ERRATA_TABLE_I_ISTE_A2;
     let (_, ti_t, _) = normalized_settings(&errata, Criterion::Iste, 1.0, 1.0);
     assert!((ti_t * 2.0 - 2.4993).abs() < 1e-9);
     assert!((ti_t * 2.0 - 2.501).abs() > HALF_ULP3);

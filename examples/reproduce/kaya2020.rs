@@ -251,10 +251,10 @@ pub fn report() -> String {
         );
     }
     let mut errata = TABLE_I;
-    errata[0][1][0] = kaya2020::ERRATA_TABLE_I_ISTE_A2;
+    errata.iste.ti.a = kaya2020::ERRATA_TABLE_I_ISTE_A2;
     let mut damaged = TABLE_I;
-    damaged[0][1][0] = kaya2020::PRINTED_TABLE_I_ISTE_A2_D3.0;
-    damaged[0][2][3] = kaya2020::PRINTED_TABLE_I_ISTE_A2_D3.1;
+    damaged.iste.ti.a = kaya2020::PRINTED_TABLE_I_ISTE.a2;
+    damaged.iste.td.d = kaya2020::PRINTED_TABLE_I_ISTE.d3;
     let (x1, y1) = (0.3567 / 0.6302, 0.3546 / 0.6302);
     let e1 = normalized_settings(&errata, Criterion::Iste, x1, y1);
     let e2 = normalized_settings(&errata, Criterion::Iste, 1.0, 1.0);

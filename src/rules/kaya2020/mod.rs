@@ -37,9 +37,12 @@ mod tables;
 pub use reduction::{reduce_to_fopdt_ir, reduce_to_fopdt_ir_with, Reduction, ReductionDetails};
 pub use settings::{
     comparisons, ex2_plant, ex3_plant, example_ipd, scenario, scenario_of, typed_presets,
-    Comparison, COMPARISON_N, EX1, EX1_PERTURBED, EX2_MODEL, EX3_MODEL,
+    COMPARISON_N, EX1, EX1_PERTURBED, EX2_MODEL, EX3_MODEL,
 };
-pub use tables::{FitTable, ERRATA_TABLE_I_ISTE_A2, PRINTED_TABLE_I_ISTE_A2_D3, TABLE_I, TABLE_II};
+pub use tables::{
+    Column, Comparison, Fit, FitTable, PrintedIpd, TableIIsteMisprints, COMPARISONS,
+    ERRATA_TABLE_I_ISTE_A2, PRINTED_IPD, PRINTED_TABLE_I_ISTE, TABLE_I, TABLE_II,
+};
 
 use super::{AnyPreset, MethodInfo, ParamInfo, Params, Rule, Tuning};
 use crate::error::{Error, Result};
@@ -107,11 +110,6 @@ pub const N_MAX_DEFAULT: f64 = 10.0;
 /// Lower bound of the default N (heavier filtering than this leaves almost no derivative).
 pub const N_MIN_DEFAULT: f64 = 0.1;
 
-/// Eqs. (5)-(7): `a + b x + c y + d x² + e x y` with `x = θ/T`, `y = T₀/T`.
-pub fn eq5_7(coef: &[f64; 5], x: f64, y: f64) -> f64 {
-    coef[0] + coef[1] * x + coef[2] * y + coef[3] * x * x + coef[4] * x * y
-}
-
 /// Which table: 1 (θ/T ≤ 1.05) or 2.
 pub fn table_for(theta_over_t: f64) -> usize {
     if theta_over_t <= TABLE_SWITCH {
@@ -128,11 +126,11 @@ pub fn normalized_settings(
     theta_over_t: f64,
     t0_over_t: f64,
 ) -> (f64, f64, f64) {
-    let col = &table[criterion.column()];
+    let col = table.column(criterion);
     (
-        eq5_7(&col[0], theta_over_t, t0_over_t),
-        eq5_7(&col[1], theta_over_t, t0_over_t),
-        eq5_7(&col[2], theta_over_t, t0_over_t),
+        col.kkc.eval(theta_over_t, t0_over_t), // Eq. (5)
+        col.ti.eval(theta_over_t, t0_over_t),  // Eq. (6)
+        col.td.eval(theta_over_t, t0_over_t),  // Eq. (7)
     )
 }
 

@@ -1,7 +1,7 @@
 //! Kaya (2020), Section IV: the examples' plants and scenarios, the literature settings the
 //! paper compares with (Tables III, VI, V), and the presets.
 
-use super::{tune_plant, Criterion, CITATION, METHOD};
+use super::{tune_plant, Comparison, Criterion, CITATION, COMPARISONS, METHOD};
 use crate::error::Result;
 use crate::model::controller::Pid;
 use crate::model::plant::{Family, Plant};
@@ -66,156 +66,14 @@ pub const EX3_MODEL: Family = Family::FopdtIr {
     theta: 3.0,
 };
 
-/// A literature setting quoted by the paper.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Comparison {
-    /// Short key.
-    pub key: &'static str,
-    /// Who.
-    pub who: &'static str,
-    /// Which example (1-3).
-    pub example: usize,
-    /// K_c, T_i, T_d (None: PI).
-    pub kc: f64,
-    /// T_i.
-    pub ti: f64,
-    /// T_d.
-    pub td: Option<f64>,
-    /// Jeng & Lin's λ (their design parameter, quoted in the tables).
-    pub lambda: Option<f64>,
-    /// Where printed.
-    pub table: &'static str,
-    /// Structure note.
-    pub note: &'static str,
+/// The comparison settings (copied from [`COMPARISONS`]).
+pub fn comparisons() -> Vec<Comparison> {
+    COMPARISONS.to_vec()
 }
 
 /// Derivative filter of the comparison PIDs (not stated by the paper; an ideal derivative on
 /// the error would make u impulsive at the set-point step).
 pub const COMPARISON_N: f64 = 10.0;
-
-const NOTE_PI: &str = "PI on the error, K_c(1 + 1/(T_i s)) (Cr = Cy)";
-const NOTE_PID: &str = "PID quoted as (K_c, T_i, T_d) without its structure; mapped as the \
-    ideal PID on the error K_c(1 + 1/(T_i s) + T_d s/(T_d s/10 + 1)) (derivative filter N = 10, \
-    not stated by the paper: an ideal derivative on the error makes u impulsive at a set-point step)";
-const NOTE_JL: &str = "PID quoted as (K_c, T_i, T_d, λ) without its structure; mapped as the \
-    ideal PID on the error K_c(1 + 1/(T_i s) + T_d s/(T_d s/10 + 1)) (derivative filter N = 10, \
-    not stated by the paper); λ is Jeng & Lin's closed-loop design parameter and does not enter the controller as quoted";
-
-/// The comparison settings of Tables III, VI (Example 2) and V (Example 3).
-pub fn comparisons() -> Vec<Comparison> {
-    let c = |key, who, example, kc, ti, td, lambda, table, note| Comparison {
-        key,
-        who,
-        example,
-        kc,
-        ti,
-        td,
-        lambda,
-        table,
-        note,
-    };
-    vec![
-        c(
-            "irshad_ali_iste",
-            "Irshad & Ali PI (ISTE)",
-            1,
-            1.270,
-            0.890,
-            None,
-            None,
-            "Table III",
-            NOTE_PI,
-        ),
-        c(
-            "irshad_ali_ist2e",
-            "Irshad & Ali PI (IST²E)",
-            1,
-            1.003,
-            0.773,
-            None,
-            None,
-            "Table III",
-            NOTE_PI,
-        ),
-        c(
-            "irshad_ali_ist3e",
-            "Irshad & Ali PI (IST³E)",
-            1,
-            0.857,
-            0.718,
-            None,
-            None,
-            "Table III",
-            NOTE_PI,
-        ),
-        c(
-            "irshad_ali",
-            "Irshad & Ali PI",
-            2,
-            0.549,
-            3.512,
-            None,
-            None,
-            "Table VI",
-            NOTE_PI,
-        ),
-        c(
-            "jeng_lin",
-            "Jeng & Lin PID",
-            2,
-            0.826,
-            4.283,
-            Some(1.011),
-            Some(3.3),
-            "Table VI",
-            NOTE_JL,
-        ),
-        c(
-            "chien",
-            "Chien et al. PID",
-            2,
-            0.596,
-            2.706,
-            Some(1.500),
-            None,
-            "Table VI",
-            NOTE_PID,
-        ),
-        c(
-            "irshad_ali",
-            "Irshad & Ali PI",
-            3,
-            0.632,
-            3.112,
-            None,
-            None,
-            "Table V",
-            NOTE_PI,
-        ),
-        c(
-            "jeng_lin",
-            "Jeng & Lin PID",
-            3,
-            0.795,
-            4.038,
-            Some(1.287),
-            Some(3.7),
-            "Table V",
-            NOTE_JL,
-        ),
-        c(
-            "chien",
-            "Chien et al. PID",
-            3,
-            0.831,
-            3.681,
-            Some(1.095),
-            None,
-            "Table V",
-            NOTE_PID,
-        ),
-    ]
-}
 
 impl Comparison {
     /// The controller as (Cr, Cy).
