@@ -134,12 +134,9 @@ fn lag_time_constants(den: &crate::model::poly::Poly) -> Result<Vec<f64>> {
     Ok(out)
 }
 
-/// [`reduce_to_fopdt_ir`] with a chosen rule. Errors name `plant.num`, `plant.den` or
-/// `plant.delay` and say why (complex or unstable pole, LHP zero, several zeros, …).
-pub fn reduce_to_fopdt_ir_with(
-    plant: &Plant,
-    rule: Reduction,
-) -> Result<(Family, ReductionDetails)> {
+/// Checks that `plant` is in the reduction's class as far as its coefficients tell: finite,
+/// non-zero, proper, a numerator of degree ≤ 1, a non-negative delay.
+fn check_plant(plant: &Plant) -> Result<()> {
     let num = &plant.tf.num;
     let den = &plant.tf.den;
     if !num.is_finite() || !den.is_finite() || den.is_zero() {
@@ -165,30 +162,28 @@ pub fn reduce_to_fopdt_ir_with(
     if den.degree() < num.degree() {
         return Err(Error::new("plant.num", "the plant must be proper"));
     }
-    let taus = lag_time_constants(den)?;
-    // Gain and zero: num(s)/den(s) = K(−T₀s + 1)/∏(τᵢs + 1).
-    let k = num.coef(0) / den.coef(0);
-    if !k.is_finite() || k == 0.0 {
-        return Err(Error::new(
-            "plant.num",
-            "the static gain is zero (zero at the origin): no FOPDT-IR model",
-        ));
-    }
-    let t0 = -num.coef(1) / num.coef(0);
-    if t0 < 0.0 {
-        return Err(Error::new(
-            "plant.num",
-            format!(
-                "left-half-plane zero at s = {:.4}: the FOPDT-IR model has a right-half-plane \
-                 zero (inverse response) or none",
-                1.0 / t0
-            ),
-        ));
-    }
+    Ok(())
+}
+
+/// The lags split between T and the dead time.
+struct Lags {
+    /// T.
+    t: f64,
+    /// θ (the plant's own delay included).
+    theta: f64,
+    /// What went into T.
+    retained: Vec<f64>,
+    /// What went into θ.
+    to_delay: Vec<f64>,
+}
+
+/// Splits the time constants `taus` (descending) between T and θ by `rule`; `t0` is T₀ and
+/// `delay` the plant's own dead time.
+fn split_lags(rule: Reduction, taus: &[f64], t0: f64, delay: f64) -> Lags {
     let mut retained = Vec::new();
     let mut to_delay = Vec::new();
     let mut t = 0.0;
-    let mut theta = plant.delay;
+    let mut theta = delay;
     match rule {
         Reduction::Paper => {
             for (i, &tau) in taus.iter().enumerate() {
@@ -233,6 +228,65 @@ pub fn reduce_to_fopdt_ir_with(
             }
         }
     }
+    Lags {
+        t,
+        theta,
+        retained,
+        to_delay,
+    }
+}
+
+impl Reduction {
+    /// The rule in words (`details.note`).
+    pub fn note(self) -> &'static str {
+        match self {
+            Reduction::Paper => {
+                "Seborg et al. [14] first-order Taylor approximations: the largest lags lumped \
+                 ∏(τᵢs+1) ≈ (Στᵢ)s+1 until T ≥ T₀ (T₀/T ≤ 1, inside the fits' range), the others \
+                 1/(τs+1) ≈ e^{−τs}. This is what reproduces the paper's Examples 2 and 3 (the \
+                 paper states only 'Taylor for the smaller poles'; Example 3's (s+1)⁵ needs two \
+                 lags lumped to give its printed T = 2)."
+            }
+            Reduction::Taylor => "Seborg et al. [14]: largest lag kept, all others 1/(τs+1) ≈ e^{−τs}.",
+            Reduction::HalfRule => {
+                "Skogestad's half rule: half of the second-largest lag to T, half to θ, the rest to θ."
+            }
+        }
+    }
+}
+
+pub fn reduce_to_fopdt_ir_with(
+    plant: &Plant,
+    rule: Reduction,
+) -> Result<(Family, ReductionDetails)> {
+    check_plant(plant)?;
+    let (num, den) = (&plant.tf.num, &plant.tf.den);
+    let taus = lag_time_constants(den)?;
+    // Gain and zero: num(s)/den(s) = K(−T₀s + 1)/∏(τᵢs + 1).
+    let k = num.coef(0) / den.coef(0);
+    if !k.is_finite() || k == 0.0 {
+        return Err(Error::new(
+            "plant.num",
+            "the static gain is zero (zero at the origin): no FOPDT-IR model",
+        ));
+    }
+    let t0 = -num.coef(1) / num.coef(0);
+    if t0 < 0.0 {
+        return Err(Error::new(
+            "plant.num",
+            format!(
+                "left-half-plane zero at s = {:.4}: the FOPDT-IR model has a right-half-plane \
+                 zero (inverse response) or none",
+                1.0 / t0
+            ),
+        ));
+    }
+    let Lags {
+        t,
+        theta,
+        retained,
+        to_delay,
+    } = split_lags(rule, &taus, t0, plant.delay);
     let fam = Family::FopdtIr {
         k,
         tau: t,
@@ -240,19 +294,7 @@ pub fn reduce_to_fopdt_ir_with(
         theta,
     };
     fam.validate().map_err(|e| e.within("model"))?;
-    let note = match rule {
-        Reduction::Paper => {
-            "Seborg et al. [14] first-order Taylor approximations: the largest lags lumped \
-             ∏(τᵢs+1) ≈ (Στᵢ)s+1 until T ≥ T₀ (T₀/T ≤ 1, inside the fits' range), the others \
-             1/(τs+1) ≈ e^{−τs}. This is what reproduces the paper's Examples 2 and 3 (the \
-             paper states only 'Taylor for the smaller poles'; Example 3's (s+1)⁵ needs two \
-             lags lumped to give its printed T = 2)."
-        }
-        Reduction::Taylor => "Seborg et al. [14]: largest lag kept, all others 1/(τs+1) ≈ e^{−τs}.",
-        Reduction::HalfRule => {
-            "Skogestad's half rule: half of the second-largest lag to T, half to θ, the rest to θ."
-        }
-    };
+    let note = rule.note();
     let details = ReductionDetails {
         rule: rule.id(),
         k,
