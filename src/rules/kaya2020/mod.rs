@@ -32,6 +32,7 @@
 
 mod reduction;
 mod settings;
+pub mod studies;
 mod tables;
 
 pub use reduction::{reduce_to_fopdt_ir, reduce_to_fopdt_ir_with, Reduction, ReductionDetails};
