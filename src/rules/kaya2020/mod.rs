@@ -29,6 +29,12 @@
 //! **Model reduction** ([`reduce_to_fopdt_ir`]): the paper's reference \[14\] (Seborg et al.),
 //! first-order Taylor approximations of the smaller lags, reproduces the printed models of
 //! Examples 2 and 3.
+//!
+//! **Files.** `mod.rs`: the rule (Eqs. 1-7) behind [`Rule`], its parameter declarations and
+//! typed [`Details`]; `tables.rs`: Tables I-II, the printed I-PD settings and the literature
+//! settings as named data; `reduction.rs`: the model reduction; `settings.rs`: the examples'
+//! plants and scenarios, the literature controllers and the presets; `studies.rs`: the
+//! paper's simulation studies (what `examples/reproduce/kaya2020.rs` formats).
 
 mod reduction;
 mod settings;
@@ -178,8 +184,8 @@ pub fn settings(
     crate::error::positive("plant.tau", tau)?;
     crate::error::non_negative("plant.tau_z", tau_z)?;
     crate::error::non_negative("plant.theta", theta)?;
-    let x = theta / tau;
-    let y = tau_z / tau;
+    let x = theta / tau; // θ/T of Eqs. (5)-(7)
+    let y = tau_z / tau; // T₀/T
     if !(x.is_finite() && y.is_finite()) || x > 1e6 || y > 1e6 {
         return Err(Error::new(
             "plant.tau",
@@ -231,6 +237,7 @@ pub fn settings(
             ),
         ));
     }
+    // Eqs. (5)-(7) are normalized: K·K_c, T_i/T, T_d/T.
     let (kc, ti, td) = (kkc / k, ti_t * tau, td_t * tau);
     if !(kc.is_finite() && ti.is_finite() && td.is_finite()) {
         return Err(Error::new(
@@ -447,6 +454,7 @@ fn ipd_controller(
     theta: f64,
     warnings: &mut Vec<String>,
 ) -> Result<(Controller, f64)> {
+    // Eqs. (3)-(4): G_c1 = K_c/(T_i s) on the error, G_c2 = K_c(1 + T_d s) on the measurement.
     let (kp, ki, kd) = (s.kc, s.kc / s.ti, s.kc * s.td);
     let pid = Pid::ipd(kp, ki, kd);
     if n == 0.0 {
