@@ -46,10 +46,6 @@ fn label(c: &ControllerRun, ex: usize) -> String {
     }
 }
 
-fn umax(r: &SimResult) -> f64 {
-    r.u.iter().fold(0.0f64, |m, u| m.max(u.abs()))
-}
-
 /// One row of a response table: servo IAE, ISTE, overshoot, initial inverse response,
 /// settling time; load IAE, peak error; TV and max |u| over the run.
 fn row(name: &str, r: &Run) -> String {
@@ -75,7 +71,7 @@ fn row(name: &str, r: &Run) -> String {
                 opt(l.map(|m| m.iae), 3),
                 opt(l.map(|m| m.peak_error), 3),
                 f3(s.map_or(0.0, |m| m.tv) + l.map_or(0.0, |m| m.tv)),
-                f3(umax(r)),
+                f3(studies::max_abs_u(r)),
                 esc(ms),
             )
         }
@@ -113,40 +109,26 @@ fn figure_csv(name: &str, rows: &[Row], u: bool) -> String {
     }
 }
 
-/// Checks the paper's qualitative claims on a set of rows (the first is the proposed I-PD):
-/// which controller has the least overshoot, the smallest initial inverse response, the
-/// smallest and the largest max |u|, the smallest servo and load IAE.
-fn claims(rows: &[Row]) -> String {
-    let ok: Vec<(&str, &SimResult)> = rows
-        .iter()
-        .filter_map(|(n, r)| match r {
-            Ok((r, _)) if !r.diverged => Some((n.as_str(), r)),
-            _ => None,
+/// The paper's qualitative claims checked on a set of runs (the first is the proposed I-PD),
+/// named by `labels`: which controller has the least overshoot, the smallest initial inverse
+/// response, the smallest and the largest max |u|, the smallest servo and load IAE.
+fn claims(runs: &[ControllerRun], labels: &[String]) -> String {
+    let c = studies::claims(runs);
+    let name = |b: Option<(usize, f64)>| {
+        b.map_or("–".to_string(), |(i, v)| {
+            format!("{} ({v:.3})", labels[i])
         })
-        .collect();
-    let pick = |f: &dyn Fn(&SimResult) -> f64, largest: bool| {
-        let mut best: Option<(&str, f64)> = None;
-        for (n, r) in &ok {
-            let v = f(r);
-            if v.is_finite() && best.is_none_or(|(_, b)| if largest { v > b } else { v < b }) {
-                best = Some((n, v));
-            }
-        }
-        best.map_or("–".to_string(), |(n, v)| format!("{n} ({v:.3})"))
-    };
-    let servo = |r: &SimResult, f: &dyn Fn(&pidlab::analysis::metrics::Metrics) -> Option<f64>| {
-        r.metrics.servo.as_ref().and_then(f).unwrap_or(f64::NAN)
     };
     format!(
         "Our simulation, controller by controller: least overshoot: {}; smallest initial inverse \
          response: {}; smallest max |u|: {}; largest max |u|: {}; smallest servo IAE: {}; smallest load \
          IAE: {}.\n",
-        pick(&|r| servo(r, &|m| m.overshoot), false),
-        pick(&|r| servo(r, &|m| m.undershoot), false),
-        pick(&|r| umax(r), false),
-        pick(&|r| umax(r), true),
-        pick(&|r| servo(r, &|m| Some(m.iae)), false),
-        pick(&|r| r.metrics.regulatory.as_ref().map_or(f64::NAN, |m| m.iae), false),
+        name(c.least_overshoot),
+        name(c.smallest_inverse_response),
+        name(c.smallest_max_u),
+        name(c.largest_max_u),
+        name(c.smallest_servo_iae),
+        name(c.smallest_load_iae),
     )
 }
 
@@ -359,15 +341,13 @@ fn example1_section(w: &mut String, fig: usize, plant: &pidlab::model::plant::Fa
         if fig == 5 { "; with +20 % the I-PD has less overshoot and a slightly shorter settling time" } else { "" }
     );
     let _ = write!(w, "{HEAD}");
-    let rows: Vec<Row> = studies::example1_study(plant)
-        .unwrap()
-        .iter()
-        .map(|c| (label(c, 1), cell(&c.run)))
-        .collect();
+    let runs = studies::example1_study(plant).unwrap();
+    let rows: Vec<Row> = runs.iter().map(|c| (label(c, 1), cell(&c.run))).collect();
+    let labels: Vec<String> = rows.iter().map(|(l, _)| l.clone()).collect();
     for (label, r) in &rows {
         let _ = write!(w, "{}", row(label, r));
     }
-    let _ = writeln!(w, "\n{}", claims(&rows));
+    let _ = writeln!(w, "\n{}", claims(&runs, &labels));
     let _ = writeln!(
         w,
         "{}",
@@ -392,15 +372,13 @@ fn process_section(w: &mut String, ex: usize) {
         if ex == 3 { "; Irshad & Ali oscillatory" } else { "" }
     );
     let _ = write!(w, "{HEAD}");
-    let rows: Vec<Row> = studies::process_study(ex)
-        .unwrap()
-        .iter()
-        .map(|c| (label(c, ex), cell(&c.run)))
-        .collect();
+    let runs = studies::process_study(ex).unwrap();
+    let rows: Vec<Row> = runs.iter().map(|c| (label(c, ex), cell(&c.run))).collect();
+    let labels: Vec<String> = rows.iter().map(|(l, _)| l.clone()).collect();
     for (label, r) in &rows {
         let _ = write!(w, "{}", row(label, r));
     }
-    let _ = writeln!(w, "\n{}", claims(&rows[1..]));
+    let _ = writeln!(w, "\n{}", claims(&runs[1..], &labels[1..]));
     for (fig, u) in [(2 * ex + 2, false), (2 * ex + 3, true)] {
         let _ = writeln!(
             w,

@@ -389,3 +389,63 @@ pub fn process_study(ex: usize) -> Result<Vec<ControllerRun>> {
     rows.extend(literature_runs(&plant, ex));
     Ok(rows)
 }
+
+/// The largest |u| of a simulation.
+pub fn max_abs_u(r: &SimResult) -> f64 {
+    r.u.iter().fold(0.0f64, |m, u| m.max(u.abs()))
+}
+
+/// The paper's qualitative claims checked on a set of responses: for each, the index of the
+/// best controller in the set and its value (None when no response qualifies). Diverged runs
+/// and errors are left out.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Claims {
+    /// Least servo overshoot.
+    pub least_overshoot: Option<(usize, f64)>,
+    /// Smallest initial inverse response (servo undershoot).
+    pub smallest_inverse_response: Option<(usize, f64)>,
+    /// Smallest max |u|.
+    pub smallest_max_u: Option<(usize, f64)>,
+    /// Largest max |u|.
+    pub largest_max_u: Option<(usize, f64)>,
+    /// Smallest servo IAE.
+    pub smallest_servo_iae: Option<(usize, f64)>,
+    /// Smallest load IAE.
+    pub smallest_load_iae: Option<(usize, f64)>,
+}
+
+/// Which of `rows` is best by each claim of [`Claims`].
+pub fn claims(rows: &[ControllerRun]) -> Claims {
+    let ok: Vec<(usize, &SimResult)> = rows
+        .iter()
+        .enumerate()
+        .filter_map(|(i, r)| match &r.run {
+            Ok(r) if !r.sim.diverged => Some((i, &r.sim)),
+            _ => None,
+        })
+        .collect();
+    let pick = |f: &dyn Fn(&SimResult) -> f64, largest: bool| {
+        let mut best: Option<(usize, f64)> = None;
+        for (i, r) in &ok {
+            let v = f(r);
+            if v.is_finite() && best.is_none_or(|(_, b)| if largest { v > b } else { v < b }) {
+                best = Some((*i, v));
+            }
+        }
+        best
+    };
+    let servo = |r: &SimResult, f: &dyn Fn(&crate::analysis::metrics::Metrics) -> Option<f64>| {
+        r.metrics.servo.as_ref().and_then(f).unwrap_or(f64::NAN)
+    };
+    Claims {
+        least_overshoot: pick(&|r| servo(r, &|m| m.overshoot), false),
+        smallest_inverse_response: pick(&|r| servo(r, &|m| m.undershoot), false),
+        smallest_max_u: pick(&max_abs_u, false),
+        largest_max_u: pick(&max_abs_u, true),
+        smallest_servo_iae: pick(&|r| servo(r, &|m| Some(m.iae)), false),
+        smallest_load_iae: pick(
+            &|r| r.metrics.regulatory.as_ref().map_or(f64::NAN, |m| m.iae),
+            false,
+        ),
+    }
+}
