@@ -570,3 +570,22 @@ fn overflowing_settings_are_refused() {
     let t = tune(&fopdt_ir(1e-6, 1e6, 0.8e6, 0.5e6), Params::default()).unwrap();
     assert!((named(&t, "kc") * 1e-6 - details(&t).kkc).abs() < 1e-12);
 }
+
+/// The printed-results table of the crate (tables.rs, PRINTED_IPD) through the study the report
+/// shows: every proposed I-PD setting of Tables III, VI, V rounds to the printed value.
+#[wasm_bindgen_test(unsupported = test)]
+fn printed_ipd_table_through_the_study() {
+    let rows = kaya2020::studies::printed_settings().unwrap();
+    assert_eq!(rows.len(), kaya2020::PRINTED_IPD.len());
+    for r in rows {
+        let (p, s) = (&r.printed, &r.ours);
+        for (name, ours, printed) in [("kc", s.kc, p.kc), ("ti", s.ti, p.ti), ("td", s.td, p.td)] {
+            assert!(
+                (ours - printed).abs() <= HALF_ULP3,
+                "{} (Example {}): {name} = {ours} vs printed {printed}",
+                p.table,
+                p.example
+            );
+        }
+    }
+}
