@@ -1,11 +1,11 @@
 //! Reproduction section: Kaya (2020), I-PD rules for stable inverse-response processes.
 
 use pidlab::analysis::metrics::Metrics;
+use pidlab::analysis::SimResult;
 use pidlab::rules::kaya2020::studies::{
     self, ControllerRun, DesignLoop, FilterStudy, Stability, Subject,
 };
 use pidlab::rules::kaya2020::{scenario_of, Reduction, EX1, EX1_PERTURBED};
-use pidlab::sim::SimResult;
 use std::fmt::Write;
 
 /// A simulation and its Ms cell, or the error.

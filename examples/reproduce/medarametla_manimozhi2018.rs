@@ -2,11 +2,12 @@
 //! integrating processes (Table 3, Table 1 / Fig. 2, Tables 4-5, Example 6's CSTR).
 
 use pidlab::analysis::metrics::Metrics;
+use pidlab::analysis::simulate;
 use pidlab::model::controller::Controller;
 use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::medarametla_manimozhi2018 as mm;
 use pidlab::rules::medarametla_manimozhi2018::cstr::{self, CstrParams, CstrScenario};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 fn f4(x: f64) -> String {

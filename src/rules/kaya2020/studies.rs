@@ -9,12 +9,13 @@ use super::{
     ERRATA_TABLE_I_ISTE_A2, EX1, EX2_MODEL, EX3_MODEL, PRINTED_IPD, PRINTED_TABLE_I_ISTE, TABLE_I,
 };
 use crate::analysis::freq::analyze;
+use crate::analysis::{simulate, SimResult};
 use crate::error::Result;
 use crate::model::controller::Controller;
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use crate::model::tf::Tf;
-use crate::sim::{simulate, Scenario, SimResult};
+use crate::sim::Scenario;
 
 /// 3/3 Padé approximation of e^{−θs} (the paper's design model of the delay).
 pub fn pade33(theta: f64) -> Tf {
