@@ -6,7 +6,7 @@ use pidlab::rules::kaya2020::{
     self, default_n, normalized_settings, reduce_to_fopdt_ir, reduce_to_fopdt_ir_with, settings,
     Criterion, Reduction, EX1, EX2_MODEL, EX3_MODEL, TABLE_I,
 };
-use pidlab::rules::Params;
+use pidlab::rules::{Design, Params, Tuning};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 /// Printed values carry three decimals: a computed value reproduces the print when it rounds
@@ -23,21 +23,20 @@ fn fopdt_ir(k: f64, tau: f64, tau_z: f64, theta: f64) -> Plant {
     .plant()
 }
 
-fn tune(plant: &Plant, params: Params) -> pidlab::Result<pidlab::rules::Tuning> {
+fn tune(plant: &Plant, params: Params) -> pidlab::Result<Tuning> {
     pidlab::rules::tune("kaya", plant, &params)
 }
 
-fn named(t: &impl pidlab::api::ToTuning, k: &str) -> f64 {
-    pidlab::api::tuning_json(&t)["named"][k].as_f64().unwrap()
+fn named(t: &Tuning, k: &str) -> f64 {
+    t.named(k).unwrap()
 }
 
-fn warnings(t: &impl pidlab::api::ToTuning) -> Vec<String> {
-    pidlab::api::tuning_json(&t)["details"]["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|w| w.as_str().unwrap().to_string())
-        .collect()
+fn details(t: &Tuning) -> &kaya2020::Details {
+    kaya2020::Details::of(t).unwrap()
+}
+
+fn warnings(t: &Tuning) -> Vec<String> {
+    details(t).warnings.clone()
 }
 
 /// Table III (Example 1, proposed I-PD), rows K_c, T_i, T_d per criterion; Table VI
@@ -101,14 +100,14 @@ fn printed_ratios_and_table_choice() {
 #[wasm_bindgen_test(unsupported = test)]
 fn table_i_iste_erratum() {
     let mut printed = TABLE_I;
-    printed[0][1][0] = kaya2020::PRINTED_TABLE_I_ISTE_A2_D3.0;
-    printed[0][2][3] = kaya2020::PRINTED_TABLE_I_ISTE_A2_D3.1;
+    printed.iste.ti.a = kaya2020::PRINTED_TABLE_I_ISTE.a2;
+    printed.iste.td.d = kaya2020::PRINTED_TABLE_I_ISTE.d3;
     let (x1, y1) = (0.3567 / 0.6302, 0.3546 / 0.6302);
     let (_, ti_t, td_t) = normalized_settings(&printed, Criterion::Iste, x1, y1);
     assert!((ti_t * 0.6302 - 0.587).abs() > 0.05);
     assert!((td_t * 0.6302 - 0.069).abs() > 0.02);
     let mut errata = TABLE_I;
-    errata[0][1][0] = kaya2020::ERRATA_TABLE_I_ISTE_A2;
+    errata.iste.ti.a = kaya2020::ERRATA_TABLE_I_ISTE_A2;
     let (_, ti_t, _) = normalized_settings(&errata, Criterion::Iste, 1.0, 1.0);
     assert!((ti_t * 2.0 - 2.4993).abs() < 1e-9);
     assert!((ti_t * 2.0 - 2.501).abs() > HALF_ULP3);
@@ -146,7 +145,7 @@ fn reduction_reproduces_printed_models() {
         for i in 0..4 {
             assert!((a[i] - b[i]).abs() < 1e-9, "{name}: {a:?} vs printed {b:?}");
         }
-        assert_eq!(d["rule"], "paper");
+        assert_eq!(d.rule, "paper");
     }
     // Example 2's plant given the JS way (descending arrays), via the rule directly: the same
     // settings as the printed model (Table VI).
@@ -154,9 +153,10 @@ fn reduction_reproduces_printed_models() {
     let t = kaya2020::tune_plant(&p, &Params::default()).unwrap();
     assert!((named(&t, "ti") - 2.501).abs() <= HALF_ULP3);
     assert_eq!(
-        pidlab::api::tuning_json(&t)["details"]["reduction"]["theta_over_t"]
-            .as_f64()
-            .map(|x| (x - 1.0).abs() < 1e-9),
+        details(&t)
+            .reduction
+            .as_ref()
+            .map(|r| (r.theta_over_t - 1.0).abs() < 1e-9),
         Some(true)
     );
 }
@@ -242,9 +242,7 @@ fn ipd_mapping_and_filter() {
         assert!((t.controller.cr.eval(s) - cr).abs() < 1e-12 * (1.0 + cr.abs()));
         assert!((t.controller.cy.eval(s) - cy).abs() < 1e-12 * (1.0 + cy.abs()));
     }
-    let hf = pidlab::api::tuning_json(&t)["details"]["derivative_filter"]["hf_loop_gain"]
-        .as_f64()
-        .unwrap();
+    let hf = details(&t).derivative_filter.hf_loop_gain.unwrap();
     assert!((hf - kc * 3.0 * 0.5848 * 0.3546 / 0.6302).abs() < 1e-12);
     let ideal = tune(&EX1.plant(), Params::default().with("n", 0.0)).unwrap();
     assert_eq!(ideal.controller.cy.relative_degree(), -1);
@@ -257,10 +255,10 @@ fn default_filter() {
     for fam in [EX1, EX2_MODEL, EX3_MODEL] {
         let t = tune(&fam.plant(), Params::default()).unwrap();
         let n = named(&t, "n");
-        let s = pidlab::api::tuning_json(&t)["details"].clone();
-        let g = s["kkc"].as_f64().unwrap() * s["t0_over_t"].as_f64().unwrap();
+        let s = details(&t);
+        let g = s.kkc * s.t0_over_t;
         assert!(n > 0.0 && n <= 10.0);
-        let hf = s["derivative_filter"]["hf_loop_gain"].as_f64().unwrap();
+        let hf = s.derivative_filter.hf_loop_gain.unwrap();
         assert!((hf - g * (1.0 + n)).abs() < 1e-12);
         assert!(
             hf <= 0.5 + 1e-12 && (n == 10.0 || (hf - 0.5).abs() < 1e-12),
@@ -350,20 +348,23 @@ fn random_plants_finite_or_clear_error() {
 /// and the comparison settings are those of Tables III, VI, V.
 #[wasm_bindgen_test(unsupported = test)]
 fn presets_complete() {
-    let v = kaya2020::legacy_presets();
+    let v = kaya2020::typed_presets();
     let mut ids: Vec<&str> = v.iter().map(|p| p.id.as_str()).collect();
     ids.sort();
     let n = ids.len();
     ids.dedup();
     assert_eq!(ids.len(), n);
-    assert_eq!(v.iter().filter(|p| p.tune.is_null()).count(), 10); // 9 comparisons + Fig. 5
+    let literal = |p: &pidlab::rules::Preset| matches!(p.design, Design::Controller(_));
+    assert_eq!(v.iter().filter(|p| literal(p)).count(), 10); // 9 comparisons + Fig. 5
     for p in &v {
-        assert!(p.tune.is_object() || p.controller.is_object(), "{}", p.id);
-        assert!(p.scenario["disturbance"]["time"].as_f64().unwrap() > 0.0);
+        if let Design::Rule { method, .. } = &p.design {
+            assert_eq!(method, "kaya", "{}", p.id);
+        }
+        assert!(p.scenario.disturbance.time > 0.0);
     }
     let jl = v.iter().find(|p| p.id == "kaya2020/ex3/jeng_lin").unwrap();
     assert!(jl.description.contains("1.287") && jl.description.contains("3.7"));
-    let m = kaya2020::methods();
+    let m: Vec<_> = kaya2020::rules().iter().map(|r| r.info()).collect();
     assert_eq!(m.len(), 1);
     assert_eq!(
         (m[0].id.as_str(), m[0].families.as_slice()),
@@ -400,9 +401,7 @@ fn default_filter_stable_and_close_to_design_loop() {
     use pidlab::sim::Scenario;
     let t = tune(&EX1.plant(), Params::default()).unwrap();
     let a = pidlab::analysis::freq::analyze(&EX1.plant(), &t.controller).unwrap();
-    let hf = pidlab::api::tuning_json(&t)["details"]["derivative_filter"]["hf_loop_gain"]
-        .as_f64()
-        .unwrap();
+    let hf = details(&t).derivative_filter.hf_loop_gain.unwrap();
     assert!(a.stable, "{}", a.verdict);
     assert!((a.l_inf - hf).abs() < 1e-9 && (hf - 0.5).abs() < 1e-12);
     let ms = a.ms.unwrap();
@@ -467,36 +466,44 @@ fn examples_2_3_least_overshoot() {
     }
 }
 
-/// Every preset goes through the JSON API as the page uses it: `tune` with the preset's plant
-/// (or, for Examples 2-3, the design model in `tune.plant`) and `simulate` of the resulting or
-/// literal controller on the preset's plant and scenario, without divergence.
+/// Every preset goes through the JSON API as the page uses it: `presets()`, then `tune` with
+/// the preset's plant (for Examples 2-3 the higher-order process, which the rule reduces to the
+/// printed model) and `simulate` of the resulting or literal controller on the preset's plant
+/// and scenario, without divergence.
 #[wasm_bindgen_test(unsupported = test)]
 fn presets_through_the_json_api() {
     use serde_json::json;
-    for p in kaya2020::legacy_presets() {
-        let controller = if p.tune.is_object() {
-            let design_plant = p.tune.get("plant").cloned().unwrap_or(p.plant.clone());
+    let all = pidlab::api::presets();
+    let ours: Vec<_> = all["presets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|p| p["id"].as_str().unwrap().starts_with("kaya2020/"))
+        .collect();
+    assert_eq!(ours.len(), kaya2020::typed_presets().len());
+    for p in ours {
+        let controller = if p["tune"].is_object() {
             let out = pidlab::api::tune(&json!({
-                "method": p.tune["method"],
-                "plant": design_plant,
-                "params": p.tune["params"],
+                "method": p["tune"]["method"],
+                "plant": p["plant"],
+                "params": p["tune"]["params"],
             }))
-            .unwrap_or_else(|e| panic!("{}: {e}", p.id));
+            .unwrap_or_else(|e| panic!("{}: {e}", p["id"]));
             out["controller"].clone()
         } else {
-            p.controller.clone()
+            p["controller"].clone()
         };
         let sim = pidlab::api::simulate(&json!({
-            "plant": p.plant,
+            "plant": p["plant"],
             "controller": controller,
-            "scenario": p.scenario,
+            "scenario": p["scenario"],
         }))
-        .unwrap_or_else(|e| panic!("{}: {e}", p.id));
-        assert_eq!(sim["diverged"], json!(false), "{}", p.id);
+        .unwrap_or_else(|e| panic!("{}: {e}", p["id"]));
+        assert_eq!(sim["diverged"], json!(false), "{}", p["id"]);
         assert!(
             sim["metrics"]["servo"]["iae"].as_f64().unwrap() > 0.0,
             "{}",
-            p.id
+            p["id"]
         );
     }
 }
@@ -539,7 +546,7 @@ fn reduction_random_plants() {
             (v[1] + v[3] - th0 - sum).abs() < 1e-8 * (1.0 + sum),
             "{taus:?}: {v:?}"
         );
-        let all_lumped = d["moved_to_delay"].as_array().unwrap().is_empty();
+        let all_lumped = d.moved_to_delay.is_empty();
         assert!(all_lumped || v[1] >= t0 - tol, "{taus:?}, T₀ {t0}: {v:?}");
     }
     for _ in 0..300 {
@@ -563,12 +570,24 @@ fn overflowing_settings_are_refused() {
     let e = tune(&fopdt_ir(1e-310, 1.0, 0.8, 0.5), Params::default()).unwrap_err();
     assert_eq!(e.path, "plant.k", "{e}");
     let t = tune(&fopdt_ir(1e-6, 1e6, 0.8e6, 0.5e6), Params::default()).unwrap();
-    assert!(
-        (named(&t, "kc") * 1e-6
-            - pidlab::api::tuning_json(&t)["details"]["kkc"]
-                .as_f64()
-                .unwrap())
-        .abs()
-            < 1e-12
-    );
+    assert!((named(&t, "kc") * 1e-6 - details(&t).kkc).abs() < 1e-12);
+}
+
+/// The printed-results table of the crate (tables.rs, PRINTED_IPD) through the study the report
+/// shows: every proposed I-PD setting of Tables III, VI, V rounds to the printed value.
+#[wasm_bindgen_test(unsupported = test)]
+fn printed_ipd_table_through_the_study() {
+    let rows = kaya2020::studies::printed_settings().unwrap();
+    assert_eq!(rows.len(), kaya2020::PRINTED_IPD.len());
+    for r in rows {
+        let (p, s) = (&r.printed, &r.ours);
+        for (name, ours, printed) in [("kc", s.kc, p.kc), ("ti", s.ti, p.ti), ("td", s.td, p.td)] {
+            assert!(
+                (ours - printed).abs() <= HALF_ULP3,
+                "{} (Example {}): {name} = {ours} vs printed {printed}",
+                p.table,
+                p.example
+            );
+        }
+    }
 }

@@ -237,9 +237,11 @@ pub fn reduce(input: &Value) -> Result<Value> {
         })?,
     };
     let (fam, details) = reduce_to_fopdt_ir_with(&plant, rule)?;
-    Ok(
-        json!({ "model": plant_json(&fam.plant()), "rule": rule.id(), "details": Value::Object(details) }),
-    )
+    Ok(json!({
+        "model": plant_json(&fam.plant()),
+        "rule": rule.id(),
+        "details": serde_json::to_value(&details).unwrap_or(Value::Null),
+    }))
 }
 
 /// `simulate({plant, controller, scenario})` of API.md.

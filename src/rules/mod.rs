@@ -118,6 +118,8 @@ pub enum Details {
     ShamsuzzohaLee2008(Box<shamsuzzoha_lee2008::Details>),
     /// Praveen Kumar & Narayana.
     PraveenKumarNarayana(Box<praveen_kumar_narayana::Details>),
+    /// Kaya (2020).
+    Kaya2020(Box<kaya2020::Details>),
 }
 
 /// How a preset designs its controller.
