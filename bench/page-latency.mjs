@@ -216,9 +216,11 @@ async function drag(page, sl, count, warm) {
         ch.port2.postMessage(0);
       });
     });
-    return { min: Number(x.min), max: Number(x.max), x: b.x, y: b.y + b.height / 2, w: b.width };
+    return { min: Number(x.min), max: Number(x.max), log: x.dataset.scale === 'log', lo: Number(x.dataset.lo), hi: Number(x.dataset.hi), x: b.x, y: b.y + b.height / 2, w: b.width };
   }, sl.sel);
-  const px = (v) => Math.round(g.x + 8 + ((g.w - 16) * (v - g.min)) / (g.max - g.min));
+  // where v sits along the track (a logarithmic slider's position is log-spaced)
+  const frac = (v) => (g.log ? Math.log(v / g.lo) / Math.log(g.hi / g.lo) : (v - g.min) / (g.max - g.min));
+  const px = (v) => Math.round(g.x + 8 + (g.w - 16) * frac(v));
   const a = px(sl.range[0]);
   const b = Math.max(a + 2, px(sl.range[1]));
   await page.mouse.move(a, g.y);

@@ -8,15 +8,40 @@ import { store, changed, rebuild, familyInfo, methodInfo } from './store.js';
 
 const ids = { next: 0 };
 
-/** A labelled slider with a number box; `key` identifies it for embed mode. */
+/** Positions of a logarithmic slider across its range. */
+const LOG_POSITIONS = 1000;
+
+/** A range input over [lo, hi] on a logarithmic scale (for a parameter whose accepted range
+ *  covers decades, e.g. λ ∈ [1e-6, 1e6]): its position runs over 0..LOG_POSITIONS, and its
+ *  `value` property reads and writes the parameter itself (so every caller, the page's own
+ *  listeners and the tests alike, sees the parameter, never the position). */
+function logRange(rid, lo, hi, value, disabled) {
+  const range = el('input', { type: 'range', id: rid, min: 0, max: LOG_POSITIONS, step: 1, disabled, 'data-scale': 'log', 'data-lo': lo, 'data-hi': hi });
+  const native = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value');
+  const l0 = Math.log10(lo);
+  const l1 = Math.log10(hi);
+  const toPos = (v) => Math.round(((Math.log10(Math.min(hi, Math.max(lo, v))) - l0) / (l1 - l0)) * LOG_POSITIONS);
+  // 4 significant digits: a position step is 10^((l1 - l0)/1000), under 3 % for 12 decades
+  const fromPos = (p) => Number((10 ** (l0 + (p / LOG_POSITIONS) * (l1 - l0))).toPrecision(4));
+  Object.defineProperty(range, 'value', {
+    get() { return String(fromPos(Number(native.get.call(this)))); },
+    set(v) { native.set.call(this, String(toPos(Number(v)))); },
+  });
+  range.value = String(value);
+  return range;
+}
+
+/** A labelled slider with a number box; `key` identifies it for embed mode. A range that
+ *  covers three decades or more (min > 0) is logarithmic. */
 export function slider({ id, key, label, unit, min, max, step, value, onInput, disabled }) {
   const rid = id || 'sl' + ids.next++;
-  if (value < min) min = value;
-  if (value > max) max = Math.abs(value) * 2 || max;
+  const log = !step && min > 0 && max / min >= 1e3;
+  if (!log && value < min) min = value;
+  if (!log && value > max) max = Math.abs(value) * 2 || max;
   const st = step || niceStep(min, max);
   // Align the range's origin to the step so round values (λ = 2.7) are reachable exactly.
-  if (!step) min = Math.floor(min / Number(st)) * Number(st);
-  const range = el('input', { type: 'range', id: rid, min, max, step: st, value, disabled });
+  if (!step && !log) min = Math.floor(min / Number(st)) * Number(st);
+  const range = log ? logRange(rid, min, max, value, disabled) : el('input', { type: 'range', id: rid, min, max, step: st, value, disabled });
   const num = el('input', { type: 'number', id: rid + '-n', step: 'any', value: String(value), disabled, 'aria-label': label + (unit ? ' (' + unit + ')' : '') + ', exact value' });
   const lab = el('label', { for: rid }, label, unit ? el('span', { class: 'unit', text: ' [' + unit + ']' }) : null);
   range.addEventListener('input', () => {
@@ -27,8 +52,8 @@ export function slider({ id, key, label, unit, min, max, step, value, onInput, d
   num.addEventListener('input', () => {
     const v = Number(num.value);
     if (num.value.trim() === '' || !Number.isFinite(v)) return;
-    if (v > Number(range.max)) range.max = String(Math.abs(v) * 2 || 1);
-    if (v < Number(range.min)) range.min = String(v);
+    if (!log && v > Number(range.max)) range.max = String(Math.abs(v) * 2 || 1);
+    if (!log && v < Number(range.min)) range.min = String(v);
     range.value = String(v);
     onInput(v);
   });
@@ -37,8 +62,8 @@ export function slider({ id, key, label, unit, min, max, step, value, onInput, d
   });
   const row = el('div', { class: 'row', 'data-key': key || rid }, lab, el('div', { class: 'pair' }, range, num));
   row.setValue = (v) => {
-    if (v > Number(range.max)) range.max = String(Math.abs(v) * 2 || 1);
-    if (v < Number(range.min)) range.min = String(v);
+    if (!log && v > Number(range.max)) range.max = String(Math.abs(v) * 2 || 1);
+    if (!log && v < Number(range.min)) range.min = String(v);
     range.value = String(v);
     num.value = String(Number(v.toPrecision(6)));
   };

@@ -367,9 +367,11 @@ test('input-to-paint latency of the λ slider', async () => {
         ch.port2.postMessage(0);
       });
     });
-    return { min: Number(x.min), max: Number(x.max), x: b.x, y: b.y + b.height / 2, w: b.width };
+    return { min: Number(x.min), max: Number(x.max), log: x.dataset.scale === 'log', lo: Number(x.dataset.lo), hi: Number(x.dataset.hi), x: b.x, y: b.y + b.height / 2, w: b.width };
   });
-  const px = (v) => Math.round(g.x + 8 + ((g.w - 16) * (v - g.min)) / (g.max - g.min));
+  // where λ = v sits along the track (a logarithmic slider's position is log-spaced)
+  const frac = (v) => (g.log ? Math.log(v / g.lo) / Math.log(g.hi / g.lo) : (v - g.min) / (g.max - g.min));
+  const px = (v) => Math.round(g.x + 8 + (g.w - 16) * frac(v));
   const [a, b] = [px(0.5), Math.max(px(0.5) + 2, px(1.9))];
   await page.mouse.move(a, g.y);
   await page.mouse.down();
@@ -413,4 +415,25 @@ test('screenshots (target/screenshots/: 1280 and 360 px wide)', async () => {
   await small.page.screenshot({ path: join(shots, 'pidlab-360.png'), fullPage: true });
   assert.ok(overflow <= 0, `no horizontal scrolling at 360 px (overflow ${overflow} px)`);
   await small.page.close();
+});
+
+test('a parameter whose accepted range covers decades has a logarithmic slider', async () => {
+  // praveen_kumar accepts λ ∈ [1e-6, 1e6] (methods()); a linear slider over it would put the
+  // useful λ (0.2–2 on the boiler) in its first position
+  const { page } = await open(U.encodeHash(boilerPk(1.0)));
+  const g = await page.evaluate(() => {
+    const x = document.getElementById('mp-lambda');
+    const native = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value').get.call(x);
+    return { scale: x.dataset.scale, lo: Number(x.dataset.lo), hi: Number(x.dataset.hi), max: Number(x.max), position: Number(native), value: Number(x.value) };
+  });
+  assert.equal(g.scale, 'log');
+  const info = await page.evaluate(() => window.__pidlab.wasm.methods().methods.find((m) => m.id === 'praveen_kumar').params.find((p) => p.name === 'lambda'));
+  assert.deepEqual([g.lo, g.hi], [info.min, info.max], 'the slider spans the declared range');
+  assert.equal(g.position, Math.round((Math.log10(1.0) - Math.log10(g.lo)) / (Math.log10(g.hi) - Math.log10(g.lo)) * g.max));
+  assert.equal(g.value, 1, 'the slider reads as λ itself');
+  // a typed λ lands the thumb on its log position and is tuned exactly as typed
+  await setInput(page, '#mp-lambda-n', 1.9);
+  assert.equal(Number(await page.inputValue('#mp-lambda-n')), 1.9);
+  assert.equal(await page.evaluate(() => window.__pidlab.state().params.lambda), 1.9);
+  await page.close();
 });
