@@ -102,8 +102,9 @@ test('moving the λ slider sets the Ms readout to exactly what analyze returns',
   const seen = new Set();
   for (const lam of [0.5, 0.8, 1.2, 1.6, 1.9]) {
     await setInput(page, '#mp-lambda', lam);
-    // The slider's own value (a range input snaps to its step) is what the page tuned with.
-    const l = Number(await page.inputValue('#mp-lambda'));
+    // The slider snaps λ to its position (a logarithmic one to 4 digits); the number box beside
+    // it shows the λ the page tuned with.
+    const l = Number(await page.inputValue('#mp-lambda-n'));
     assert.ok(Math.abs(l - lam) < 0.05, `slider at ${l} for ${lam}`);
     const got = await page.evaluate(([l, lam]) => {
       const w = window.__pidlab.wasm;

@@ -67,13 +67,13 @@ async function trapAndRecover(page, log) {
 
   // The next slider move runs on the new instance: correct numbers, no banner.
   await setInput(page, '#mp-lambda', 1.6);
-  const after = await msNow(page, Number(await page.inputValue('#mp-lambda')));
+  const after = await msNow(page, Number(await page.inputValue('#mp-lambda-n')));
   assert.equal(after.value, String(after.ms), 'Ms readout after the restart = a fresh analyze');
   assert.equal(after.text, after.fmt);
   assert.deepEqual(await banners(page), []);
   // The input that trapped was not memoized as a failure: it computes now.
   await setInput(page, '#mp-lambda', 1.3);
-  const again = await msNow(page, Number(await page.inputValue('#mp-lambda')));
+  const again = await msNow(page, Number(await page.inputValue('#mp-lambda-n')));
   assert.equal(again.value, String(again.ms), 'the λ that trapped computes on the new instance');
   assert.notEqual(again.value, after.value);
   assert.equal(await page.evaluate(() => window.__pidlabTest.generation()), 2, 'no further restart');
