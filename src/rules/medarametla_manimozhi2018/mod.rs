@@ -65,17 +65,17 @@
 //!   Example 4, printed 1.07). That fit has no z argument: it was made for one z/τ which the
 //!   paper does not state, so its use always adds a warning.
 
-use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
+use super::{Design as PresetDesign, MethodInfo, ParamInfo, Params, Preset, Tuning};
 pub mod cstr;
 
-use crate::api::{controller_json, family_json, plant_json};
 use crate::error::{Error, Result};
 use crate::model::controller::{Controller, ModelLoop, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use crate::model::tf::Tf;
+use crate::sim::Scenario;
 use nalgebra::{DMatrix, DVector};
-use serde_json::{json, Map, Value};
+use serde::Serialize;
 
 /// Method id (API.md).
 pub const ID: &str = "medarametla";
@@ -683,162 +683,270 @@ pub fn lambda_fit(family: &Family, ms: f64) -> Result<(f64, Vec<String>)> {
 // Registry interface
 // ---------------------------------------------------------------------------------------
 
-/// Methods of this paper.
-pub fn methods() -> Vec<MethodInfo> {
-    vec![MethodInfo {
+/// The parameter declarations of the method: the registry validates calls against them and
+/// `methods()` lists them.
+pub fn params_info() -> Vec<ParamInfo> {
+    vec![
+        ParamInfo::number("lambda", "λ (closed-loop time constant)", None, 1e-3, 1e3)
+            .unit("time")
+            .help("required unless target_ms or fit_ms is given"),
+        ParamInfo::number("p", "p (set-point filter time constant)", None, 1e-3, 1e3)
+            .unit("time")
+            .help("default θ; the paper tunes p between 0.5θ and 3θ"),
+        ParamInfo::number("p_order", "n in F₂ = 1/(ps+1)ⁿ", Some(2.0), 2.0, 3.0)
+            .help("2 as printed (Eqs. 34-38); 3 reproduces the paper's simulated Examples 2, 3, 5"),
+        ParamInfo::number(
+            "target_ms",
+            "target Ms (λ solved exactly)",
+            None,
+            1.05,
+            10.0,
+        )
+        .help("λ is solved so that the true Ms (exact delay) equals this value"),
+        ParamInfo::number("fit_ms", "Ms for the Table 1 fit", None, 1.05, 10.0)
+            .help("λ from the paper's Table 1 fit for this Ms (warns outside its ranges)"),
+    ]
+}
+
+/// What `methods()` lists for the method.
+pub fn method_info() -> MethodInfo {
+    MethodInfo {
         id: ID.into(),
         title: "Medarametla & Manimozhi 2018: PID × second-order filter by pole placement, set-point filter".into(),
         citation: CITATION.into(),
         families: FAMILIES.iter().map(|f| f.to_string()).collect(),
         structure: "1-DOF PID × (a₁s+1)²/(b₂s²+b₁s+1) (PIPTD: /(b₁s+1)²) on the error, set-point filter F (Eqs. 35, 37, 38)".into(),
-        params: vec![
-            ParamInfo::number("lambda", "λ (closed-loop time constant)", None, 0.01, 100.0)
-                .help("required unless target_ms or fit_ms is given"),
-            ParamInfo::number("p", "p (set-point filter time constant)", None, 0.01, 100.0)
-                .help("default θ; the paper tunes p between 0.5θ and 3θ"),
-            ParamInfo::number("p_order", "n in F₂ = 1/(ps+1)ⁿ", Some(2.0), 2.0, 3.0).help(
-                "2 as printed (Eqs. 34-38); 3 reproduces the paper's simulated Examples 2, 3, 5",
-            ),
-            ParamInfo::number("target_ms", "target Ms (λ solved exactly)", None, 1.05, 10.0)
-                .help("λ is solved so that the true Ms (exact delay) equals this value"),
-            ParamInfo::number("fit_ms", "Ms for the Table 1 fit", None, 1.05, 10.0)
-                .help("λ from the paper's Table 1 fit for this Ms (warns outside its ranges)"),
-        ],
-    }]
-}
-
-fn named_and_details(d: &Design, p: f64, order: u32) -> (Map<String, Value>, Map<String, Value>) {
-    let mut named = Map::new();
-    named.insert("kp".into(), json!(d.kp));
-    named.insert("ki".into(), json!(d.ki));
-    named.insert("kd".into(), json!(d.kd));
-    named.insert("a1".into(), json!(d.a1));
-    named.insert("b1".into(), json!(d.b1));
-    if !d.square_filter {
-        named.insert("b2".into(), json!(d.b2));
+        params: params_info(),
     }
-    named.insert("p".into(), json!(p));
-    named.insert("lambda".into(), json!(d.lambda));
-    let mut det = Map::new();
-    det.insert("lambda".into(), json!(d.lambda));
-    det.insert("target".into(), json!(d.target_kind.label()));
-    det.insert("target_desc".into(), json!(d.target.to_desc()));
-    det.insert("laguerre_ce_desc".into(), json!(d.laguerre_ce().to_desc()));
-    det.insert(
-        "filter".into(),
-        json!(if d.square_filter {
-            "(a1 s + 1)^2 / (b1 s + 1)^2 (Eq. 4a)"
-        } else {
-            "(a1 s + 1)^2 / (b2 s^2 + b1 s + 1) (Eq. 5a)"
-        }),
-    );
-    let sp = d.setpoint_filter_order(p, order);
-    det.insert("p_order".into(), json!(order));
-    det.insert(
-        "setpoint_filter".into(),
-        json!({"num": sp.num.to_desc(), "den": sp.den.to_desc()}),
-    );
-    det.insert(
-        "approximation".into(),
-        json!(
-            "design only: e^{-θs} ≈ (1 − θs/4)²/(1 + θs/4)² (Eq. 10, second-order Laguerre shift)"
-        ),
-    );
-    (named, det)
 }
 
-/// The full tuning for a family (λ given, or from `target_ms`/`fit_ms`).
-pub fn tune_family(family: &Family, params: &Params) -> Result<Tuning> {
-    check_family(family)?;
-    let th = family.theta();
-    let p = match params.opt_f64("p")? {
-        Some(p) if p > 0.0 => p,
-        Some(p) => return Err(Error::new("params.p", format!("must be > 0 (got {p})"))),
-        None => th,
+/// Methods of this paper.
+pub fn methods() -> Vec<MethodInfo> {
+    vec![method_info()]
+}
+
+/// A transfer function as descending coefficient lists.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DescTf {
+    /// Numerator, descending powers.
+    pub num: Vec<f64>,
+    /// Denominator, descending powers.
+    pub den: Vec<f64>,
+}
+
+impl From<&Tf> for DescTf {
+    fn from(t: &Tf) -> DescTf {
+        DescTf {
+            num: t.num.to_desc(),
+            den: t.den.to_desc(),
+        }
+    }
+}
+
+/// Eq. (14), the printed PIPTD closed form, reported beside the solve for PIPTD plants.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Eq14 {
+    /// Proportional gain.
+    pub kp: f64,
+    /// Integral gain.
+    pub ki: f64,
+    /// Derivative gain.
+    pub kd: f64,
+    /// Filter b₁.
+    pub b1: f64,
+}
+
+/// Where λ came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LambdaSource {
+    /// `params.lambda`.
+    Given,
+    /// Solved for `params.target_ms`.
+    TargetMs,
+    /// Table 1's fit for `params.fit_ms`.
+    FitMs,
+}
+
+/// The details of a Medarametla & Manimozhi tuning.
+#[derive(Debug, Clone, Serialize)]
+pub struct Details {
+    /// λ used.
+    pub lambda: f64,
+    /// The target of Eqs. (13), (21), (29) or (31), in words.
+    pub target: String,
+    /// The target polynomial `T(s)`, descending.
+    pub target_desc: Vec<f64>,
+    /// The Laguerre characteristic polynomial (Eqs. 11, 19, 27), descending.
+    pub laguerre_ce_desc: Vec<f64>,
+    /// The controller filter (Eq. 4a or 5a), in words.
+    pub filter: String,
+    /// n of `F₂ = 1/(ps+1)ⁿ`.
+    pub p_order: u32,
+    /// The set-point filter F (Eqs. 35, 37, 38).
+    pub setpoint_filter: DescTf,
+    /// The approximation used inside the design (Eq. 10).
+    pub approximation: String,
+    /// Where λ came from.
+    pub lambda_source: LambdaSource,
+    /// λ of the Table 1 fit, when `fit_ms` was given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lambda_fit: Option<f64>,
+    /// The Ms asked for, when `target_ms` was given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target_ms: Option<f64>,
+    /// Eq. (14)'s closed form (PIPTD only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub eq14_closed_form: Option<Eq14>,
+    /// The exact-delay frequency analysis of the design.
+    #[serde(flatten)]
+    pub check: super::DesignCheck,
+    /// Fits used outside their ranges, conflicting parameters.
+    pub warnings: Vec<String>,
+}
+
+/// The named parameters of a design: `kp, ki, kd, a1, b1, (b2), p, lambda`.
+fn named(d: &Design, p: f64) -> Vec<(String, f64)> {
+    let mut v = vec![
+        ("kp", d.kp),
+        ("ki", d.ki),
+        ("kd", d.kd),
+        ("a1", d.a1),
+        ("b1", d.b1),
+    ];
+    if !d.square_filter {
+        v.push(("b2", d.b2));
+    }
+    v.push(("p", p));
+    v.push(("lambda", d.lambda));
+    v.into_iter().map(|(n, x)| (n.to_string(), x)).collect()
+}
+
+/// λ and where it came from: `target_ms` (solved exactly), else `lambda`, else the Table 1
+/// fit for `fit_ms`; the fit's λ (when `fit_ms` is given) and warnings beside.
+fn choose_lambda(
+    family: &Family,
+    params: &Params,
+    decl: &[ParamInfo],
+) -> Result<(f64, LambdaSource, Option<f64>, Vec<String>)> {
+    let number = |name: &str| -> Result<Option<f64>> {
+        params
+            .0
+            .contains_key(name)
+            .then(|| params.number(decl, name))
+            .transpose()
     };
-    let mut warnings: Vec<String> = Vec::new();
-    let mut source = "given";
-    let given = params.opt_f64("lambda")?;
-    let fit = params.opt_f64("fit_ms")?;
-    let target_ms = params.opt_f64("target_ms")?;
+    let mut warnings = Vec::new();
+    let fit_ms = number("fit_ms")?;
     let mut fit_lambda = None;
-    if let Some(ms) = fit {
+    if let Some(ms) = fit_ms {
         let (l, w) = lambda_fit(family, ms)?;
         warnings.extend(w);
         fit_lambda = Some(l);
     }
-    let lambda = if let Some(ms) = target_ms {
-        source = "target_ms";
-        lambda_for_ms(family, ms)?
-    } else if let Some(l) = given {
-        if fit.is_some() {
+    let (lambda, source) = if let Some(ms) = number("target_ms")? {
+        (lambda_for_ms(family, ms)?, LambdaSource::TargetMs)
+    } else if let Some(l) = number("lambda")? {
+        if fit_ms.is_some() {
             warnings.push("both lambda and fit_ms given: lambda used".into());
         }
-        l
+        (l, LambdaSource::Given)
     } else if let Some(l) = fit_lambda {
-        source = "fit_ms";
-        l
+        (l, LambdaSource::FitMs)
     } else {
         return Err(Error::new(
             "params.lambda",
             "is required (or give target_ms or fit_ms)",
         ));
     };
-    let order = match params.opt_f64("p_order")? {
-        None => 2,
-        Some(x) if x == 2.0 || x == 3.0 => x as u32,
-        Some(x) => {
-            return Err(Error::new(
-                "params.p_order",
-                format!("must be 2 or 3 (got {x})"),
-            ))
-        }
+    Ok((lambda, source, fit_lambda, warnings))
+}
+
+/// The full tuning for a family (λ given, or from `target_ms`/`fit_ms`), with `params`
+/// already validated against [`params_info`].
+pub fn tune_family(family: &Family, params: &Params) -> Result<Tuning> {
+    check_family(family)?;
+    let decl = params_info();
+    let p = match params.0.get("p") {
+        Some(_) => params.number(&decl, "p")?,
+        None => family.theta(),
     };
+    let (lambda, lambda_source, lambda_fit, warnings) = choose_lambda(family, params, &decl)?;
+    let order = params.number(&decl, "p_order")?;
+    if order.fract() != 0.0 {
+        return Err(Error::new(
+            "params.p_order",
+            format!("must be 2 or 3 (got {order})"),
+        ));
+    }
+    let order = order as u32;
     let d = design(family, lambda)?;
     let controller = d.controller_order(p, order)?;
-    let (named, mut details) = named_and_details(&d, p, order);
-    details.insert("lambda_source".into(), json!(source));
-    if let Some(l) = fit_lambda {
-        details.insert("lambda_fit".into(), json!(l));
-    }
-    if let Some(ms) = target_ms {
-        details.insert("target_ms".into(), json!(ms));
-    }
-    if let Family::Piptd { k, theta } = *family {
-        let (kp, ki, kd, b1) = piptd_closed_form(k, theta, lambda);
-        details.insert(
-            "eq14_closed_form".into(),
-            json!({"kp": kp, "ki": ki, "kd": kd, "b1": b1}),
-        );
-    }
-    let plant = family.plant();
-    super::add_analysis(&plant, &controller, &mut details);
-    details.insert("warnings".into(), json!(warnings));
+    let eq14_closed_form = match *family {
+        Family::Piptd { k, theta } => {
+            let (kp, ki, kd, b1) = piptd_closed_form(k, theta, lambda);
+            Some(Eq14 { kp, ki, kd, b1 })
+        }
+        _ => None,
+    };
+    let details = Details {
+        lambda: d.lambda,
+        target: d.target_kind.label().into(),
+        target_desc: d.target.to_desc(),
+        laguerre_ce_desc: d.laguerre_ce().to_desc(),
+        filter: if d.square_filter {
+            "(a1 s + 1)^2 / (b1 s + 1)^2 (Eq. 4a)"
+        } else {
+            "(a1 s + 1)^2 / (b2 s^2 + b1 s + 1) (Eq. 5a)"
+        }
+        .into(),
+        p_order: order,
+        setpoint_filter: DescTf::from(&d.setpoint_filter_order(p, order)),
+        approximation:
+            "design only: e^{-θs} ≈ (1 − θs/4)²/(1 + θs/4)² (Eq. 10, second-order Laguerre shift)"
+                .into(),
+        lambda_source,
+        lambda_fit,
+        target_ms: params.opt_f64("target_ms")?,
+        eq14_closed_form,
+        check: super::DesignCheck::of(&family.plant(), &controller),
+        warnings,
+    };
     Ok(Tuning {
         method: ID.into(),
         controller,
-        named,
-        details,
+        named: named(&d, p),
+        details: super::Details::Medarametla2018(details),
     })
 }
 
-/// Tunes method `id` if it belongs to this paper.
-pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> {
-    if id != ID {
-        return None;
+/// The method of this paper behind [`super::Rule`].
+#[derive(Debug, Clone, Copy, Default)]
+pub struct PidSecondOrderFilter;
+
+impl super::Rule for PidSecondOrderFilter {
+    fn info(&self) -> MethodInfo {
+        method_info()
     }
-    Some(match plant.family {
-        Some(f) => tune_family(&f, params),
-        None => Err(Error::new(
-            "plant.family",
-            format!(
-                "method '{ID}' needs the plant given by family ({})",
-                FAMILIES.join(", ")
-            ),
-        )),
-    })
+
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        match plant.family {
+            Some(f) => tune_family(&f, params),
+            None => Err(Error::new(
+                "plant.family",
+                format!(
+                    "method '{ID}' needs the plant given by family ({})",
+                    FAMILIES.join(", ")
+                ),
+            )),
+        }
+    }
 }
 
+/// The rules of this paper.
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    vec![Box::new(PidSecondOrderFilter)]
+}
 /// λ such that the true Ms (exact delay; the set-point filter does not enter Ms) equals
 /// `ms`, by [`crate::analysis::freq::solve_for_ms`] over λ ∈ [0.02θ, 100θ] (the smallest such λ:
 /// Ms falls as λ grows from the smallest admissible λ). Errors name `params.target_ms`.
@@ -1209,155 +1317,164 @@ pub fn ajmeri_ali() -> Vec<AjmeriAli> {
     ]
 }
 
-fn scenario_json(e: &Example) -> Value {
-    json!({"t_end": e.t_end, "dt": 0.1,
-           "setpoint": {"time": 0.0, "size": e.sp_size},
-           "disturbance": {"time": e.d_time, "size": e.d_size}})
+/// The scenario of an example: set-point step at 0, load step at `d_time`, dt = 0.1.
+pub fn scenario(e: &Example) -> Scenario {
+    Scenario::steps(e.t_end, 0.1, 0.0, e.sp_size, e.d_time, e.d_size)
+}
+
+/// The proposed design of an example as a preset (a call of the rule).
+fn proposed_preset(e: &Example) -> Preset {
+    let order_note = if e.p_order == 3 {
+        " The set-point filter uses 1/(ps+1)³ (p_order = 3): the printed Eq. (37) has (ps+1)², but only the \
+         cube reproduces the paper's simulated servo rows (Tables 4-5)."
+    } else {
+        ""
+    };
+    let p_note = if e.p != e.p_text {
+        format!(
+            " The text says p = {}; the simulated Tables 4-5 rows are reproduced with p = {}.",
+            e.p_text, e.p
+        )
+    } else {
+        String::new()
+    };
+    Preset {
+        id: format!("medarametla2018/{}/proposed", e.id),
+        title: format!("{} — proposed (λ = {}, p = {})", e.title, e.lambda, e.p),
+        description: format!(
+            "Medarametla & Manimozhi design with λ = {} (Ms {} in the paper) and set-point filter p = {}; \
+             unit set-point step at 0 and input load step at {} as in the paper's simulation{}.{}{}",
+            e.lambda,
+            e.ms_printed,
+            e.p,
+            e.d_time,
+            if e.id == "ex6" {
+                " (linearized CSTR, Eq. 53: 2 K set-point step, jacket-temperature drop 317.4 → 310 K; the nonlinear runs are in the reproduction report)"
+            } else if e.id == "ex5" {
+                " on the reduced model of Eq. (50) (the next preset applies it to the process of Eq. 49)"
+            } else {
+                ""
+            },
+            order_note,
+            p_note
+        ),
+        citation: CITATION.into(),
+        plant: e.family.plant(),
+        design: PresetDesign::Rule {
+            method: ID.into(),
+            params: Params::default()
+                .with("lambda", e.lambda)
+                .with("p", e.p)
+                .with("p_order", f64::from(e.p_order)),
+        },
+        scenario: scenario(e),
+    }
+}
+
+/// Example 5's design (on the model of Eq. 50) controlling the process of Eq. (49).
+fn ex5_on_eq49_preset(e: &Example) -> Option<Preset> {
+    let c = design(&e.family, e.lambda)
+        .and_then(|d| d.controller_order(e.p, e.p_order))
+        .ok()?;
+    Some(Preset {
+        id: "medarametla2018/ex5/proposed-on-eq49".into(),
+        title: "Example 5: the proposed design (on the reduced model Eq. 50) controlling the process of Eq. (49)".into(),
+        description: "Controller designed on 0.5183e^{-1.2799s}/(s(1.1609s+1)) with λ = 1.895, p = 1 and 1/(ps+1)³ \
+                      (what reproduces Tables 4-5; the text says p = 0.9), applied to \
+                      0.5(1−0.5s)e^{−0.7s}/(s(0.4s+1)(0.1s+1)(0.5s+1)) as in Figs. 11-12."
+            .into(),
+        citation: CITATION.into(),
+        plant: example5_process(),
+        design: PresetDesign::Controller(c),
+        scenario: scenario(e),
+    })
+}
+
+/// An Ajmeri & Ali setting of Table 2 as a preset (the controller carries its model loop).
+fn ajmeri_ali_preset(a: &AjmeriAli, e: &Example) -> Option<Preset> {
+    let ctrl = a.controller(&e.family.plant()).ok()?;
+    Some(Preset {
+        id: format!("medarametla2018/{}/ajmeri-ali", e.id),
+        title: format!("{} — Ajmeri & Ali 2015, parallel control structure (Table 2)", e.title),
+        description: format!(
+            "Ajmeri & Ali's parallel control structure as quoted in Table 2: a set-point PD (k_p = {}, k_d = {}, \
+             derivative on the model output) closed around an internal model of the process with its dead time, \
+             and a disturbance PID (k_p = {}, k_i = {}, k_d = {}) acting on y_m − y (Ms {} printed). Table 2 gives \
+             the gains only; this structure is the one that reproduces Table 4's servo IAE exactly \
+             ((1 + K k_d)/(K k_p) = 9.06 for Example 1). With a perfect model the servo and load responses are \
+             decoupled; the controller carries the model as `model_loop`, simulated with both dead times exact.",
+            a.sp.0, a.sp.1, a.dist.0, a.dist.1, a.dist.2, a.ms_printed
+        ),
+        citation: "M. Ajmeri, A. Ali, Direct synthesis based tuning of the parallel control structure for integrating \
+                   processes, Int. J. Syst. Sci. 46(13) (2015) 2461-2473; settings as quoted in Medarametla & \
+                   Manimozhi 2018, Table 2"
+            .into(),
+        plant: e.family.plant(),
+        design: PresetDesign::Controller(ctrl),
+        scenario: scenario(e),
+    })
+}
+
+/// An Anil & Padma Sree setting of Table 2 as a preset (load step only when the mapping is
+/// improper on the set point).
+fn anil_padma_sree_preset(c: &Comparison, e: &Example) -> Option<Preset> {
+    let ctrl = c.controller().ok()?;
+    let improper = ctrl.cr.relative_degree() < 0;
+    let mut scenario = scenario(e);
+    if improper {
+        scenario.setpoint.size = 0.0;
+    }
+    let plant = if e.id == "ex5" {
+        example5_process()
+    } else {
+        e.family.plant()
+    };
+    Some(Preset {
+        id: format!("medarametla2018/{}/anil-padma-sree", e.id),
+        title: format!("{} — Anil & Padma Sree 2015 (Table 2)", e.title),
+        description: format!(
+            "Anil & Padma Sree (ISA Trans. 57, 2015) as quoted in Table 2: k_p = {}, k_i = {}, k_d = {}, PID filter {:?}/{:?} \
+             (Ms {} printed). Mapped as a one-degree-of-freedom PID × filter on the error: the set-point treatment \
+             of the original is not given in this paper, so only the regulatory response is comparable with Tables 4-5.{}",
+            c.kp, c.ki, c.kd, c.filter.0, c.filter.1, c.ms_printed,
+            if improper { " With this filter the derivative on the error is ideal, so a set-point step would be an impulse: \
+                          the scenario has the load step only." } else { "" }
+        ),
+        citation: "C. Anil, R. Padma Sree, Tuning of PID controllers for integrating systems using direct synthesis method, \
+                   ISA Transactions 57 (2015) 211-219; settings as quoted in Medarametla & Manimozhi 2018, Table 2"
+            .into(),
+        plant,
+        design: PresetDesign::Controller(ctrl),
+        scenario,
+    })
 }
 
 /// Presets of this paper: Examples 1-6 (the proposed design), Example 5's design applied to
-/// the higher-order process of Eq. (49), and the Anil & Padma Sree and Ajmeri & Ali settings
+/// the higher-order process of Eq. (49), and the Ajmeri & Ali and Anil & Padma Sree settings
 /// of Table 2.
-/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
-pub fn rules() -> Vec<Box<dyn super::Rule>> {
-    super::legacy_rules(methods(), tune)
+pub fn typed_presets() -> Vec<Preset> {
+    let ex = examples();
+    let by_id = |id: &str| ex.iter().find(|e| e.id == id);
+    let mut v = Vec::new();
+    for e in &ex {
+        v.push(proposed_preset(e));
+        if e.id == "ex5" {
+            v.extend(ex5_on_eq49_preset(e));
+        }
+    }
+    for a in ajmeri_ali() {
+        v.extend(by_id(a.example).and_then(|e| ajmeri_ali_preset(&a, e)));
+    }
+    for c in comparisons() {
+        v.extend(by_id(c.example).and_then(|e| anil_padma_sree_preset(&c, e)));
+    }
+    v
 }
 
 /// Every preset of this paper.
 pub fn presets() -> Vec<super::AnyPreset> {
-    legacy_presets()
+    typed_presets()
         .into_iter()
-        .map(super::AnyPreset::Legacy)
+        .map(super::AnyPreset::Typed)
         .collect()
-}
-
-/// The presets as JSON records (transitional).
-pub fn legacy_presets() -> Vec<Preset> {
-    let mut v = Vec::new();
-    for e in examples() {
-        let order_note = if e.p_order == 3 {
-            " The set-point filter uses 1/(ps+1)³ (p_order = 3): the printed Eq. (37) has (ps+1)², but only the \
-             cube reproduces the paper's simulated servo rows (Tables 4-5)."
-        } else {
-            ""
-        };
-        let p_note = if e.p != e.p_text {
-            format!(
-                " The text says p = {}; the simulated Tables 4-5 rows are reproduced with p = {}.",
-                e.p_text, e.p
-            )
-        } else {
-            String::new()
-        };
-        v.push(Preset {
-            id: format!("medarametla2018/{}/proposed", e.id),
-            title: format!("{} — proposed (λ = {}, p = {})", e.title, e.lambda, e.p),
-            description: format!(
-                "Medarametla & Manimozhi design with λ = {} (Ms {} in the paper) and set-point filter p = {}; \
-                 unit set-point step at 0 and input load step at {} as in the paper's simulation{}.{}{}",
-                e.lambda,
-                e.ms_printed,
-                e.p,
-                e.d_time,
-                if e.id == "ex6" {
-                    " (linearized CSTR, Eq. 53: 2 K set-point step, jacket-temperature drop 317.4 → 310 K; the nonlinear runs are in the reproduction report)"
-                } else if e.id == "ex5" {
-                    " on the reduced model of Eq. (50) (the next preset applies it to the process of Eq. 49)"
-                } else {
-                    ""
-                },
-                order_note,
-                p_note
-            ),
-            citation: CITATION.into(),
-            plant: family_json(&e.family),
-            tune: json!({"method": ID, "params": {"lambda": e.lambda, "p": e.p, "p_order": e.p_order}}),
-            controller: Value::Null,
-            scenario: scenario_json(&e),
-        });
-        if e.id == "ex5" {
-            if let Ok(c) =
-                design(&e.family, e.lambda).and_then(|d| d.controller_order(e.p, e.p_order))
-            {
-                v.push(Preset {
-                    id: "medarametla2018/ex5/proposed-on-eq49".into(),
-                    title: "Example 5: the proposed design (on the reduced model Eq. 50) controlling the process of Eq. (49)".into(),
-                    description: "Controller designed on 0.5183e^{-1.2799s}/(s(1.1609s+1)) with λ = 1.895, p = 1 and 1/(ps+1)³ \
-                                  (what reproduces Tables 4-5; the text says p = 0.9), applied to \
-                                  0.5(1−0.5s)e^{−0.7s}/(s(0.4s+1)(0.1s+1)(0.5s+1)) as in Figs. 11-12."
-                        .into(),
-                    citation: CITATION.into(),
-                    plant: plant_json(&example5_process()),
-                    tune: Value::Null,
-                    controller: controller_json(&c),
-                    scenario: scenario_json(&e),
-                });
-            }
-        }
-    }
-    for a in ajmeri_ali() {
-        let Some(e) = examples().into_iter().find(|e| e.id == a.example) else {
-            continue;
-        };
-        let Ok(ctrl) = a.controller(&e.family.plant()) else {
-            continue;
-        };
-        v.push(Preset {
-            id: format!("medarametla2018/{}/ajmeri-ali", e.id),
-            title: format!("{} — Ajmeri & Ali 2015, parallel control structure (Table 2)", e.title),
-            description: format!(
-                "Ajmeri & Ali's parallel control structure as quoted in Table 2: a set-point PD (k_p = {}, k_d = {}, \
-                 derivative on the model output) closed around an internal model of the process with its dead time, \
-                 and a disturbance PID (k_p = {}, k_i = {}, k_d = {}) acting on y_m − y (Ms {} printed). Table 2 gives \
-                 the gains only; this structure is the one that reproduces Table 4's servo IAE exactly \
-                 ((1 + K k_d)/(K k_p) = 9.06 for Example 1). With a perfect model the servo and load responses are \
-                 decoupled; the controller carries the model as `model_loop`, simulated with both dead times exact.",
-                a.sp.0, a.sp.1, a.dist.0, a.dist.1, a.dist.2, a.ms_printed
-            ),
-            citation: "M. Ajmeri, A. Ali, Direct synthesis based tuning of the parallel control structure for integrating \
-                       processes, Int. J. Syst. Sci. 46(13) (2015) 2461-2473; settings as quoted in Medarametla & \
-                       Manimozhi 2018, Table 2"
-                .into(),
-            plant: family_json(&e.family),
-            tune: Value::Null,
-            controller: controller_json(&ctrl),
-            scenario: scenario_json(&e),
-        });
-    }
-    for c in comparisons() {
-        let Some(e) = examples().into_iter().find(|e| e.id == c.example) else {
-            continue;
-        };
-        let Ok(ctrl) = c.controller() else { continue };
-        let improper = ctrl.cr.relative_degree() < 0;
-        let mut scenario = scenario_json(&e);
-        if improper {
-            scenario["setpoint"]["size"] = json!(0.0);
-        }
-        let plant = if e.id == "ex5" {
-            plant_json(&example5_process())
-        } else {
-            family_json(&e.family)
-        };
-        v.push(Preset {
-            id: format!("medarametla2018/{}/anil-padma-sree", e.id),
-            title: format!("{} — Anil & Padma Sree 2015 (Table 2)", e.title),
-            description: format!(
-                "Anil & Padma Sree (ISA Trans. 57, 2015) as quoted in Table 2: k_p = {}, k_i = {}, k_d = {}, PID filter {:?}/{:?} \
-                 (Ms {} printed). Mapped as a one-degree-of-freedom PID × filter on the error: the set-point treatment \
-                 of the original is not given in this paper, so only the regulatory response is comparable with Tables 4-5.{}",
-                c.kp, c.ki, c.kd, c.filter.0, c.filter.1, c.ms_printed,
-                if improper { " With this filter the derivative on the error is ideal, so a set-point step would be an impulse: \
-                              the scenario has the load step only." } else { "" }
-            ),
-            citation: "C. Anil, R. Padma Sree, Tuning of PID controllers for integrating systems using direct synthesis method, \
-                       ISA Transactions 57 (2015) 211-219; settings as quoted in Medarametla & Manimozhi 2018, Table 2"
-                .into(),
-            plant,
-            tune: Value::Null,
-            controller: controller_json(&ctrl),
-            scenario,
-        });
-    }
-    v
 }
