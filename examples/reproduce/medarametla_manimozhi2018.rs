@@ -6,6 +6,7 @@ use pidlab::model::controller::Controller;
 use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::medarametla_manimozhi2018 as mm;
 use pidlab::rules::medarametla_manimozhi2018::cstr::{self, CstrParams, CstrScenario};
+use pidlab::rules::medarametla_manimozhi2018::{Condition, Method};
 use pidlab::sim::{simulate, Scenario};
 use std::fmt::Write;
 
@@ -21,87 +22,6 @@ fn f4(x: f64) -> String {
 
 fn opt(x: Option<f64>) -> String {
     x.map_or("—".into(), |v| format!("{v:.3}"))
-}
-
-/// Tables 4 and 5, proposed and Anil & Padma Sree rows: servo (IAE, TV, OS, t_s),
-/// regulatory (IAE, TV, OS, t_s). NaN: not printed/garbled.
-struct Printed {
-    id: &'static str,
-    nominal: [[f64; 8]; 2],
-    perturbed: [[f64; 8]; 2],
-}
-
-fn printed() -> Vec<Printed> {
-    vec![
-        Printed {
-            id: "ex1",
-            nominal: [
-                [11.6, 5.92, 0.0, 25.1, 5.47, 3.455, 0.303, 52.3],
-                [11.41, 6.36, 0.001, 27.62, 5.08, 3.16, 0.303, 50.13],
-            ],
-            perturbed: [
-                [12.94, 8.9492, 0.123, 52.03, 5.468, 5.342, 0.401, 61.35],
-                [13.05, 10.74, 0.118, 52.02, 5.302, 5.586, 0.403, 61.60],
-            ],
-        },
-        Printed {
-            id: "ex2",
-            nominal: [
-                [6.1, 0.22, 0.0, 13.78, 37.53, 3.15, 4.077, 23.4],
-                [5.962, 0.193, 0.01, 12.06, 70.58, 3.39, 7.033, 24.87],
-            ],
-            perturbed: [
-                [6.180, 0.293, 0.004, 14.90, 37.64, 4.15, 4.27, 23.81],
-                [6.074, 0.242, 0.010, 14.23, 71.04, 4.177, 7.354, 26.04],
-            ],
-        },
-        Printed {
-            id: "ex3",
-            nominal: [
-                [4.00, 11.33, 0.0, 8.57, 0.87, 1.8733, 0.124, 18.15],
-                [4.57, 8.21, 0.1, 14.4, 1.11, 3.15, 0.174, 19.48],
-            ],
-            perturbed: [
-                [4.005, 18.33, 0.001, 9.92, 0.871, 3.275, 0.142, 18.74],
-                [4.052, 10.8, 0.042, 14.34, 1.055, 4.063, 0.199, 14.42],
-            ],
-        },
-        Printed {
-            id: "ex4",
-            nominal: [
-                [2.602, 0.252, 0.0, 5.85, 14.00, 3.01, 4.47, 12.28],
-                [4.338, 0.396, 0.514, 12.27, 17.18, 3.15, 5.04, 13.01],
-            ],
-            perturbed: [
-                [2.828, 0.377, 0.06, 11.48, 19.32, 5.4, 5.91, 15.343],
-                [4.833, 0.681, 0.81, 18.22, 27.48, 6.21, 6.55, 19.72],
-            ],
-        },
-        Printed {
-            id: "ex5",
-            nominal: [
-                [4.419, 2.21, 0.01, 9.48, 6.444, 3.777, 0.967, 18.77],
-                [4.094, 2.42, 0.02, 9.12, 6.484, 3.637, 1.061, 17.52],
-            ],
-            perturbed: [
-                [4.494, 3.968, 0.039, 18.23, 6.447, 6.610, 1.211, 20.99],
-                [4.407, 4.135, 0.078, 20.43, 6.635, 6.563, 1.111, 23.51],
-            ],
-        },
-    ]
-}
-
-/// Tables 4-5, Ajmeri & Ali rows (Examples 1-3), same columns as [`Printed`].
-fn ajmeri_printed(id: &str, perturbed: bool) -> [f64; 8] {
-    match (id, perturbed) {
-        ("ex1", false) => [9.06, 8.56, 0.0, 22.9, 6.2, 2.8425, 0.33, 55.25],
-        ("ex1", true) => [13.03, 13.94, 0.261, 53.01, 6.244, 4.8722, 0.432, 64.34],
-        ("ex2", false) => [10.67, 0.0714, 0.0, 29.85, 543.63, 3.1042, 20.26, 65.88],
-        ("ex2", true) => [10.75, 0.082, 0.002, 32.02, 545.7, 3.754, 19.9, 66.61],
-        ("ex3", false) => [4.594, 8.38, 0.0, 13.1, 2.842, 2.8342, 0.259, 28.93],
-        ("ex3", true) => [4.595, 12.05, 0.0, 18.88, 2.84, 3.826, 0.289, 19.81],
-        _ => [f64::NAN; 8],
-    }
 }
 
 /// The process the examples' controllers act on (Example 5: Eq. 49, not its model).
@@ -208,16 +128,18 @@ pub fn report() -> String {
     let _ = writeln!(o, "### Table 3 — controller parameters (ours / printed)\n");
     let _ = writeln!(o, "| Example | λ | k_p | k_i | k_d | a₁ | b₁ | b₂ |");
     let _ = writeln!(o, "|---|---|---|---|---|---|---|---|");
-    for (e, (_, pr)) in mm::examples().iter().zip(mm::TABLE3_PRINTED.iter()) {
+    for e in mm::examples() {
+        let Some(printed) = mm::table3(e.id) else {
+            continue;
+        };
         match mm::design(&e.family, e.lambda) {
             Ok(d) => {
                 let ours = [d.kp, d.ki, d.kd, d.a1, d.b1, d.b2];
                 let cells: Vec<String> = ours
                     .iter()
-                    .zip(pr)
-                    .enumerate()
-                    .map(|(i, (v, p))| {
-                        if i == 5 && d.square_filter {
+                    .zip(printed.cells())
+                    .map(|(v, (name, p))| {
+                        if name == "b2" && d.square_filter {
                             format!("(b₁² = {}) / {p}", f4(*v))
                         } else {
                             format!("{} / {p}", f4(*v))
@@ -376,22 +298,28 @@ pub fn report() -> String {
          plant input u + d; TV depends on how u was sampled and is reported, not asserted.\n"
     );
     let ex = mm::examples();
-    for (title, perturbed) in [
-        ("Nominal (Table 4)", false),
-        ("Perturbed, +20 % gain and delay (Table 5)", true),
+    for (title, condition) in [
+        ("Nominal (Table 4)", Condition::Nominal),
+        (
+            "Perturbed, +20 % gain and delay (Table 5)",
+            Condition::Perturbed,
+        ),
     ] {
+        let perturbed = condition == Condition::Perturbed;
+        let printed = |id: &str, m: Method| {
+            mm::table45(id, m, condition).map_or([f64::NAN; 8], |r| r.columns())
+        };
         let _ = writeln!(o, "#### {title}\n");
         let _ = writeln!(o, "| Process / method | servo IAE | servo TV | servo OS | servo t_s | reg. IAE | reg. TV | reg. OS | reg. t_s |");
         let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|");
-        for p in printed() {
-            let Some(e) = ex.iter().find(|e| e.id == p.id) else {
-                continue;
-            };
+        for e in ex
+            .iter()
+            .filter(|e| mm::table45(e.id, Method::Proposed, condition).is_some())
+        {
             let mut plant = process(e);
             if perturbed {
                 plant = plant.with_gain_delay(1.2, 1.2);
             }
-            let pr = if perturbed { &p.perturbed } else { &p.nominal };
             let prop = mm::design(&e.family, e.lambda)
                 .and_then(|d| d.controller_order(e.p, e.p_order))
                 .ok();
@@ -400,14 +328,19 @@ pub fn report() -> String {
                 &mut o,
                 &label,
                 prop.and_then(|c| run(&plant, &c, e, true)),
-                &pr[0],
+                &printed(e.id, Method::Proposed),
             );
             if let Some(cmp) = mm::comparisons().into_iter().find(|c| c.example == e.id) {
                 let m = cmp.controller().ok().and_then(|c| {
                     let servo = c.cr.relative_degree() >= 0;
                     run(&plant, &c, e, servo)
                 });
-                row(&mut o, &format!("{} Anil & Padma Sree", e.id), m, &pr[1]);
+                row(
+                    &mut o,
+                    &format!("{} Anil & Padma Sree", e.id),
+                    m,
+                    &printed(e.id, Method::AnilPadmaSree),
+                );
             }
             if let Some(aa) = mm::ajmeri_ali().into_iter().find(|a| a.example == e.id) {
                 // the internal model stays the nominal one when the process is perturbed
@@ -415,7 +348,7 @@ pub fn report() -> String {
                     .controller(&e.family.plant())
                     .ok()
                     .and_then(|c| run(&plant, &c, e, true));
-                let pa = ajmeri_printed(e.id, perturbed);
+                let pa = printed(e.id, Method::AjmeriAli);
                 row(&mut o, &format!("{} Ajmeri & Ali (PCS)", e.id), m, &pa);
             }
         }
