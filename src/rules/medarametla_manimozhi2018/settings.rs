@@ -185,9 +185,11 @@ pub struct Comparison {
     pub ki: f64,
     /// Derivative gain.
     pub kd: f64,
-    /// The PID filter: lead-lag `(αs+1)/(βs+1)` or the footnoted second-order filter,
-    /// descending `(num, den)`.
-    pub filter: (Vec<f64>, Vec<f64>),
+    /// The PID filter's numerator, descending: `αs+1` of the lead-lag `(αs+1)/(βs+1)`, or of
+    /// the footnoted second-order filter.
+    pub filter_num: Vec<f64>,
+    /// The PID filter's denominator, descending.
+    pub filter_den: Vec<f64>,
     /// Ms printed in Table 2.
     pub ms_printed: f64,
 }
@@ -196,7 +198,7 @@ impl Comparison {
     /// The controller: `(k_p + k_i/s + k_d s)·filter` on the error (1-DOF; the set-point
     /// treatment of the original paper is not given in Medarametla & Manimozhi).
     pub fn controller(&self) -> Result<Controller> {
-        let f = Tf::parse_desc(&self.filter.0, &self.filter.1)?;
+        let f = Tf::parse_desc(&self.filter_num, &self.filter_den)?;
         Pid::parallel(self.kp, self.ki, self.kd)
             .series_filter(f)
             .to_controller()
@@ -206,54 +208,65 @@ impl Comparison {
 /// Table 2's Anil & Padma Sree settings (Ajmeri & Ali's parallel control structure, which runs
 /// an internal process model with its dead time, is [`ajmeri_ali`]).
 pub fn comparisons() -> Vec<Comparison> {
-    let ll = |a: f64, b: f64| (vec![a, 1.0], vec![b, 1.0]);
     vec![
+        // Table 2, Example 1: Anil & Padma Sree
         Comparison {
             example: "ex1",
             kp: 3.727,
             ki: 0.1968,
             kd: 7.0440,
-            filter: (vec![1.0], vec![1.0]),
+            filter_num: vec![1.0],
+            filter_den: vec![1.0],
             ms_printed: 2.0,
         },
+        // Table 2, Example 2: Anil & Padma Sree
         Comparison {
             example: "ex2",
             kp: 0.1378,
             ki: 0.0142,
             kd: 0.5265,
-            filter: ll(1.0761, 1.0392),
+            filter_num: vec![1.0761, 1.0],
+            filter_den: vec![1.0392, 1.0],
             ms_printed: 2.0,
         },
+        // Table 2, Example 3: Anil & Padma Sree
         Comparison {
             example: "ex3",
             kp: 5.7422,
             ki: 0.9724,
             kd: 11.2082,
-            filter: ll(0.6320, 0.4915),
+            filter_num: vec![0.6320, 1.0],
+            filter_den: vec![0.4915, 1.0],
             ms_printed: 2.0,
         },
+        // Table 2, Example 4: Anil & Padma Sree
         Comparison {
             example: "ex4",
             kp: 1.1601,
             ki: 0.2251,
             kd: 1.4452,
-            filter: (vec![0.5214, 1.0], vec![2.674, 10.2674, 1.0]),
+            filter_num: vec![0.5214, 1.0],
+            filter_den: vec![2.674, 10.2674, 1.0],
             ms_printed: 2.35,
         },
+        // Table 2, Example 5: Anil & Padma Sree
         Comparison {
             example: "ex5",
             kp: 1.003,
             ki: 0.1572,
             kd: 0.6592,
-            filter: ll(1.1608, 0.5490),
+            filter_num: vec![1.1608, 1.0],
+            filter_den: vec![0.5490, 1.0],
             ms_printed: 2.81,
         },
+        // Table 2, Example 6: Anil & Padma Sree
         Comparison {
             example: "ex6",
             kp: 695_400.0,
             ki: 135_940.0,
             kd: 1_457_697.0,
-            filter: (vec![0.5095, 1.0], vec![144.7116, 766.2641, 1.0]),
+            filter_num: vec![0.5095, 1.0],
+            filter_den: vec![144.7116, 766.2641, 1.0],
             ms_printed: 3.52,
         },
     ]
@@ -265,10 +278,16 @@ pub fn comparisons() -> Vec<Comparison> {
 pub struct AjmeriAli {
     /// Example id (`ex1`..`ex3`).
     pub example: &'static str,
-    /// Set-point tracking controller `k_p`, `k_d` (Table 2, `k_i` = 0).
-    pub sp: (f64, f64),
-    /// Disturbance rejection controller `k_p`, `k_i`, `k_d`.
-    pub dist: (f64, f64, f64),
+    /// Set-point tracking controller `k_p` (Table 2, `k_i` = 0).
+    pub sp_kp: f64,
+    /// Set-point tracking controller `k_d` (derivative on the model output).
+    pub sp_kd: f64,
+    /// Disturbance rejection controller `k_p`.
+    pub dist_kp: f64,
+    /// Disturbance rejection controller `k_i`.
+    pub dist_ki: f64,
+    /// Disturbance rejection controller `k_d`.
+    pub dist_kd: f64,
     /// Ms printed in Table 2.
     pub ms_printed: f64,
 }
@@ -286,9 +305,10 @@ impl AjmeriAli {
     /// would make `u₁` impulsive. The disturbance controller acts on `y_m − y`, so with a
     /// perfect model the servo and regulatory responses decouple, as the PCS is designed to.
     pub fn controller(&self, model: &Plant) -> Result<Controller> {
-        let (kp, kd) = self.sp;
-        let (dp, di, dd) = self.dist;
-        let cd = Pid::parallel(dp, di, dd).to_controller()?.cy;
+        let (kp, kd) = (self.sp_kp, self.sp_kd);
+        let cd = Pid::parallel(self.dist_kp, self.dist_ki, self.dist_kd)
+            .to_controller()?
+            .cy;
         let ml = ModelLoop::new(
             model.clone(),
             Tf::gain(kp),
@@ -301,22 +321,34 @@ impl AjmeriAli {
 /// Table 2's Ajmeri & Ali settings (Examples 1-3).
 pub fn ajmeri_ali() -> Vec<AjmeriAli> {
     vec![
+        // Table 2, Example 1: Ajmeri & Ali
         AjmeriAli {
             example: "ex1",
-            sp: (2.9933, 7.1189),
-            dist: (3.3209, 0.1614, 5.8796),
+            sp_kp: 2.9933,
+            sp_kd: 7.1189,
+            dist_kp: 3.3209,
+            dist_ki: 0.1614,
+            dist_kd: 5.8796,
             ms_printed: 2.0,
         },
+        // Table 2, Example 2: Ajmeri & Ali
         AjmeriAli {
             example: "ex2",
-            sp: (0.0293, 0.3129),
-            dist: (0.0414, 0.0018, 0.3246),
+            sp_kp: 0.0293,
+            sp_kd: 0.3129,
+            dist_kp: 0.0414,
+            dist_ki: 0.0018,
+            dist_kd: 0.3246,
             ms_printed: 2.0,
         },
+        // Table 2, Example 3: Ajmeri & Ali
         AjmeriAli {
             example: "ex3",
-            sp: (3.1949, 9.6792),
-            dist: (3.67, 0.3521, 9.0902),
+            sp_kp: 3.1949,
+            sp_kd: 9.6792,
+            dist_kp: 3.67,
+            dist_ki: 0.3521,
+            dist_kd: 9.0902,
             ms_printed: 2.0,
         },
     ]
@@ -408,7 +440,7 @@ fn ajmeri_ali_preset(a: &AjmeriAli, e: &Example) -> Option<Preset> {
              the gains only; this structure is the one that reproduces Table 4's servo IAE exactly \
              ((1 + K k_d)/(K k_p) = 9.06 for Example 1). With a perfect model the servo and load responses are \
              decoupled; the controller carries the model as `model_loop`, simulated with both dead times exact.",
-            a.sp.0, a.sp.1, a.dist.0, a.dist.1, a.dist.2, a.ms_printed
+            a.sp_kp, a.sp_kd, a.dist_kp, a.dist_ki, a.dist_kd, a.ms_printed
         ),
         citation: "M. Ajmeri, A. Ali, Direct synthesis based tuning of the parallel control structure for integrating \
                    processes, Int. J. Syst. Sci. 46(13) (2015) 2461-2473; settings as quoted in Medarametla & \
@@ -441,7 +473,7 @@ fn anil_padma_sree_preset(c: &Comparison, e: &Example) -> Option<Preset> {
             "Anil & Padma Sree (ISA Trans. 57, 2015) as quoted in Table 2: k_p = {}, k_i = {}, k_d = {}, PID filter {:?}/{:?} \
              (Ms {} printed). Mapped as a one-degree-of-freedom PID × filter on the error: the set-point treatment \
              of the original is not given in this paper, so only the regulatory response is comparable with Tables 4-5.{}",
-            c.kp, c.ki, c.kd, c.filter.0, c.filter.1, c.ms_printed,
+            c.kp, c.ki, c.kd, c.filter_num, c.filter_den, c.ms_printed,
             if improper { " With this filter the derivative on the error is ideal, so a set-point step would be an impulse: \
                           the scenario has the load step only." } else { "" }
         ),
