@@ -2,12 +2,11 @@
 //! integrating processes (Table 3, Table 1 / Fig. 2, Tables 4-5, Example 6's CSTR).
 
 use pidlab::analysis::metrics::Metrics;
-use pidlab::model::controller::Controller;
-use pidlab::model::plant::{Family, Plant};
+use pidlab::model::plant::Family;
 use pidlab::rules::medarametla_manimozhi2018 as mm;
-use pidlab::rules::medarametla_manimozhi2018::cstr::{self, CstrParams, CstrScenario};
+use pidlab::rules::medarametla_manimozhi2018::cstr::CstrParams;
+use pidlab::rules::medarametla_manimozhi2018::studies;
 use pidlab::rules::medarametla_manimozhi2018::{Condition, Method};
-use pidlab::sim::{simulate, Scenario};
 use std::fmt::Write;
 
 fn f4(x: f64) -> String {
@@ -22,32 +21,6 @@ fn f4(x: f64) -> String {
 
 fn opt(x: Option<f64>) -> String {
     x.map_or("—".into(), |v| format!("{v:.3}"))
-}
-
-/// The process the examples' controllers act on (Example 5: Eq. 49, not its model).
-fn process(e: &mm::Example) -> Plant {
-    if e.id == "ex5" {
-        mm::example5_process()
-    } else {
-        e.family.plant()
-    }
-}
-
-/// Servo and regulatory metrics; with `servo = false` only the load step is applied (the
-/// servo metrics are then `None`).
-fn run(
-    plant: &Plant,
-    c: &Controller,
-    e: &mm::Example,
-    servo: bool,
-) -> Option<(Option<Metrics>, Metrics)> {
-    let sp = if servo { e.sp_size } else { 0.0 };
-    let sc = Scenario::steps(2.0 * e.d_time, 0.1, 0.0, sp, e.d_time, e.d_size);
-    let r = simulate(plant, c, &sc).ok()?;
-    if r.diverged {
-        return None;
-    }
-    Some((r.metrics.servo, r.metrics.regulatory?))
 }
 
 fn row(out: &mut String, label: &str, m: Option<(Option<Metrics>, Metrics)>, p: &[f64; 8]) {
@@ -210,65 +183,19 @@ pub fn report() -> String {
     );
     let _ = writeln!(o, "| Example | n | max abs(y − e^{{−θs}}/(ps+1)ⁿ), exact delay | Laguerre-model response vs its design |");
     let _ = writeln!(o, "|---|---|---|---|");
-    let cases: Vec<(mm::Example, u32)> = mm::examples()
-        .into_iter()
-        .flat_map(|e| {
-            if e.p_order == 2 {
-                vec![(e, 2)]
-            } else {
-                vec![(e, 2), (e, e.p_order)]
-            }
-        })
-        .collect();
-    for (e, order) in cases {
-        let Ok(d) = mm::design(&e.family, e.lambda) else {
-            continue;
-        };
-        let Ok(c) = d.controller_order(e.p, order) else {
-            continue;
-        };
-        let n = order as i32;
-        let th = e.family.theta();
-        let t_end = 6.0 * (th + 3.0 * e.p) + e.lambda * 6.0;
-        let sc = Scenario::steps(t_end, t_end / 600.0, 0.0, 1.0, 0.0, 0.0);
-        // e^{−θs}/(ps+1)ⁿ step: 1 − e^{−x} Σ_{k<n} x^k/k!, x = (t − θ)/p
-        let ideal = |t: f64| {
-            let x = (t - th).max(0.0) / e.p;
-            let mut sum = 0.0;
-            let mut term = 1.0;
-            for k in 0..n {
-                if k > 0 {
-                    term *= x / k as f64;
-                }
-                sum += term;
-            }
-            1.0 - (-x).exp() * sum
-        };
-        let dev = simulate(&e.family.plant(), &c, &sc).map(|r| {
-            r.t.iter()
-                .zip(&r.y)
-                .map(|(t, y)| (y - ideal(*t)).abs())
-                .fold(0.0, f64::max)
-        });
-        let pl = Plant::new(e.family.rational().mul(&mm::laguerre2(th)), 0.0);
-        let want = d.laguerre_servo_order(e.p, order);
-        let lag = pl.and_then(|p| simulate(&p, &c, &sc)).map(|r| {
-            let w = step_rk4(&want, &r.t, 1e-3 * th);
-            r.y.iter()
-                .zip(&w)
-                .map(|(y, v)| (y - v).abs())
-                .fold(0.0, f64::max)
-        });
+    for check in studies::servo_checks() {
         let _ = writeln!(
             o,
             "| {} | {} | {} | {} |",
-            e.id,
-            n,
-            dev.map_or_else(
+            check.example.id,
+            check.order,
+            check.exact_delay.map_or_else(
                 |er| er.to_string(),
                 |v| format!("{:.3} % of the step", 100.0 * v)
             ),
-            lag.map_or_else(|er| er.to_string(), |v| format!("{v:.1e}"))
+            check
+                .laguerre
+                .map_or_else(|er| er.to_string(), |v| format!("{v:.1e}"))
         );
     }
     let _ = writeln!(o);
@@ -297,7 +224,6 @@ pub fn report() -> String {
          (the size of the load step) in most nominal rows, as if the paper summed the variation of the \
          plant input u + d; TV depends on how u was sampled and is reported, not asserted.\n"
     );
-    let ex = mm::examples();
     for (title, condition) in [
         ("Nominal (Table 4)", Condition::Nominal),
         (
@@ -305,52 +231,18 @@ pub fn report() -> String {
             Condition::Perturbed,
         ),
     ] {
-        let perturbed = condition == Condition::Perturbed;
-        let printed = |id: &str, m: Method| {
-            mm::table45(id, m, condition).map_or([f64::NAN; 8], |r| r.columns())
-        };
         let _ = writeln!(o, "#### {title}\n");
         let _ = writeln!(o, "| Process / method | servo IAE | servo TV | servo OS | servo t_s | reg. IAE | reg. TV | reg. OS | reg. t_s |");
         let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|");
-        for e in ex
-            .iter()
-            .filter(|e| mm::table45(e.id, Method::Proposed, condition).is_some())
-        {
-            let mut plant = process(e);
-            if perturbed {
-                plant = plant.with_gain_delay(1.2, 1.2);
-            }
-            let prop = mm::design(&e.family, e.lambda)
-                .and_then(|d| d.controller_order(e.p, e.p_order))
-                .ok();
-            let label = format!("{} proposed (p = {}, n = {})", e.id, e.p, e.p_order);
-            row(
-                &mut o,
-                &label,
-                prop.and_then(|c| run(&plant, &c, e, true)),
-                &printed(e.id, Method::Proposed),
-            );
-            if let Some(cmp) = mm::comparisons().into_iter().find(|c| c.example == e.id) {
-                let m = cmp.controller().ok().and_then(|c| {
-                    let servo = c.cr.relative_degree() >= 0;
-                    run(&plant, &c, e, servo)
-                });
-                row(
-                    &mut o,
-                    &format!("{} Anil & Padma Sree", e.id),
-                    m,
-                    &printed(e.id, Method::AnilPadmaSree),
-                );
-            }
-            if let Some(aa) = mm::ajmeri_ali().into_iter().find(|a| a.example == e.id) {
-                // the internal model stays the nominal one when the process is perturbed
-                let m = aa
-                    .controller(&e.family.plant())
-                    .ok()
-                    .and_then(|c| run(&plant, &c, e, true));
-                let pa = printed(e.id, Method::AjmeriAli);
-                row(&mut o, &format!("{} Ajmeri & Ali (PCS)", e.id), m, &pa);
-            }
+        for r in studies::tables_4_5(condition) {
+            let e = &r.example;
+            let label = match r.method {
+                Method::Proposed => format!("{} proposed (p = {}, n = {})", e.id, e.p, e.p_order),
+                Method::AnilPadmaSree => format!("{} Anil & Padma Sree", e.id),
+                Method::AjmeriAli => format!("{} Ajmeri & Ali (PCS)", e.id),
+            };
+            let m = r.run.map(|run| (run.servo, run.regulatory));
+            row(&mut o, &label, m, &r.printed);
         }
         let _ = writeln!(o);
     }
@@ -400,13 +292,6 @@ fn cstr_section() -> String {
         "k agrees to its printed digits; z and τ to 5e-5 and 7e-6 relative (the last digits depend on \
          the unstated rounding of the operating point).\n"
     );
-    let e = mm::examples().into_iter().find(|e| e.id == "ex6");
-    let Some(e) = e else { return o };
-    let prop = mm::design(&e.family, e.lambda).and_then(|d| d.controller_order(e.p, e.p_order));
-    let anil = mm::comparisons()
-        .into_iter()
-        .find(|c| c.example == "ex6")
-        .map(|c| c.controller());
     let _ = writeln!(
         o,
         "Closed loop on the **nonlinear** reactor (RK4, h = 0.01 s, 1 s measurement delay; `pidlab::rules::medarametla_manimozhi2018::cstr`), \
@@ -421,119 +306,59 @@ fn cstr_section() -> String {
     let _ = writeln!(o, "|---|---|---|---|---|---|---|---|");
     let t_end = 60.0;
     let mut csv_rows: Vec<Vec<Vec<f64>>> = vec![vec![], vec![]];
-    for (name, c) in [
-        ("proposed", prop.ok()),
-        ("Anil & Padma Sree", anil.and_then(|c| c.ok())),
-    ] {
-        let Some(c) = c else { continue };
-        for (ri, (run_name, sp, dj)) in [
-            ("servo 344→346 K", 2.0, 0.0),
-            ("regulatory T_j −7.4 K", 0.0, -7.4),
-        ]
-        .iter()
-        .enumerate()
-        {
-            let sc = CstrScenario {
-                t_end,
-                dt: 0.01,
-                delay: 1.0,
-                sp_time: 0.0,
-                sp_size: *sp,
-                d_time: 0.0,
-                d_size: *dj,
-            };
-            match cstr::simulate(&p, &op, &c, &sc) {
-                Ok(r) => {
-                    let target = op.t + sp;
-                    let iae: f64 = r
-                        .temp
-                        .windows(2)
-                        .map(|w| 0.5 * ((w[0] - target).abs() + (w[1] - target).abs()) * 0.01)
-                        .sum();
-                    let iae_y: f64 =
-                        r.y.windows(2)
-                            .map(|w| 0.5 * ((w[0] - target).abs() + (w[1] - target).abs()) * 0.01)
-                            .sum();
-                    let tv: f64 = r
-                        .tj_cmd
-                        .iter()
-                        .step_by(10)
-                        .collect::<Vec<_>>()
-                        .windows(2)
-                        .map(|w| (w[1] - w[0]).abs())
-                        .sum();
-                    // servo: overshoot above the new set point; regulatory: peak deviation
-                    let peak = if *sp != 0.0 {
-                        r.temp.iter().map(|t| t - target).fold(0.0, f64::max)
-                    } else {
-                        r.temp
-                            .iter()
-                            .map(|t| (t - target).abs())
-                            .fold(0.0, f64::max)
-                    };
-                    let tjmin = r.tj_cmd.iter().cloned().fold(f64::MAX, f64::min);
-                    let tjmax = r.tj_cmd.iter().cloned().fold(f64::MIN, f64::max);
-                    let _ = writeln!(
-                        o,
-                        "| {name} | {run_name} | nonlinear | {iae_y:.4} (of y; of T: {iae:.4}) | {tv:.1} | {peak:.4} | {tjmin:.1} | {tjmax:.1} |"
-                    );
-                    if name == "proposed" {
-                        for (k, t) in r.t.iter().enumerate().step_by(5) {
-                            csv_rows[ri].push(vec![
-                                *t,
-                                r.r[k],
-                                r.temp[k],
-                                r.y[k],
-                                r.ca[k],
-                                r.tj_cmd[k],
-                                r.tj[k],
-                            ]);
-                        }
+    for run in studies::cstr_study(&p, &op, t_end) {
+        let (name, run_name, sp) = (run.controller, run.run, run.sp);
+        let ri = if sp != 0.0 { 0 } else { 1 };
+        match &run.nonlinear {
+            Ok((r, m)) => {
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | nonlinear | {:.4} (of y; of T: {:.4}) | {:.1} | {:.4} | {:.1} | {:.1} |",
+                    m.iae_y, m.iae_t, m.tv, m.peak, m.tj_min, m.tj_max
+                );
+                if name == "proposed" {
+                    for (k, t) in r.t.iter().enumerate().step_by(5) {
+                        csv_rows[ri].push(vec![
+                            *t,
+                            r.r[k],
+                            r.temp[k],
+                            r.y[k],
+                            r.ca[k],
+                            r.tj_cmd[k],
+                            r.tj[k],
+                        ]);
                     }
                 }
-                Err(err) => {
-                    let _ = writeln!(
-                        o,
-                        "| {name} | {run_name} | nonlinear | error: {err} | | | | |"
-                    );
-                }
             }
-            let sc = Scenario::steps(
-                t_end,
-                0.1,
-                0.0,
-                *sp,
-                if *dj != 0.0 { 0.0 } else { t_end + 1.0 },
-                *dj,
-            );
-            let sc = if *sp == 0.0 {
-                Scenario::steps(t_end, 0.1, 0.0, 0.0, 0.0, *dj)
-            } else {
-                sc
-            };
-            match simulate(&e.family.plant(), &c, &sc) {
-                Ok(r) => {
-                    let m = if *sp != 0.0 {
-                        r.metrics.servo
+            Err(err) => {
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | nonlinear | error: {err} | | | | |"
+                );
+            }
+        }
+        match &run.linear {
+            Ok(l) => {
+                let m = &l.metrics;
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | Eq. (53) | {} | {} | {} | {:.1} | {:.1} |",
+                    m.as_ref().map_or("—".into(), |m| format!("{:.4}", m.iae)),
+                    m.as_ref().map_or("—".into(), |m| format!("{:.1}", m.tv)),
+                    m.as_ref().map_or("—".into(), |m| if sp != 0.0 {
+                        opt(m.overshoot.map(|x| x * sp))
                     } else {
-                        r.metrics.regulatory
-                    };
-                    let tjmin = r.u.iter().map(|u| op.tj + u).fold(f64::MAX, f64::min);
-                    let tjmax = r.u.iter().map(|u| op.tj + u).fold(f64::MIN, f64::max);
-                    let _ = writeln!(
-                        o,
-                        "| {name} | {run_name} | Eq. (53) | {} | {} | {} | {tjmin:.1} | {tjmax:.1} |",
-                        m.as_ref().map_or("—".into(), |m| format!("{:.4}", m.iae)),
-                        m.as_ref().map_or("—".into(), |m| format!("{:.1}", m.tv)),
-                        m.as_ref().map_or("—".into(), |m| if *sp != 0.0 { opt(m.overshoot.map(|x| x * sp)) } else { format!("{:.4}", m.peak_error) }),
-                    );
-                }
-                Err(err) => {
-                    let _ = writeln!(
-                        o,
-                        "| {name} | {run_name} | Eq. (53) | error: {err} | | | | |"
-                    );
-                }
+                        format!("{:.4}", m.peak_error)
+                    }),
+                    l.tj_min,
+                    l.tj_max
+                );
+            }
+            Err(err) => {
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | Eq. (53) | error: {err} | | | | |"
+                );
             }
         }
     }
@@ -558,46 +383,6 @@ fn cstr_section() -> String {
          excursion. Figure data (proposed, nonlinear): {f1}, {f2}.\n"
     );
     o
-}
-
-/// Unit-step response of a proper rational `g` at `times` by classical RK4 (step `h`) on its
-/// controllable canonical realization (an independent reference for the simulator).
-fn step_rk4(g: &pidlab::model::tf::Tf, times: &[f64], h: f64) -> Vec<f64> {
-    let (q, r) = g.split_improper();
-    let d0 = q.coef(0);
-    let n = g.den.degree();
-    let lead = g.den.leading();
-    let a: Vec<f64> = (0..n).map(|i| g.den.coef(i) / lead).collect();
-    let c: Vec<f64> = (0..n).map(|i| r.num.coef(i) / lead).collect();
-    let f = |x: &[f64]| -> Vec<f64> {
-        let mut dx = vec![0.0; n];
-        if n > 0 {
-            dx[..n - 1].copy_from_slice(&x[1..]);
-            dx[n - 1] = 1.0 - (0..n).map(|i| a[i] * x[i]).sum::<f64>();
-        }
-        dx
-    };
-    let mut x = vec![0.0; n];
-    let mut t = 0.0;
-    let mut out = Vec::with_capacity(times.len());
-    for &tt in times {
-        while t < tt - 1e-12 {
-            let hh = h.min(tt - t);
-            let k1 = f(&x);
-            let x2: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * hh * k1[i]).collect();
-            let k2 = f(&x2);
-            let x3: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * hh * k2[i]).collect();
-            let k3 = f(&x3);
-            let x4: Vec<f64> = (0..n).map(|i| x[i] + hh * k3[i]).collect();
-            let k4 = f(&x4);
-            for i in 0..n {
-                x[i] += hh / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-            }
-            t += hh;
-        }
-        out.push(d0 + (0..n).map(|i| c[i] * x[i]).sum::<f64>());
-    }
-    out
 }
 
 /// Ms of the examples, Fig. 2's Ms(λ) curves (CSV) and the Table 1 fits' true errors.
@@ -669,7 +454,7 @@ fn ms_section() -> String {
         let Some(e) = mm::examples().into_iter().find(|e| e.id == c.example) else {
             continue;
         };
-        let plant = process(&e);
+        let plant = studies::process(&e);
         let cell = c
             .controller()
             .and_then(|ctrl| pidlab::analysis::freq::analyze(&plant, &ctrl))

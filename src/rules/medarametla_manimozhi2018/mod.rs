@@ -68,6 +68,7 @@
 use super::{MethodInfo, ParamInfo, Params, Tuning};
 pub mod cstr;
 mod settings;
+pub mod studies;
 mod tables;
 pub use settings::*;
 pub use tables::*;
