@@ -2,7 +2,6 @@
 //! integrating processes (Table 3, Table 1 / Fig. 2, Tables 4-5, Example 6's CSTR).
 
 use pidlab::analysis::metrics::Metrics;
-use pidlab::model::plant::Family;
 use pidlab::rules::medarametla_manimozhi2018 as mm;
 use pidlab::rules::medarametla_manimozhi2018::cstr::CstrParams;
 use pidlab::rules::medarametla_manimozhi2018::studies;
@@ -402,15 +401,9 @@ fn ms_section() -> String {
         "| Example | λ (text) | Ms ours | at ω | Ms printed | exact λ for the printed Ms |"
     );
     let _ = writeln!(o, "|---|---|---|---|---|---|");
-    for e in mm::examples() {
-        let Ok(d) = mm::design(&e.family, e.lambda) else {
-            continue;
-        };
-        let Ok(c) = d.pid().to_controller() else {
-            continue;
-        };
-        let a = pidlab::analysis::freq::analyze(&e.family.plant(), &c);
-        let (ms, w) = match &a {
+    for row in studies::examples_ms() {
+        let e = &row.example;
+        let (ms, w) = match &row.ms {
             Ok(a) => (
                 a.ms.map_or("—".into(), |m| format!("{m:.4}")),
                 a.w_ms
@@ -418,22 +411,22 @@ fn ms_section() -> String {
             ),
             Err(er) => (er.to_string(), String::new()),
         };
-        let l = mm::lambda_for_ms(&e.family, e.ms_printed)
+        let l = row
+            .lambda_for_printed_ms
+            .as_ref()
             .map_or_else(|er| er.to_string(), |l| format!("{l:.4}"));
         let _ = writeln!(
             o,
             "| {} | {} | {ms} | {w} | {} | {l} |",
             e.id, e.lambda, e.ms_printed
         );
-        if e.id == "ex5" {
-            if let Ok(a) = pidlab::analysis::freq::analyze(&mm::example5_process(), &c) {
-                let _ = writeln!(
-                    o,
-                    "| ex5 controller on the process of Eq. (49) | 1.895 | {} | {} | 2.81 | |",
-                    a.ms.map_or("—".into(), |m| format!("{m:.4}")),
-                    a.w_ms.map_or("∞".into(), |w| format!("{w:.4}"))
-                );
-            }
+        if let Some(a) = &row.on_eq49 {
+            let _ = writeln!(
+                o,
+                "| ex5 controller on the process of Eq. (49) | 1.895 | {} | {} | 2.81 | |",
+                a.ms.map_or("—".into(), |m| format!("{m:.4}")),
+                a.w_ms.map_or("∞".into(), |w| format!("{w:.4}"))
+            );
         }
     }
     let _ = writeln!(
@@ -450,15 +443,9 @@ fn ms_section() -> String {
     );
     let _ = writeln!(o, "| Example | Ms ours | at ω | Ms printed |");
     let _ = writeln!(o, "|---|---|---|---|");
-    for c in mm::comparisons() {
-        let Some(e) = mm::examples().into_iter().find(|e| e.id == c.example) else {
-            continue;
-        };
-        let plant = studies::process(&e);
-        let cell = c
-            .controller()
-            .and_then(|ctrl| pidlab::analysis::freq::analyze(&plant, &ctrl))
-            .map(|a| {
+    for c in studies::comparisons_ms() {
+        let cell =
+            c.ms.map(|a| {
                 (
                     a.ms.map_or(format!("— ({})", a.verdict), |m| format!("{m:.4}")),
                     a.w_ms.map_or("∞".into(), |w| format!("{w:.4}")),
@@ -468,7 +455,7 @@ fn ms_section() -> String {
         let _ = writeln!(
             o,
             "| {} | {} | {} | {} |",
-            e.id, cell.0, cell.1, c.ms_printed
+            c.example.id, cell.0, cell.1, c.ms_printed
         );
     }
     let _ = writeln!(
@@ -479,44 +466,18 @@ fn ms_section() -> String {
     );
 
     // Fig. 2 curves
-    let mut curves: Vec<(String, Family)> = vec![
-        ("PIPTD".into(), Family::Piptd { k: 1.0, theta: 1.0 }),
-        ("DIPTD".into(), Family::Diptd { k: 1.0, theta: 1.0 }),
-    ];
-    for r in [0.1, 0.3, 0.5, 0.8, 1.2] {
-        curves.push((
-            format!("IFOPTD θ/τ={r}"),
-            Family::Ifoptd {
-                k: 1.0,
-                tau: 1.0 / r,
-                theta: 1.0,
-            },
-        ));
-    }
-    for r in [0.1, 0.3, 0.5] {
-        curves.push((
-            format!("IFOPTD+zero θ/τ={r} z/τ=5"),
-            Family::IfoptdZero {
-                k: 1.0,
-                tau: 1.0 / r,
-                z: 5.0 / r,
-                theta: 1.0,
-            },
-        ));
-    }
+    let curves = studies::fig2();
+    let lams = studies::fig2_lambdas();
     let mut rows = Vec::new();
-    let lams: Vec<f64> = (0..=80)
-        .map(|i| 0.2 * (50.0f64).powf(i as f64 / 80.0))
-        .collect();
-    for (ci, (_, f)) in curves.iter().enumerate() {
-        for (&l, ms) in lams.iter().zip(mm::ms_curve(f, &lams)) {
+    for (ci, curve) in curves.iter().enumerate() {
+        for (&l, ms) in lams.iter().zip(&curve.ms) {
             rows.push(vec![ci as f64, l, ms.unwrap_or(f64::NAN)]);
         }
     }
     let legend: Vec<String> = curves
         .iter()
         .enumerate()
-        .map(|(i, (n, _))| format!("{i} = {n}"))
+        .map(|(i, c)| format!("{i} = {}", c.name))
         .collect();
     let file = write_csv(
         "medarametla_fig2_ms_lambda.csv",
@@ -540,85 +501,30 @@ fn ms_section() -> String {
         "| fit | θ/τ | Ms asked | λ/θ fit | λ/θ exact | Ms at the fit's λ |"
     );
     let _ = writeln!(o, "|---|---|---|---|---|---|");
-    let mut cases: Vec<(&str, Family, f64)> = Vec::new();
-    for ms in [1.3, 1.9, 2.5] {
-        cases.push(("PIPTD", Family::Piptd { k: 1.0, theta: 1.0 }, ms));
-        cases.push(("DIPTD", Family::Diptd { k: 1.0, theta: 1.0 }, ms));
-    }
-    for r in [0.1, 0.3, 0.5] {
-        for ms in [1.3, 1.9, 2.5] {
-            cases.push((
-                "IFOPTD (0.1–0.5)",
-                Family::Ifoptd {
-                    k: 1.0,
-                    tau: 1.0 / r,
-                    theta: 1.0,
-                },
-                ms,
-            ));
-        }
-    }
-    for r in [0.6, 0.9, 1.2] {
-        for ms in [1.5, 2.25, 3.0] {
-            cases.push((
-                "IFOPTD (0.5–1.2)",
-                Family::Ifoptd {
-                    k: 1.0,
-                    tau: 1.0 / r,
-                    theta: 1.0,
-                },
-                ms,
-            ));
-        }
-    }
-    for r in [0.1, 0.3, 0.5] {
-        for ms in [1.5, 2.0, 2.5] {
-            cases.push((
-                "IFOPTD+zero (z/τ = 5)",
-                Family::IfoptdZero {
-                    k: 1.0,
-                    tau: 1.0 / r,
-                    z: 5.0 / r,
-                    theta: 1.0,
-                },
-                ms,
-            ));
-        }
-    }
-    let mut worst: Vec<(&str, f64)> = Vec::new();
-    for (name, f, ms) in cases {
-        let r = match f {
-            Family::Ifoptd { tau, theta, .. } | Family::IfoptdZero { tau, theta, .. } => {
-                theta / tau
-            }
-            _ => f64::NAN,
-        };
-        let fit = mm::lambda_fit(&f, ms).map(|x| x.0);
-        let exact = mm::lambda_for_ms(&f, ms);
-        let ms_fit = fit
-            .as_ref()
-            .ok()
-            .and_then(|l| mm::design(&f, *l).ok())
-            .and_then(|d| mm::true_ms(&d).ok().flatten());
-        if let Some(m) = ms_fit {
-            match worst.iter_mut().find(|w| w.0 == name) {
-                Some(w) => w.1 = w.1.max((m - ms).abs() / ms),
-                None => worst.push((name, (m - ms).abs() / ms)),
-            }
-        }
+    let checks = studies::fit_checks();
+    for c in &checks {
+        let r = c.theta_over_tau;
         let _ = writeln!(
             o,
-            "| {name} | {} | {ms} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} |",
+            c.fit,
             if r.is_nan() {
                 "—".into()
             } else {
                 format!("{r:.2}")
             },
-            fit.map_or_else(|e| e.to_string(), |l| format!("{l:.4}")),
-            exact.map_or_else(|e| e.message, |l| format!("{l:.4}")),
-            ms_fit.map_or("unstable/invalid".into(), |m| format!("{m:.4}"))
+            c.ms,
+            c.fit_lambda
+                .as_ref()
+                .map_or_else(|e| e.to_string(), |l| format!("{l:.4}")),
+            c.exact_lambda
+                .as_ref()
+                .map_or_else(|e| e.message.clone(), |l| format!("{l:.4}")),
+            c.ms_at_fit
+                .map_or("unstable/invalid".into(), |m| format!("{m:.4}"))
         );
     }
+    let worst = studies::worst_fit_errors(&checks);
     let w: Vec<String> = worst
         .iter()
         .map(|(n, e)| format!("{n}: {:.1} %", 100.0 * e))

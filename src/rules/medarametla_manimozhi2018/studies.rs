@@ -1,17 +1,19 @@
 //! Medarametla & Manimozhi (2018): the paper's simulation studies as the reproduction report
 //! runs them, returning typed results (the report only formats them): the servo response
-//! against its design (CLARIFICATIONS (b)), Tables 4-5 (nominal and perturbed performance)
-//! and Example 6's closed loop on the nonlinear CSTR.
+//! against its design (CLARIFICATIONS (b)), Tables 4-5 (nominal and perturbed performance),
+//! Example 6's closed loop on the nonlinear CSTR, and Ms: the examples, the Table 2 settings,
+//! Fig. 2's curves and the true errors of the Table 1 fits.
 
 use super::cstr::{self, CstrParams, CstrRun, CstrScenario, OperatingPoint};
 use super::{
-    ajmeri_ali, comparisons, design, example5_process, examples, laguerre2, table45, Condition,
-    Example, Method,
+    ajmeri_ali, comparisons, design, example5_process, examples, laguerre2, lambda_fit,
+    lambda_for_ms, ms_curve, table45, true_ms, Condition, Example, Method,
 };
+use crate::analysis::freq::analyze;
 use crate::analysis::metrics::Metrics;
 use crate::error::Result;
 use crate::model::controller::Controller;
-use crate::model::plant::Plant;
+use crate::model::plant::{Family, Plant};
 use crate::model::tf::Tf;
 use crate::sim::{simulate, Scenario};
 
@@ -396,4 +398,233 @@ fn linear_cstr_run(
         tj_min: r.u.iter().map(|u| op.tj + u).fold(f64::MAX, f64::min),
         tj_max: r.u.iter().map(|u| op.tj + u).fold(f64::MIN, f64::max),
     })
+}
+
+// ---------------------------------------------------------------------------------------
+// Ms: the examples, the Table 2 settings, Fig. 2 and the Table 1 fits' true errors
+// ---------------------------------------------------------------------------------------
+
+/// The Ms of one loop (exact delay) and where it is reached.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MsPoint {
+    /// Ms (`None` when the loop is unstable).
+    pub ms: Option<f64>,
+    /// Its frequency (`None`: the ω → ∞ limit).
+    pub w_ms: Option<f64>,
+    /// The Nyquist verdict in words.
+    pub verdict: String,
+}
+
+/// The Ms of `c` on `plant`.
+pub fn ms_point(plant: &Plant, c: &Controller) -> Result<MsPoint> {
+    let a = analyze(plant, c)?;
+    Ok(MsPoint {
+        ms: a.ms,
+        w_ms: a.w_ms,
+        verdict: a.verdict,
+    })
+}
+
+/// The Ms of an example's design (the PID × filter, which alone sets Ms).
+#[derive(Debug, Clone)]
+pub struct ExampleMs {
+    /// The example.
+    pub example: Example,
+    /// Ms on the design model.
+    pub ms: Result<MsPoint>,
+    /// The exact λ for the printed Ms.
+    pub lambda_for_printed_ms: Result<f64>,
+    /// Example 5: the Ms on the process of Eq. (49).
+    pub on_eq49: Option<MsPoint>,
+}
+
+/// The Ms of every example's design (examples whose design fails are left out).
+pub fn examples_ms() -> Vec<ExampleMs> {
+    let mut v = Vec::new();
+    for e in examples() {
+        let Ok(d) = design(&e.family, e.lambda) else {
+            continue;
+        };
+        let Ok(c) = d.pid().to_controller() else {
+            continue;
+        };
+        v.push(ExampleMs {
+            example: e,
+            ms: ms_point(&e.family.plant(), &c),
+            lambda_for_printed_ms: lambda_for_ms(&e.family, e.ms_printed),
+            on_eq49: (e.id == "ex5")
+                .then(|| ms_point(&example5_process(), &c).ok())
+                .flatten(),
+        });
+    }
+    v
+}
+
+/// The Ms of an Anil & Padma Sree setting of Table 2 on its example's process.
+#[derive(Debug, Clone)]
+pub struct ComparisonMs {
+    /// The example.
+    pub example: Example,
+    /// Ms printed in Table 2.
+    pub ms_printed: f64,
+    /// Ours.
+    pub ms: Result<MsPoint>,
+}
+
+/// The Ms of the Anil & Padma Sree settings of Table 2 (their PID × filter as Cy).
+pub fn comparisons_ms() -> Vec<ComparisonMs> {
+    comparisons()
+        .into_iter()
+        .filter_map(|c| {
+            let e = examples().into_iter().find(|e| e.id == c.example)?;
+            let plant = process(&e);
+            Some(ComparisonMs {
+                example: e,
+                ms_printed: c.ms_printed,
+                ms: c.controller().and_then(|ctrl| ms_point(&plant, &ctrl)),
+            })
+        })
+        .collect()
+}
+
+/// One curve of Fig. 2: Ms against λ/θ (k = θ = 1).
+#[derive(Debug, Clone)]
+pub struct Fig2Curve {
+    /// Legend.
+    pub name: String,
+    /// The family.
+    pub family: Family,
+    /// The true Ms at each λ of [`fig2_lambdas`] (`None`: invalid design or unstable).
+    pub ms: Vec<Option<f64>>,
+}
+
+/// The λ grid of Fig. 2: 81 points from 0.2 to 10, geometric.
+pub fn fig2_lambdas() -> Vec<f64> {
+    (0..=80)
+        .map(|i| 0.2 * (50.0f64).powf(i as f64 / 80.0))
+        .collect()
+}
+
+/// Fig. 2's curves: PIPTD, DIPTD, IFOPTD at θ/τ = 0.1…1.2 and IFOPTD with a zero at
+/// θ/τ = 0.1, 0.3, 0.5 (z/τ = 5, Example 4's: the paper does not state it).
+pub fn fig2() -> Vec<Fig2Curve> {
+    let mut curves: Vec<(String, Family)> = vec![
+        ("PIPTD".into(), Family::Piptd { k: 1.0, theta: 1.0 }),
+        ("DIPTD".into(), Family::Diptd { k: 1.0, theta: 1.0 }),
+    ];
+    for r in [0.1, 0.3, 0.5, 0.8, 1.2] {
+        curves.push((format!("IFOPTD θ/τ={r}"), ifoptd(r)));
+    }
+    for r in [0.1, 0.3, 0.5] {
+        curves.push((format!("IFOPTD+zero θ/τ={r} z/τ=5"), ifoptd_zero(r)));
+    }
+    let lams = fig2_lambdas();
+    curves
+        .into_iter()
+        .map(|(name, family)| Fig2Curve {
+            name,
+            ms: ms_curve(&family, &lams),
+            family,
+        })
+        .collect()
+}
+
+/// IFOPTD with k = θ = 1 and θ/τ = `r`.
+fn ifoptd(r: f64) -> Family {
+    Family::Ifoptd {
+        k: 1.0,
+        tau: 1.0 / r,
+        theta: 1.0,
+    }
+}
+
+/// IFOPTD with a zero, k = θ = 1, θ/τ = `r`, z/τ = 5.
+fn ifoptd_zero(r: f64) -> Family {
+    Family::IfoptdZero {
+        k: 1.0,
+        tau: 1.0 / r,
+        z: 5.0 / r,
+        theta: 1.0,
+    }
+}
+
+/// One point of the Table 1 fits' true-error check.
+#[derive(Debug, Clone)]
+pub struct FitCheck {
+    /// Which fit.
+    pub fit: &'static str,
+    /// θ/τ (NaN for PIPTD and DIPTD).
+    pub theta_over_tau: f64,
+    /// The Ms asked for.
+    pub ms: f64,
+    /// λ/θ from the fit.
+    pub fit_lambda: Result<f64>,
+    /// The exact λ/θ for that Ms.
+    pub exact_lambda: Result<f64>,
+    /// The true Ms at the fit's λ (`None`: unstable or invalid).
+    pub ms_at_fit: Option<f64>,
+}
+
+/// The Table 1 fits at the corners and middle of their ranges.
+pub fn fit_checks() -> Vec<FitCheck> {
+    let mut cases: Vec<(&'static str, Family, f64)> = Vec::new();
+    for ms in [1.3, 1.9, 2.5] {
+        cases.push(("PIPTD", Family::Piptd { k: 1.0, theta: 1.0 }, ms));
+        cases.push(("DIPTD", Family::Diptd { k: 1.0, theta: 1.0 }, ms));
+    }
+    for r in [0.1, 0.3, 0.5] {
+        for ms in [1.3, 1.9, 2.5] {
+            cases.push(("IFOPTD (0.1–0.5)", ifoptd(r), ms));
+        }
+    }
+    for r in [0.6, 0.9, 1.2] {
+        for ms in [1.5, 2.25, 3.0] {
+            cases.push(("IFOPTD (0.5–1.2)", ifoptd(r), ms));
+        }
+    }
+    for r in [0.1, 0.3, 0.5] {
+        for ms in [1.5, 2.0, 2.5] {
+            cases.push(("IFOPTD+zero (z/τ = 5)", ifoptd_zero(r), ms));
+        }
+    }
+    cases
+        .into_iter()
+        .map(|(fit, f, ms)| {
+            let theta_over_tau = match f {
+                Family::Ifoptd { tau, theta, .. } | Family::IfoptdZero { tau, theta, .. } => {
+                    theta / tau
+                }
+                _ => f64::NAN,
+            };
+            let fit_lambda = lambda_fit(&f, ms).map(|x| x.0);
+            let ms_at_fit = fit_lambda
+                .as_ref()
+                .ok()
+                .and_then(|l| design(&f, *l).ok())
+                .and_then(|d| true_ms(&d).ok().flatten());
+            FitCheck {
+                fit,
+                theta_over_tau,
+                ms,
+                fit_lambda,
+                exact_lambda: lambda_for_ms(&f, ms),
+                ms_at_fit,
+            }
+        })
+        .collect()
+}
+
+/// The largest relative Ms error of each fit over `checks`, in order of first appearance.
+pub fn worst_fit_errors(checks: &[FitCheck]) -> Vec<(&'static str, f64)> {
+    let mut worst: Vec<(&'static str, f64)> = Vec::new();
+    for c in checks {
+        if let Some(m) = c.ms_at_fit {
+            let err = (m - c.ms).abs() / c.ms;
+            match worst.iter_mut().find(|w| w.0 == c.fit) {
+                Some(w) => w.1 = w.1.max(err),
+                None => worst.push((c.fit, err)),
+            }
+        }
+    }
+    worst
 }
