@@ -259,15 +259,8 @@ fn step_value(time: f64, size: f64, t: f64) -> f64 {
     }
 }
 
-/// Simulates the nonlinear CSTR from the steady state `op` under the controller `c`
-/// (deviation variables: `u` is added to `op.tj`, `r` and `y` are deviations from `op.t`),
-/// with the measurement delay `sc.delay`. Errors name `scenario.*` or the controller field.
-pub fn simulate(
-    p: &CstrParams,
-    op: &OperatingPoint,
-    c: &Controller,
-    sc: &CstrScenario,
-) -> Result<CstrRun> {
+/// Checks a CSTR scenario and returns the measurement delay and the run length in steps.
+fn check_scenario(sc: &CstrScenario) -> Result<(usize, usize)> {
     for (name, x) in [("t_end", sc.t_end), ("dt", sc.dt)] {
         if !(x.is_finite() && x > 0.0) {
             return Err(Error::new(
@@ -302,9 +295,21 @@ pub fn simulate(
             ));
         }
     }
+    Ok((nd as usize, steps as usize))
+}
+
+/// Simulates the nonlinear CSTR from the steady state `op` under the controller `c`
+/// (deviation variables: `u` is added to `op.tj`, `r` and `y` are deviations from `op.t`),
+/// with the measurement delay `sc.delay`. Errors name `scenario.*` or the controller field.
+pub fn simulate(
+    p: &CstrParams,
+    op: &OperatingPoint,
+    c: &Controller,
+    sc: &CstrScenario,
+) -> Result<CstrRun> {
+    let (nd, steps) = check_scenario(sc)?;
     let re = realize(c)?;
     let ss = &re.ss;
-    let (nd, steps) = (nd as usize, steps as usize);
     let h = sc.dt;
     let nc = ss.order();
     let nz = 2 + nc;
