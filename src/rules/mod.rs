@@ -113,7 +113,7 @@ pub enum Details {
     /// A paper not yet moved to typed details (transitional).
     Legacy(Map<String, Value>),
     /// Medarametla & Manimozhi 2018.
-    Medarametla2018(medarametla_manimozhi2018::Details),
+    Medarametla2018(Box<medarametla_manimozhi2018::Details>),
 }
 
 /// How a preset designs its controller.

@@ -819,7 +819,7 @@ pub fn tune_family(family: &Family, params: &Params) -> Result<Tuning> {
         method: ID.into(),
         controller,
         named: named(&d, p),
-        details: super::Details::Medarametla2018(details),
+        details: super::Details::Medarametla2018(Box::new(details)),
     })
 }
 
