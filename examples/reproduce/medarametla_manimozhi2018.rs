@@ -3,7 +3,7 @@
 
 use pidlab::analysis::metrics::Metrics;
 use pidlab::rules::medarametla_manimozhi2018 as mm;
-use pidlab::rules::medarametla_manimozhi2018::cstr::CstrParams;
+use pidlab::rules::medarametla_manimozhi2018::cstr::{CstrParams, OperatingPoint};
 use pidlab::rules::medarametla_manimozhi2018::studies;
 use pidlab::rules::medarametla_manimozhi2018::{Condition, Method};
 use std::fmt::Write;
@@ -96,7 +96,18 @@ pub fn report() -> String {
          Cr = F·G_c, derivative ideal.\n"
     );
 
-    // ---- Table 3
+    o.push_str(&table3_section());
+    o.push_str(&table1_section());
+    o.push_str(&servo_section());
+    o.push_str(&ms_section());
+    o.push_str(&tables45_section());
+    o.push_str(&cstr_section());
+    o
+}
+
+/// Table 3: our design against the printed parameters.
+fn table3_section() -> String {
+    let mut o = String::new();
     let _ = writeln!(o, "### Table 3 — controller parameters (ours / printed)\n");
     let _ = writeln!(o, "| Example | λ | k_p | k_i | k_d | a₁ | b₁ | b₂ |");
     let _ = writeln!(o, "|---|---|---|---|---|---|---|---|");
@@ -131,8 +142,12 @@ pub fn report() -> String {
          gives 1,604,557.8 (the exact rational solution, sympy, is 1,604,557.80; ERRATA.md quotes \
          1,604,559): a dropped digit. Example 5's a₁ = θ/4 = 0.319975 prints as 0.32.\n"
     );
+    o
+}
 
-    // ---- Table 1 fits
+/// Table 1: λ from the fits against λ in the text.
+fn table1_section() -> String {
+    let mut o = String::new();
     let _ = writeln!(o, "### Table 1 — λ from the fits (ours / text)\n");
     let _ = writeln!(
         o,
@@ -168,8 +183,12 @@ pub fn report() -> String {
          1.0761 for Example 4 (text 1.07). For Example 5 (θ/τ = 1.10) the 0.5–1.2 fit gives 1.139, while \
          the text's λ = 1.895 is where the paper *observed* Ms = 2.81; see the true Ms below.\n"
     );
+    o
+}
 
-    // ---- servo with the exact delay (CLARIFICATIONS (b))
+/// The servo response against its design, with the exact delay and with the Laguerre shift.
+fn servo_section() -> String {
+    let mut o = String::new();
     let _ = writeln!(o, "### Servo response: designed vs exact delay\n");
     let _ = writeln!(
         o,
@@ -198,11 +217,12 @@ pub fn report() -> String {
         );
     }
     let _ = writeln!(o);
+    o
+}
 
-    // ---- Ms
-    o.push_str(&ms_section());
-
-    // ---- Tables 4-5
+/// Tables 4-5: nominal and perturbed performance, ours (printed).
+fn tables45_section() -> String {
+    let mut o = String::new();
     let _ = writeln!(o, "### Tables 4–5 — performance (ours (printed))\n");
     let _ = writeln!(
         o,
@@ -245,9 +265,6 @@ pub fn report() -> String {
         }
         let _ = writeln!(o);
     }
-
-    // ---- CSTR
-    o.push_str(&cstr_section());
     o
 }
 
@@ -303,64 +320,7 @@ fn cstr_section() -> String {
         "| controller | run | model | IAE | TV | servo: max(T − 346), reg.: max abs(T − 344) (K) | T_j min (K) | T_j max (K) |"
     );
     let _ = writeln!(o, "|---|---|---|---|---|---|---|---|");
-    let t_end = 60.0;
-    let mut csv_rows: Vec<Vec<Vec<f64>>> = vec![vec![], vec![]];
-    for run in studies::cstr_study(&p, &op, t_end) {
-        let (name, run_name, sp) = (run.controller, run.run, run.sp);
-        let ri = if sp != 0.0 { 0 } else { 1 };
-        match &run.nonlinear {
-            Ok((r, m)) => {
-                let _ = writeln!(
-                    o,
-                    "| {name} | {run_name} | nonlinear | {:.4} (of y; of T: {:.4}) | {:.1} | {:.4} | {:.1} | {:.1} |",
-                    m.iae_y, m.iae_t, m.tv, m.peak, m.tj_min, m.tj_max
-                );
-                if name == "proposed" {
-                    for (k, t) in r.t.iter().enumerate().step_by(5) {
-                        csv_rows[ri].push(vec![
-                            *t,
-                            r.r[k],
-                            r.temp[k],
-                            r.y[k],
-                            r.ca[k],
-                            r.tj_cmd[k],
-                            r.tj[k],
-                        ]);
-                    }
-                }
-            }
-            Err(err) => {
-                let _ = writeln!(
-                    o,
-                    "| {name} | {run_name} | nonlinear | error: {err} | | | | |"
-                );
-            }
-        }
-        match &run.linear {
-            Ok(l) => {
-                let m = &l.metrics;
-                let _ = writeln!(
-                    o,
-                    "| {name} | {run_name} | Eq. (53) | {} | {} | {} | {:.1} | {:.1} |",
-                    m.as_ref().map_or("—".into(), |m| format!("{:.4}", m.iae)),
-                    m.as_ref().map_or("—".into(), |m| format!("{:.1}", m.tv)),
-                    m.as_ref().map_or("—".into(), |m| if sp != 0.0 {
-                        opt(m.overshoot.map(|x| x * sp))
-                    } else {
-                        format!("{:.4}", m.peak_error)
-                    }),
-                    l.tj_min,
-                    l.tj_max
-                );
-            }
-            Err(err) => {
-                let _ = writeln!(
-                    o,
-                    "| {name} | {run_name} | Eq. (53) | error: {err} | | | | |"
-                );
-            }
-        }
-    }
+    let csv_rows = cstr_runs(&mut o, &p, &op);
     let f1 = write_csv(
         "medarametla_cstr_servo.csv",
         "t,r,T,y_measured,CA,Tj_commanded,Tj",
@@ -465,7 +425,14 @@ fn ms_section() -> String {
          designs there (\"for fair comparison\") are the comparison method's values.\n"
     );
 
-    // Fig. 2 curves
+    o.push_str(&fig2_part());
+    o.push_str(&fits_part());
+    o
+}
+
+/// Fig. 2's Ms(λ) curves (CSV).
+fn fig2_part() -> String {
+    let mut o = String::new();
     let curves = studies::fig2();
     let lams = studies::fig2_lambdas();
     let mut rows = Vec::new();
@@ -490,8 +457,12 @@ fn ms_section() -> String {
          curves {}. The paper does not state the z/τ of Fig. 2(d); 5 (Example 4's) is used here.\n",
         legend.join(", ")
     );
+    o
+}
 
-    // fits' true errors
+/// The true errors of the Table 1 fits.
+fn fits_part() -> String {
+    let mut o = String::new();
     let _ = writeln!(
         o,
         "True errors of the Table 1 fits (at the corners and middle of their ranges):\n"
@@ -535,4 +506,68 @@ fn ms_section() -> String {
         w.join("; ")
     );
     o
+}
+
+/// Example 6's runs (nonlinear reactor and Eq. 53) as table rows; returns the proposed
+/// controller's nonlinear trajectories (servo, regulatory) as CSV rows.
+fn cstr_runs(o: &mut String, p: &CstrParams, op: &OperatingPoint) -> Vec<Vec<Vec<f64>>> {
+    let t_end = 60.0;
+    let mut csv_rows: Vec<Vec<Vec<f64>>> = vec![vec![], vec![]];
+    for run in studies::cstr_study(p, op, t_end) {
+        let (name, run_name, sp) = (run.controller, run.run, run.sp);
+        let ri = if sp != 0.0 { 0 } else { 1 };
+        match &run.nonlinear {
+            Ok((r, m)) => {
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | nonlinear | {:.4} (of y; of T: {:.4}) | {:.1} | {:.4} | {:.1} | {:.1} |",
+                    m.iae_y, m.iae_t, m.tv, m.peak, m.tj_min, m.tj_max
+                );
+                if name == "proposed" {
+                    for (k, t) in r.t.iter().enumerate().step_by(5) {
+                        csv_rows[ri].push(vec![
+                            *t,
+                            r.r[k],
+                            r.temp[k],
+                            r.y[k],
+                            r.ca[k],
+                            r.tj_cmd[k],
+                            r.tj[k],
+                        ]);
+                    }
+                }
+            }
+            Err(err) => {
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | nonlinear | error: {err} | | | | |"
+                );
+            }
+        }
+        match &run.linear {
+            Ok(l) => {
+                let m = &l.metrics;
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | Eq. (53) | {} | {} | {} | {:.1} | {:.1} |",
+                    m.as_ref().map_or("—".into(), |m| format!("{:.4}", m.iae)),
+                    m.as_ref().map_or("—".into(), |m| format!("{:.1}", m.tv)),
+                    m.as_ref().map_or("—".into(), |m| if sp != 0.0 {
+                        opt(m.overshoot.map(|x| x * sp))
+                    } else {
+                        format!("{:.4}", m.peak_error)
+                    }),
+                    l.tj_min,
+                    l.tj_max
+                );
+            }
+            Err(err) => {
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | Eq. (53) | error: {err} | | | | |"
+                );
+            }
+        }
+    }
+    csv_rows
 }
