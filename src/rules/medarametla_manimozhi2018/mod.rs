@@ -354,39 +354,6 @@ fn columns(family: &Family, tgt: &Poly) -> (Poly, [Poly; 5]) {
     (sd, [c_kp, c_ki, c_kd, c_b1, c_b2])
 }
 
-/// Solves a square system with nalgebra's LU after row and column equilibration (the
-/// coefficients span many decades for plants such as the CSTR); `None` when singular or not
-/// finite.
-fn lin_solve(m: DMatrix<f64>, rhs: DVector<f64>) -> Option<DVector<f64>> {
-    let scale = m.amax();
-    if !(scale.is_finite() && scale > 0.0) || m.nrows() != m.ncols() {
-        return None;
-    }
-    let n = m.nrows();
-    let mut m = m;
-    let mut rhs = rhs;
-    for i in 0..n {
-        let r = m.row(i).amax();
-        if r > 0.0 {
-            m.row_mut(i).scale_mut(1.0 / r);
-            rhs[i] /= r;
-        }
-    }
-    let mut cs = vec![1.0; n];
-    for (j, c) in cs.iter_mut().enumerate() {
-        let a = m.column(j).amax();
-        if a > 0.0 {
-            *c = 1.0 / a;
-            m.column_mut(j).scale_mut(*c);
-        }
-    }
-    let mut x = m.lu().solve(&rhs)?;
-    for (j, c) in cs.iter().enumerate() {
-        x[j] *= c;
-    }
-    x.iter().all(|v| v.is_finite()).then_some(x)
-}
-
 /// The design for a plant family and λ (no validation of the resulting filter; see
 /// [`design`]).
 fn solve(family: &Family, lambda: f64) -> Result<Design> {
@@ -407,8 +374,8 @@ fn solve(family: &Family, lambda: f64) -> Result<Design> {
         let m = DMatrix::from_fn(n, 4, |i, j| cols[idx[j]].coef(i + 1));
         let r0 = DVector::from_fn(n, |i, _| -c0.coef(i + 1));
         let r1 = DVector::from_fn(n, |i, _| -cols[1].coef(i + 1));
-        let x0 = lin_solve(m.clone(), r0).ok_or_else(singular)?;
-        let x1 = lin_solve(m, r1).ok_or_else(singular)?;
+        let x0 = crate::numerics::equilibrated_solve(m.clone(), r0).ok_or_else(singular)?;
+        let x1 = crate::numerics::equilibrated_solve(m, r1).ok_or_else(singular)?;
         // (B₁(k_i))² − 4B₂(k_i) = a k_i² + b k_i + c with c = 0 identically (the degenerate
         // root k_i = 0); the design is the other root.
         let a = x1[2] * x1[2];
@@ -427,7 +394,7 @@ fn solve(family: &Family, lambda: f64) -> Result<Design> {
         if m.nrows() != 5 {
             return Err(singular());
         }
-        let x = lin_solve(m, rhs).ok_or_else(singular)?;
+        let x = crate::numerics::equilibrated_solve(m, rhs).ok_or_else(singular)?;
         (x[0], x[1], x[2], x[3], x[4])
     };
     for (name, v) in [
