@@ -6,6 +6,15 @@
 //! P. K. Medarametla, M. Manimozhi, "Novel proportional-integral-derivative controller with
 //! second order filter for integrating processes", Asia-Pac. J. Chem. Eng. 13 (2018) e2195.
 //!
+//! # Folder
+//! - `mod.rs`: the rule (Eqs. 4-38 beside the code), its parameter declarations, typed
+//!   [`Details`] and the [`super::Rule`] implementation;
+//! - `tables.rs`: Table 1 (the λ fits), Table 3 and Tables 4-5 as printed, named data;
+//! - `settings.rs`: Examples 1-6, Table 2's comparison settings (Anil & Padma Sree; Ajmeri &
+//!   Ali with their model loop) and the presets;
+//! - `studies.rs`: the simulation studies the reproduction report runs, as typed results;
+//! - `cstr.rs`: Example 6's nonlinear jacketed CSTR (Eqs. 51-53, Table 6).
+//!
 //! # Structure (Fig. 1)
 //! `r → F → (+) → G_c → G_p`, one-degree-of-freedom `G_c` on the filtered error, so
 //! `Cr = F·G_c`, `Cy = G_c` with
