@@ -8,11 +8,12 @@
 //! registered method tuned on its first preset.
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::simulate;
 use pidlab::api;
 use pidlab::model::controller::Controller;
 use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use serde_json::Value;
 use std::hint::black_box;
 use std::time::Instant;

@@ -12,6 +12,7 @@
 //! 25 + 6θ/T time constants.
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::simulate;
 use pidlab::model::controller::{Controller, Pid};
 use pidlab::model::plant::{Family, Plant};
 use pidlab::model::poly::Poly;
@@ -19,7 +20,7 @@ use pidlab::model::tf::Tf;
 use pidlab::rules::kaya2020::{
     default_n, normalized_settings, table_for, Criterion, TABLE_I, TABLE_II,
 };
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 /// The rule's I-PD as shipped (derivative filter N from `default_n`) on the normalized plant.

@@ -7,7 +7,8 @@
 //! ```
 //! use pidlab::model::plant::Family;
 //! use pidlab::model::controller::Pid;
-//! use pidlab::sim::{simulate, Scenario};
+//! use pidlab::analysis::simulate;
+//! use pidlab::sim::Scenario;
 //! use pidlab::analysis::freq::analyze;
 //!
 //! // Boiler steam drum (Arvanitis et al. 2012): 0.547(1 − 0.418 s)e^{−0.1 s}/(s(1.06 s + 1))

@@ -1,9 +1,10 @@
 //! Paper loops as end-to-end checks of simulate + metrics.
 
+use pidlab::analysis::simulate;
 use pidlab::model::controller::Pid;
 use pidlab::model::plant::{Family, Plant};
 use pidlab::model::tf::Tf;
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 #[wasm_bindgen_test(unsupported = test)]

@@ -6,11 +6,12 @@
 //! error, and the analysis verdicts.
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::simulate;
 use pidlab::api;
 use pidlab::model::controller::{Controller, ModelLoop, Pid};
 use pidlab::model::plant::{Family, Plant};
 use pidlab::model::tf::Tf;
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use serde_json::json;
 use wasm_bindgen_test::wasm_bindgen_test;
 

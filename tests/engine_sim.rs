@@ -3,10 +3,11 @@
 //! neutral loop) and a much finer step of a different integrator (RK4 with Hermite
 //! interpolation of the delayed input) on the boiler with an ideal derivative (neutral loop).
 
+use pidlab::analysis::simulate;
 use pidlab::model::controller::{lead_lag, Controller, Pid};
 use pidlab::model::plant::{Family, Plant};
 use pidlab::model::tf::Tf;
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 mod common;

@@ -395,8 +395,9 @@ fn pade33(theta: f64) -> pidlab::model::tf::Tf {
 /// Measured: 1.939 vs 1.942.
 #[wasm_bindgen_test(unsupported = test)]
 fn default_filter_stable_and_close_to_design_loop() {
+    use pidlab::analysis::simulate;
     use pidlab::model::controller::Controller;
-    use pidlab::sim::{simulate, Scenario};
+    use pidlab::sim::Scenario;
     let t = tune(&EX1.plant(), Params::default()).unwrap();
     let a = pidlab::analysis::freq::analyze(&EX1.plant(), &t.controller).unwrap();
     let hf = pidlab::api::tuning_json(&t)["details"]["derivative_filter"]["hf_loop_gain"]
@@ -434,7 +435,8 @@ fn default_filter_stable_and_close_to_design_loop() {
 /// VI and V, as the paper states (ours: 2 % and 4 % against 7.5-60 %).
 #[wasm_bindgen_test(unsupported = test)]
 fn examples_2_3_least_overshoot() {
-    use pidlab::sim::{simulate, Scenario};
+    use pidlab::analysis::simulate;
+    use pidlab::sim::Scenario;
     for (ex, plant) in [(2, kaya2020::ex2_plant()), (3, kaya2020::ex3_plant())] {
         let (t_end, sp, d_time, d_size) = kaya2020::scenario_of(ex);
         let sc = Scenario::steps(t_end, 0.05, 0.0, sp, d_time, d_size);

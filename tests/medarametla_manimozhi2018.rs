@@ -544,7 +544,7 @@ fn servo_response_on_the_laguerre_model_is_exact() {
         let t_end = 6.0 * (th + 2.0 * e.p);
         let dt = t_end / 300.0;
         let sc = pidlab::sim::Scenario::steps(t_end, dt, 0.0, 1.0, 0.0, 0.0);
-        let res = pidlab::sim::simulate(&plant, &c, &sc).unwrap();
+        let res = pidlab::analysis::simulate(&plant, &c, &sc).unwrap();
         assert!(!res.diverged, "{}", e.id);
         let want = step_response_rk4(&d.laguerre_servo_order(e.p, n), &res.t, 1e-3 * th);
         let err = res
@@ -571,7 +571,7 @@ fn servo_response_with_the_exact_delay_is_close() {
     let d = mm::design(&f, 2.2).unwrap();
     let c = d.controller(1.0).unwrap();
     let sc = pidlab::sim::Scenario::steps(30.0, 0.01, 0.0, 1.0, 0.0, 0.0);
-    let res = pidlab::sim::simulate(&f.plant(), &c, &sc).unwrap();
+    let res = pidlab::analysis::simulate(&f.plant(), &c, &sc).unwrap();
     let dev = res
         .t
         .iter()
@@ -609,7 +609,8 @@ const TABLE45: [(&str, bool, f64, f64, f64); 10] = [
 /// for Example 5 (see `mm::Example`), +20 % gain and delay for Table 5.
 #[wasm_bindgen_test(unsupported = test)]
 fn tables_4_5_proposed_rows_within_two_percent() {
-    use pidlab::sim::{simulate, Scenario};
+    use pidlab::analysis::simulate;
+    use pidlab::sim::Scenario;
     for (id, perturbed, s_iae, r_iae, r_os) in TABLE45 {
         let e = example(id);
         let c = mm::design(&e.family, e.lambda)
@@ -694,8 +695,8 @@ fn ms_of_the_examples_and_lambda_for_target_ms() {
 /// and the suggested scenario simulates without error or divergence.
 #[wasm_bindgen_test(unsupported = test)]
 fn presets_load_and_simulate() {
+    use pidlab::analysis::simulate;
     use pidlab::model::controller::Controller;
-    use pidlab::sim::simulate;
     let presets = mm::typed_presets();
     assert_eq!(
         presets.len(),
@@ -764,8 +765,9 @@ fn json_api_tune() {
 /// `T/T_j` (exact second-order, 1 s delay) up to the nonlinearity, O(step²).
 #[wasm_bindgen_test(unsupported = test)]
 fn cstr_small_step_matches_the_linearization() {
+    use pidlab::analysis::simulate;
     use pidlab::model::plant::Plant;
-    use pidlab::sim::{simulate, Scenario};
+    use pidlab::sim::Scenario;
     let p = CstrParams::paper();
     let op = p.steady_state_at(344.0);
     let lin = p.linearize(op.ca, op.t);
@@ -824,7 +826,8 @@ fn cstr_small_step_matches_the_linearization() {
 /// Table 4, rows "Ajmeri-Ali" of Examples 1-3.
 #[wasm_bindgen_test(unsupported = test)]
 fn ajmeri_ali_table4_nominal_rows() {
-    use pidlab::sim::{simulate, Scenario};
+    use pidlab::analysis::simulate;
+    use pidlab::sim::Scenario;
     // (example, servo IAE, reg. IAE, reg. peak) as printed in Table 4
     let printed = [
         ("ex1", 9.06, 6.2, 0.33),

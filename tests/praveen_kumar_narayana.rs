@@ -1,11 +1,12 @@
 //! Praveen Kumar & Narayana: PID × lead-lag by pole placement (seed 004_e7142b8c2f5ed265.txt).
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::simulate;
 use pidlab::model::plant::Family;
 use pidlab::model::poly::Poly;
 use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 fn plant_of(p: &IpdtIr) -> pidlab::model::plant::Plant {

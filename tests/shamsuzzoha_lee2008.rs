@@ -3,6 +3,7 @@
 //! simulated Table 1, robustness of the routine over random plants.
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::simulate;
 use pidlab::model::controller::Pid;
 use pidlab::model::plant::{Family, Plant};
 use pidlab::model::poly::Poly;
@@ -10,7 +11,7 @@ use pidlab::rules::shamsuzzoha_lee2008::{
     design, design_model, imc_pid, setpoint_filter, studies, weighting_filter, ImcModel,
 };
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 /// Half a unit of the last printed digit: the printed value is our value rounded.

@@ -3,10 +3,11 @@
 //! the exact computation, the responses of Figs. 8-12 with their metrics, and timings.
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::simulate;
 use pidlab::model::controller::{Controller, Pid};
 use pidlab::rules::arvanitis2012::*;
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 use std::time::Instant;
 
@@ -271,7 +272,7 @@ pub fn report() -> String {
     let mut written = vec![];
     if std::fs::create_dir_all("docs/figures").is_ok() {
         for (n, keys) in figs {
-            let cols: Vec<(&str, &pidlab::sim::SimResult)> = keys
+            let cols: Vec<(&str, &pidlab::analysis::SimResult)> = keys
                 .iter()
                 .filter_map(|k| sims.get(*k).map(|r| (*k, r)))
                 .collect();

@@ -2,10 +2,11 @@
 //! the independently checked values of ERRATA.md / CLARIFICATIONS.md.
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::simulate;
 use pidlab::model::controller::{lead_lag, Pid};
 use pidlab::model::plant::{Family, Plant};
 use pidlab::model::tf::Tf;
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 
 pub fn report() -> String {
     let mut s = String::from("## Engine: exact dead-time loops\n\n");

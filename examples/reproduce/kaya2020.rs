@@ -1,6 +1,7 @@
 //! Reproduction section: Kaya (2020), I-PD rules for stable inverse-response processes.
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::{simulate, SimResult};
 use pidlab::model::controller::Controller;
 use pidlab::model::plant::{Family, Plant};
 use pidlab::model::poly::Poly;
@@ -9,7 +10,7 @@ use pidlab::rules::kaya2020::{
     self, comparisons, example_ipd, normalized_settings, reduce_to_fopdt_ir_with, scenario_of,
     settings, Criterion, Reduction, EX1, EX1_PERTURBED, EX2_MODEL, EX3_MODEL, TABLE_I,
 };
-use pidlab::sim::{simulate, Scenario, SimResult};
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 /// A simulation and its Ms cell, or the error.

@@ -2,11 +2,12 @@
 //! inverse response (`praveen_kumar`).
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::simulate;
 use pidlab::model::controller::Controller;
 use pidlab::model::plant::Plant;
 use pidlab::rules::praveen_kumar_narayana::{self as pk, IpdtIr};
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 fn num(m: &serde_json::Map<String, serde_json::Value>, k: &str) -> f64 {

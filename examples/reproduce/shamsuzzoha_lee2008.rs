@@ -4,13 +4,14 @@
 //! (CSV under `docs/figures/`).
 
 use pidlab::analysis::freq::analyze;
+use pidlab::analysis::simulate;
 use pidlab::model::controller::Controller;
 use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::shamsuzzoha_lee2008 as ssl;
 use pidlab::rules::shamsuzzoha_lee2008::{
     design, imc_pid, lambda_for_ms, studies, weighting_filter, ImcModel, DIP_ALPHA,
 };
-use pidlab::sim::{simulate, Scenario};
+use pidlab::sim::Scenario;
 use std::fmt::Write;
 
 struct Perf {

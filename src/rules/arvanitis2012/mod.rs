@@ -43,13 +43,14 @@
 //!   built on the normalized process, reproduce it within their printed errors.
 
 use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
+use crate::analysis::simulate;
 use crate::api::controller_json;
 use crate::error::{Error, Result};
 use crate::model::controller::{lead_lag, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use crate::numerics::{brent, golden_min, positive_real_roots};
-use crate::sim::{simulate, Scenario};
+use crate::sim::Scenario;
 use serde_json::{json, Map, Value};
 use std::f64::consts::PI;
 

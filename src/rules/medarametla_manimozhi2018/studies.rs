@@ -11,11 +11,12 @@ use super::{
 };
 use crate::analysis::freq::analyze;
 use crate::analysis::metrics::Metrics;
+use crate::analysis::simulate;
 use crate::error::Result;
 use crate::model::controller::Controller;
 use crate::model::plant::{Family, Plant};
 use crate::model::tf::Tf;
-use crate::sim::{simulate, Scenario};
+use crate::sim::Scenario;
 
 /// The process an example's controllers act on (Example 5: Eq. 49, not its model).
 pub fn process(e: &Example) -> Plant {

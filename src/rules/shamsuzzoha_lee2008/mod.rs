@@ -1384,7 +1384,7 @@ pub fn liu_load_response(t_d: f64, d: f64, t_end: f64, dt: f64) -> Result<(f64, 
     let open = Controller::new(Tf::gain(0.0), Tf::gain(0.0))?;
     let sc = Scenario::steps(t_end, dt, 0.0, 0.0, t_d, d);
     let run = |tf: Tf, delay: f64| -> Result<Vec<f64>> {
-        Ok(crate::sim::simulate(&Plant::new(tf, delay)?, &open, &sc)?.y)
+        Ok(crate::analysis::simulate(&Plant::new(tf, delay)?, &open, &sc)?.y)
     };
     let y1 = run(g, theta)?;
     let y2 = run(td_g, 2.0 * theta)?;
