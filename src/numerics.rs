@@ -253,3 +253,43 @@ pub fn golden_bracket(
     }
     (a, b)
 }
+
+// ------------------------------------------------------------------------------------------
+// Medarametla & Manimozhi 2018: a square linear solve robust to badly scaled rows and columns
+// (moved from the rule folder).
+
+/// Solves a square system with nalgebra's LU after row and column equilibration (for
+/// coefficients spanning many decades, e.g. Medarametla's coefficient matching on the CSTR);
+/// `None` when singular or not finite.
+pub fn equilibrated_solve(
+    m: nalgebra::DMatrix<f64>,
+    rhs: nalgebra::DVector<f64>,
+) -> Option<nalgebra::DVector<f64>> {
+    let scale = m.amax();
+    if !(scale.is_finite() && scale > 0.0) || m.nrows() != m.ncols() {
+        return None;
+    }
+    let n = m.nrows();
+    let mut m = m;
+    let mut rhs = rhs;
+    for i in 0..n {
+        let r = m.row(i).amax();
+        if r > 0.0 {
+            m.row_mut(i).scale_mut(1.0 / r);
+            rhs[i] /= r;
+        }
+    }
+    let mut cs = vec![1.0; n];
+    for (j, c) in cs.iter_mut().enumerate() {
+        let a = m.column(j).amax();
+        if a > 0.0 {
+            *c = 1.0 / a;
+            m.column_mut(j).scale_mut(*c);
+        }
+    }
+    let mut x = m.lu().solve(&rhs)?;
+    for (j, c) in cs.iter().enumerate() {
+        x[j] *= c;
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}

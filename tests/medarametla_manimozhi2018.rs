@@ -10,6 +10,22 @@ use pidlab::rules::medarametla_manimozhi2018::cstr::{self, CstrParams, CstrScena
 use pidlab::rules::{self, Params};
 use wasm_bindgen_test::wasm_bindgen_test;
 
+/// The typed details of a tuning of this paper.
+fn details(t: &rules::Tuning) -> &mm::Details {
+    match &t.details {
+        rules::Details::Medarametla2018(d) => d,
+        other => panic!("not a Medarametla tuning: {other:?}"),
+    }
+}
+
+/// Ms of the design check in the details.
+fn details_ms(t: &rules::Tuning) -> Option<f64> {
+    match &details(t).check {
+        rules::DesignCheck::Done { ms, .. } => *ms,
+        rules::DesignCheck::Failed { analysis_error } => panic!("{analysis_error}"),
+    }
+}
+
 fn example(id: &str) -> mm::Example {
     mm::examples()
         .into_iter()
@@ -25,17 +41,15 @@ fn half_ulp(printed: &str) -> f64 {
 
 #[wasm_bindgen_test(unsupported = test)]
 fn table3_parameters_to_printed_digits() {
-    // Table 3 as printed (mm::TABLE3_PRINTED). The CSTR's k_i prints to the ten (168,150) and its
+    // Table 3 as printed (mm::TABLE3). The CSTR's k_i prints to the ten (168,150) and its
     // k_d drops a digit (160,460, ERRATA.md): both are checked separately below.
-    for (id, row) in mm::TABLE3_PRINTED {
+    for row in mm::TABLE3 {
+        let id = row.example;
         let e = example(id);
         let d = mm::design(&e.family, e.lambda).unwrap();
         let ours = [d.kp, d.ki, d.kd, d.a1, d.b1, d.b2];
-        for (name, (printed, v)) in ["kp", "ki", "kd", "a1", "b1", "b2"]
-            .iter()
-            .zip(row.iter().zip(ours))
-        {
-            if *printed == "—" || (id == "ex6" && matches!(*name, "ki" | "kd")) {
+        for ((name, printed), v) in row.cells().into_iter().zip(ours) {
+            if printed == "—" || (id == "ex6" && matches!(name, "ki" | "kd")) {
                 continue;
             }
             let printed = printed.replace(',', "");
@@ -347,27 +361,11 @@ fn tune_through_the_registry() {
         &Params::default().with("lambda", 2.4776).with("p", 1.7),
     )
     .unwrap();
-    assert!(
-        (pidlab::api::tuning_json(&t)["named"]["kp"]
-            .as_f64()
-            .unwrap()
-            - 0.2247)
-            .abs()
-            < 5e-5
-    );
-    assert_eq!(
-        pidlab::api::tuning_json(&t)["named"]["p"].as_f64().unwrap(),
-        1.7
-    );
+    assert!((t.named("kp").unwrap() - 0.2247).abs() < 5e-5);
+    assert_eq!(t.named("p").unwrap(), 1.7);
     let t = rules::tune(mm::ID, &f.plant(), &Params::default().with("fit_ms", 3.0)).unwrap();
-    assert_eq!(
-        pidlab::api::tuning_json(&t)["details"]["lambda_source"],
-        "fit_ms"
-    );
-    assert!(!pidlab::api::tuning_json(&t)["details"]["warnings"]
-        .as_array()
-        .unwrap()
-        .is_empty());
+    assert_eq!(details(&t).lambda_source, mm::LambdaSource::FitMs);
+    assert!(!details(&t).warnings.is_empty());
     let e = rules::tune(mm::ID, &f.plant(), &Params::default()).unwrap_err();
     assert_eq!(e.path, "params.lambda");
     let e = rules::tune(
@@ -377,7 +375,7 @@ fn tune_through_the_registry() {
     )
     .unwrap_err();
     assert_eq!(e.path, "params.p");
-    assert!(mm::legacy_presets().len() >= 12);
+    assert!(mm::typed_presets().len() >= 12);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -688,26 +686,9 @@ fn ms_of_the_examples_and_lambda_for_target_ms() {
         &Params::default().with("target_ms", 2.0),
     )
     .unwrap();
-    assert_eq!(
-        pidlab::api::tuning_json(&t)["details"]["lambda_source"],
-        "target_ms"
-    );
-    assert!(
-        (pidlab::api::tuning_json(&t)["details"]["ms"]
-            .as_f64()
-            .unwrap()
-            - 2.0)
-            .abs()
-            < 1e-6
-    );
-    assert!(
-        (pidlab::api::tuning_json(&t)["named"]["lambda"]
-            .as_f64()
-            .unwrap()
-            - l)
-            .abs()
-            < 1e-9
-    );
+    assert_eq!(details(&t).lambda_source, mm::LambdaSource::TargetMs);
+    assert!((details_ms(&t).unwrap() - 2.0).abs() < 1e-6);
+    assert!((t.named("lambda").unwrap() - l).abs() < 1e-9);
 }
 
 /// Every preset loads: method presets tune from their plant object, literal controllers parse,
@@ -716,73 +697,35 @@ fn ms_of_the_examples_and_lambda_for_target_ms() {
 fn presets_load_and_simulate() {
     use pidlab::analysis::simulate;
     use pidlab::model::controller::Controller;
-    use pidlab::model::plant::Plant;
-    use pidlab::sim::Scenario;
-    let presets = mm::legacy_presets();
+    let presets = mm::typed_presets();
     assert_eq!(
         presets.len(),
         16,
         "6 examples, Ex. 5 on Eq. (49), 6 Anil & Padma Sree and 3 Ajmeri & Ali settings"
     );
     for p in presets {
-        let plant = if let Some(fam) = p.plant["family"].as_str() {
-            Family::from_params(fam, |n| p.plant[n].as_f64())
-                .unwrap()
-                .plant()
-        } else {
-            let v = |k: &str| -> Vec<f64> {
-                p.plant[k]
-                    .as_array()
-                    .unwrap()
-                    .iter()
-                    .map(|x| x.as_f64().unwrap())
-                    .collect()
-            };
-            Plant::from_desc(&v("num"), &v("den"), p.plant["delay"].as_f64().unwrap()).unwrap()
+        let c = match &p.design {
+            rules::Design::Controller(c) => {
+                // the Ajmeri & Ali presets carry their internal model, and keep it through the
+                // JSON the page receives
+                let json = pidlab::api::controller_json(c);
+                let full = pidlab::api::parse_controller(&json, "controller").unwrap();
+                assert_eq!(full.cr, c.cr);
+                assert_eq!(
+                    full.model_loop.is_some(),
+                    p.id.ends_with("ajmeri-ali"),
+                    "{}",
+                    p.id
+                );
+                assert_eq!(c.model_loop.is_some(), full.model_loop.is_some());
+                full
+            }
+            rules::Design::Rule { method, params } => {
+                rules::tune(method, &p.plant, params).unwrap().controller
+            }
         };
-        let c = if p.tune.is_null() {
-            let v = |a: &str, b: &str| -> Vec<f64> {
-                p.controller[a][b]
-                    .as_array()
-                    .unwrap()
-                    .iter()
-                    .map(|x| x.as_f64().unwrap())
-                    .collect()
-            };
-            let c = Controller::from_desc(
-                &v("cr", "num"),
-                &v("cr", "den"),
-                &v("cy", "num"),
-                &v("cy", "den"),
-            )
-            .unwrap();
-            // the Ajmeri & Ali presets carry their internal model: the full JSON parser
-            let full = pidlab::api::parse_controller(&p.controller, "controller").unwrap();
-            assert_eq!(full.cr, c.cr);
-            assert_eq!(
-                full.model_loop.is_some(),
-                p.id.ends_with("ajmeri-ali"),
-                "{}",
-                p.id
-            );
-            full
-        } else {
-            let params = pidlab::api::params_from_json(&p.tune["params"]).unwrap();
-            rules::tune(p.tune["method"].as_str().unwrap(), &plant, &params)
-                .unwrap()
-                .controller
-        };
-        let sc = &p.scenario;
-        let g = |a: &str, b: &str| sc[a][b].as_f64().unwrap();
-        let scen = Scenario::steps(
-            sc["t_end"].as_f64().unwrap(),
-            sc["dt"].as_f64().unwrap(),
-            g("setpoint", "time"),
-            g("setpoint", "size"),
-            g("disturbance", "time"),
-            g("disturbance", "size"),
-        );
-        let r = simulate(&plant, &c, &scen).unwrap_or_else(|e| panic!("{}: {e}", p.id));
+        let c: Controller = c;
+        let r = simulate(&p.plant, &c, &p.scenario).unwrap_or_else(|e| panic!("{}: {e}", p.id));
         assert!(!r.diverged, "{}", p.id);
     }
 }

@@ -2,12 +2,10 @@
 //! integrating processes (Table 3, Table 1 / Fig. 2, Tables 4-5, Example 6's CSTR).
 
 use pidlab::analysis::metrics::Metrics;
-use pidlab::analysis::simulate;
-use pidlab::model::controller::Controller;
-use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::medarametla_manimozhi2018 as mm;
-use pidlab::rules::medarametla_manimozhi2018::cstr::{self, CstrParams, CstrScenario};
-use pidlab::sim::Scenario;
+use pidlab::rules::medarametla_manimozhi2018::cstr::{CstrParams, OperatingPoint};
+use pidlab::rules::medarametla_manimozhi2018::studies;
+use pidlab::rules::medarametla_manimozhi2018::{Condition, Method};
 use std::fmt::Write;
 
 fn f4(x: f64) -> String {
@@ -22,113 +20,6 @@ fn f4(x: f64) -> String {
 
 fn opt(x: Option<f64>) -> String {
     x.map_or("—".into(), |v| format!("{v:.3}"))
-}
-
-/// Tables 4 and 5, proposed and Anil & Padma Sree rows: servo (IAE, TV, OS, t_s),
-/// regulatory (IAE, TV, OS, t_s). NaN: not printed/garbled.
-struct Printed {
-    id: &'static str,
-    nominal: [[f64; 8]; 2],
-    perturbed: [[f64; 8]; 2],
-}
-
-fn printed() -> Vec<Printed> {
-    vec![
-        Printed {
-            id: "ex1",
-            nominal: [
-                [11.6, 5.92, 0.0, 25.1, 5.47, 3.455, 0.303, 52.3],
-                [11.41, 6.36, 0.001, 27.62, 5.08, 3.16, 0.303, 50.13],
-            ],
-            perturbed: [
-                [12.94, 8.9492, 0.123, 52.03, 5.468, 5.342, 0.401, 61.35],
-                [13.05, 10.74, 0.118, 52.02, 5.302, 5.586, 0.403, 61.60],
-            ],
-        },
-        Printed {
-            id: "ex2",
-            nominal: [
-                [6.1, 0.22, 0.0, 13.78, 37.53, 3.15, 4.077, 23.4],
-                [5.962, 0.193, 0.01, 12.06, 70.58, 3.39, 7.033, 24.87],
-            ],
-            perturbed: [
-                [6.180, 0.293, 0.004, 14.90, 37.64, 4.15, 4.27, 23.81],
-                [6.074, 0.242, 0.010, 14.23, 71.04, 4.177, 7.354, 26.04],
-            ],
-        },
-        Printed {
-            id: "ex3",
-            nominal: [
-                [4.00, 11.33, 0.0, 8.57, 0.87, 1.8733, 0.124, 18.15],
-                [4.57, 8.21, 0.1, 14.4, 1.11, 3.15, 0.174, 19.48],
-            ],
-            perturbed: [
-                [4.005, 18.33, 0.001, 9.92, 0.871, 3.275, 0.142, 18.74],
-                [4.052, 10.8, 0.042, 14.34, 1.055, 4.063, 0.199, 14.42],
-            ],
-        },
-        Printed {
-            id: "ex4",
-            nominal: [
-                [2.602, 0.252, 0.0, 5.85, 14.00, 3.01, 4.47, 12.28],
-                [4.338, 0.396, 0.514, 12.27, 17.18, 3.15, 5.04, 13.01],
-            ],
-            perturbed: [
-                [2.828, 0.377, 0.06, 11.48, 19.32, 5.4, 5.91, 15.343],
-                [4.833, 0.681, 0.81, 18.22, 27.48, 6.21, 6.55, 19.72],
-            ],
-        },
-        Printed {
-            id: "ex5",
-            nominal: [
-                [4.419, 2.21, 0.01, 9.48, 6.444, 3.777, 0.967, 18.77],
-                [4.094, 2.42, 0.02, 9.12, 6.484, 3.637, 1.061, 17.52],
-            ],
-            perturbed: [
-                [4.494, 3.968, 0.039, 18.23, 6.447, 6.610, 1.211, 20.99],
-                [4.407, 4.135, 0.078, 20.43, 6.635, 6.563, 1.111, 23.51],
-            ],
-        },
-    ]
-}
-
-/// Tables 4-5, Ajmeri & Ali rows (Examples 1-3), same columns as [`Printed`].
-fn ajmeri_printed(id: &str, perturbed: bool) -> [f64; 8] {
-    match (id, perturbed) {
-        ("ex1", false) => [9.06, 8.56, 0.0, 22.9, 6.2, 2.8425, 0.33, 55.25],
-        ("ex1", true) => [13.03, 13.94, 0.261, 53.01, 6.244, 4.8722, 0.432, 64.34],
-        ("ex2", false) => [10.67, 0.0714, 0.0, 29.85, 543.63, 3.1042, 20.26, 65.88],
-        ("ex2", true) => [10.75, 0.082, 0.002, 32.02, 545.7, 3.754, 19.9, 66.61],
-        ("ex3", false) => [4.594, 8.38, 0.0, 13.1, 2.842, 2.8342, 0.259, 28.93],
-        ("ex3", true) => [4.595, 12.05, 0.0, 18.88, 2.84, 3.826, 0.289, 19.81],
-        _ => [f64::NAN; 8],
-    }
-}
-
-/// The process the examples' controllers act on (Example 5: Eq. 49, not its model).
-fn process(e: &mm::Example) -> Plant {
-    if e.id == "ex5" {
-        mm::example5_process()
-    } else {
-        e.family.plant()
-    }
-}
-
-/// Servo and regulatory metrics; with `servo = false` only the load step is applied (the
-/// servo metrics are then `None`).
-fn run(
-    plant: &Plant,
-    c: &Controller,
-    e: &mm::Example,
-    servo: bool,
-) -> Option<(Option<Metrics>, Metrics)> {
-    let sp = if servo { e.sp_size } else { 0.0 };
-    let sc = Scenario::steps(2.0 * e.d_time, 0.1, 0.0, sp, e.d_time, e.d_size);
-    let r = simulate(plant, c, &sc).ok()?;
-    if r.diverged {
-        return None;
-    }
-    Some((r.metrics.servo, r.metrics.regulatory?))
 }
 
 fn row(out: &mut String, label: &str, m: Option<(Option<Metrics>, Metrics)>, p: &[f64; 8]) {
@@ -205,20 +96,33 @@ pub fn report() -> String {
          Cr = F·G_c, derivative ideal.\n"
     );
 
-    // ---- Table 3
+    o.push_str(&table3_section());
+    o.push_str(&table1_section());
+    o.push_str(&servo_section());
+    o.push_str(&ms_section());
+    o.push_str(&tables45_section());
+    o.push_str(&cstr_section());
+    o
+}
+
+/// Table 3: our design against the printed parameters.
+fn table3_section() -> String {
+    let mut o = String::new();
     let _ = writeln!(o, "### Table 3 — controller parameters (ours / printed)\n");
     let _ = writeln!(o, "| Example | λ | k_p | k_i | k_d | a₁ | b₁ | b₂ |");
     let _ = writeln!(o, "|---|---|---|---|---|---|---|---|");
-    for (e, (_, pr)) in mm::examples().iter().zip(mm::TABLE3_PRINTED.iter()) {
+    for e in mm::examples() {
+        let Some(printed) = mm::table3(e.id) else {
+            continue;
+        };
         match mm::design(&e.family, e.lambda) {
             Ok(d) => {
                 let ours = [d.kp, d.ki, d.kd, d.a1, d.b1, d.b2];
                 let cells: Vec<String> = ours
                     .iter()
-                    .zip(pr)
-                    .enumerate()
-                    .map(|(i, (v, p))| {
-                        if i == 5 && d.square_filter {
+                    .zip(printed.cells())
+                    .map(|(v, (name, p))| {
+                        if name == "b2" && d.square_filter {
                             format!("(b₁² = {}) / {p}", f4(*v))
                         } else {
                             format!("{} / {p}", f4(*v))
@@ -238,8 +142,12 @@ pub fn report() -> String {
          gives 1,604,557.8 (the exact rational solution, sympy, is 1,604,557.80; ERRATA.md quotes \
          1,604,559): a dropped digit. Example 5's a₁ = θ/4 = 0.319975 prints as 0.32.\n"
     );
+    o
+}
 
-    // ---- Table 1 fits
+/// Table 1: λ from the fits against λ in the text.
+fn table1_section() -> String {
+    let mut o = String::new();
     let _ = writeln!(o, "### Table 1 — λ from the fits (ours / text)\n");
     let _ = writeln!(
         o,
@@ -275,8 +183,12 @@ pub fn report() -> String {
          1.0761 for Example 4 (text 1.07). For Example 5 (θ/τ = 1.10) the 0.5–1.2 fit gives 1.139, while \
          the text's λ = 1.895 is where the paper *observed* Ms = 2.81; see the true Ms below.\n"
     );
+    o
+}
 
-    // ---- servo with the exact delay (CLARIFICATIONS (b))
+/// The servo response against its design, with the exact delay and with the Laguerre shift.
+fn servo_section() -> String {
+    let mut o = String::new();
     let _ = writeln!(o, "### Servo response: designed vs exact delay\n");
     let _ = writeln!(
         o,
@@ -289,73 +201,28 @@ pub fn report() -> String {
     );
     let _ = writeln!(o, "| Example | n | max abs(y − e^{{−θs}}/(ps+1)ⁿ), exact delay | Laguerre-model response vs its design |");
     let _ = writeln!(o, "|---|---|---|---|");
-    let cases: Vec<(mm::Example, u32)> = mm::examples()
-        .into_iter()
-        .flat_map(|e| {
-            if e.p_order == 2 {
-                vec![(e, 2)]
-            } else {
-                vec![(e, 2), (e, e.p_order)]
-            }
-        })
-        .collect();
-    for (e, order) in cases {
-        let Ok(d) = mm::design(&e.family, e.lambda) else {
-            continue;
-        };
-        let Ok(c) = d.controller_order(e.p, order) else {
-            continue;
-        };
-        let n = order as i32;
-        let th = e.family.theta();
-        let t_end = 6.0 * (th + 3.0 * e.p) + e.lambda * 6.0;
-        let sc = Scenario::steps(t_end, t_end / 600.0, 0.0, 1.0, 0.0, 0.0);
-        // e^{−θs}/(ps+1)ⁿ step: 1 − e^{−x} Σ_{k<n} x^k/k!, x = (t − θ)/p
-        let ideal = |t: f64| {
-            let x = (t - th).max(0.0) / e.p;
-            let mut sum = 0.0;
-            let mut term = 1.0;
-            for k in 0..n {
-                if k > 0 {
-                    term *= x / k as f64;
-                }
-                sum += term;
-            }
-            1.0 - (-x).exp() * sum
-        };
-        let dev = simulate(&e.family.plant(), &c, &sc).map(|r| {
-            r.t.iter()
-                .zip(&r.y)
-                .map(|(t, y)| (y - ideal(*t)).abs())
-                .fold(0.0, f64::max)
-        });
-        let pl = Plant::new(e.family.rational().mul(&mm::laguerre2(th)), 0.0);
-        let want = d.laguerre_servo_order(e.p, order);
-        let lag = pl.and_then(|p| simulate(&p, &c, &sc)).map(|r| {
-            let w = step_rk4(&want, &r.t, 1e-3 * th);
-            r.y.iter()
-                .zip(&w)
-                .map(|(y, v)| (y - v).abs())
-                .fold(0.0, f64::max)
-        });
+    for check in studies::servo_checks() {
         let _ = writeln!(
             o,
             "| {} | {} | {} | {} |",
-            e.id,
-            n,
-            dev.map_or_else(
+            check.example.id,
+            check.order,
+            check.exact_delay.map_or_else(
                 |er| er.to_string(),
                 |v| format!("{:.3} % of the step", 100.0 * v)
             ),
-            lag.map_or_else(|er| er.to_string(), |v| format!("{v:.1e}"))
+            check
+                .laguerre
+                .map_or_else(|er| er.to_string(), |v| format!("{v:.1e}"))
         );
     }
     let _ = writeln!(o);
+    o
+}
 
-    // ---- Ms
-    o.push_str(&ms_section());
-
-    // ---- Tables 4-5
+/// Tables 4-5: nominal and perturbed performance, ours (printed).
+fn tables45_section() -> String {
+    let mut o = String::new();
     let _ = writeln!(o, "### Tables 4–5 — performance (ours (printed))\n");
     let _ = writeln!(
         o,
@@ -376,55 +243,28 @@ pub fn report() -> String {
          (the size of the load step) in most nominal rows, as if the paper summed the variation of the \
          plant input u + d; TV depends on how u was sampled and is reported, not asserted.\n"
     );
-    let ex = mm::examples();
-    for (title, perturbed) in [
-        ("Nominal (Table 4)", false),
-        ("Perturbed, +20 % gain and delay (Table 5)", true),
+    for (title, condition) in [
+        ("Nominal (Table 4)", Condition::Nominal),
+        (
+            "Perturbed, +20 % gain and delay (Table 5)",
+            Condition::Perturbed,
+        ),
     ] {
         let _ = writeln!(o, "#### {title}\n");
         let _ = writeln!(o, "| Process / method | servo IAE | servo TV | servo OS | servo t_s | reg. IAE | reg. TV | reg. OS | reg. t_s |");
         let _ = writeln!(o, "|---|---|---|---|---|---|---|---|---|");
-        for p in printed() {
-            let Some(e) = ex.iter().find(|e| e.id == p.id) else {
-                continue;
+        for r in studies::tables_4_5(condition) {
+            let e = &r.example;
+            let label = match r.method {
+                Method::Proposed => format!("{} proposed (p = {}, n = {})", e.id, e.p, e.p_order),
+                Method::AnilPadmaSree => format!("{} Anil & Padma Sree", e.id),
+                Method::AjmeriAli => format!("{} Ajmeri & Ali (PCS)", e.id),
             };
-            let mut plant = process(e);
-            if perturbed {
-                plant = plant.with_gain_delay(1.2, 1.2);
-            }
-            let pr = if perturbed { &p.perturbed } else { &p.nominal };
-            let prop = mm::design(&e.family, e.lambda)
-                .and_then(|d| d.controller_order(e.p, e.p_order))
-                .ok();
-            let label = format!("{} proposed (p = {}, n = {})", e.id, e.p, e.p_order);
-            row(
-                &mut o,
-                &label,
-                prop.and_then(|c| run(&plant, &c, e, true)),
-                &pr[0],
-            );
-            if let Some(cmp) = mm::comparisons().into_iter().find(|c| c.example == e.id) {
-                let m = cmp.controller().ok().and_then(|c| {
-                    let servo = c.cr.relative_degree() >= 0;
-                    run(&plant, &c, e, servo)
-                });
-                row(&mut o, &format!("{} Anil & Padma Sree", e.id), m, &pr[1]);
-            }
-            if let Some(aa) = mm::ajmeri_ali().into_iter().find(|a| a.example == e.id) {
-                // the internal model stays the nominal one when the process is perturbed
-                let m = aa
-                    .controller(&e.family.plant())
-                    .ok()
-                    .and_then(|c| run(&plant, &c, e, true));
-                let pa = ajmeri_printed(e.id, perturbed);
-                row(&mut o, &format!("{} Ajmeri & Ali (PCS)", e.id), m, &pa);
-            }
+            let m = r.run.map(|run| (run.servo, run.regulatory));
+            row(&mut o, &label, m, &r.printed);
         }
         let _ = writeln!(o);
     }
-
-    // ---- CSTR
-    o.push_str(&cstr_section());
     o
 }
 
@@ -468,13 +308,6 @@ fn cstr_section() -> String {
         "k agrees to its printed digits; z and τ to 5e-5 and 7e-6 relative (the last digits depend on \
          the unstated rounding of the operating point).\n"
     );
-    let e = mm::examples().into_iter().find(|e| e.id == "ex6");
-    let Some(e) = e else { return o };
-    let prop = mm::design(&e.family, e.lambda).and_then(|d| d.controller_order(e.p, e.p_order));
-    let anil = mm::comparisons()
-        .into_iter()
-        .find(|c| c.example == "ex6")
-        .map(|c| c.controller());
     let _ = writeln!(
         o,
         "Closed loop on the **nonlinear** reactor (RK4, h = 0.01 s, 1 s measurement delay; `pidlab::rules::medarametla_manimozhi2018::cstr`), \
@@ -487,124 +320,7 @@ fn cstr_section() -> String {
         "| controller | run | model | IAE | TV | servo: max(T − 346), reg.: max abs(T − 344) (K) | T_j min (K) | T_j max (K) |"
     );
     let _ = writeln!(o, "|---|---|---|---|---|---|---|---|");
-    let t_end = 60.0;
-    let mut csv_rows: Vec<Vec<Vec<f64>>> = vec![vec![], vec![]];
-    for (name, c) in [
-        ("proposed", prop.ok()),
-        ("Anil & Padma Sree", anil.and_then(|c| c.ok())),
-    ] {
-        let Some(c) = c else { continue };
-        for (ri, (run_name, sp, dj)) in [
-            ("servo 344→346 K", 2.0, 0.0),
-            ("regulatory T_j −7.4 K", 0.0, -7.4),
-        ]
-        .iter()
-        .enumerate()
-        {
-            let sc = CstrScenario {
-                t_end,
-                dt: 0.01,
-                delay: 1.0,
-                sp_time: 0.0,
-                sp_size: *sp,
-                d_time: 0.0,
-                d_size: *dj,
-            };
-            match cstr::simulate(&p, &op, &c, &sc) {
-                Ok(r) => {
-                    let target = op.t + sp;
-                    let iae: f64 = r
-                        .temp
-                        .windows(2)
-                        .map(|w| 0.5 * ((w[0] - target).abs() + (w[1] - target).abs()) * 0.01)
-                        .sum();
-                    let iae_y: f64 =
-                        r.y.windows(2)
-                            .map(|w| 0.5 * ((w[0] - target).abs() + (w[1] - target).abs()) * 0.01)
-                            .sum();
-                    let tv: f64 = r
-                        .tj_cmd
-                        .iter()
-                        .step_by(10)
-                        .collect::<Vec<_>>()
-                        .windows(2)
-                        .map(|w| (w[1] - w[0]).abs())
-                        .sum();
-                    // servo: overshoot above the new set point; regulatory: peak deviation
-                    let peak = if *sp != 0.0 {
-                        r.temp.iter().map(|t| t - target).fold(0.0, f64::max)
-                    } else {
-                        r.temp
-                            .iter()
-                            .map(|t| (t - target).abs())
-                            .fold(0.0, f64::max)
-                    };
-                    let tjmin = r.tj_cmd.iter().cloned().fold(f64::MAX, f64::min);
-                    let tjmax = r.tj_cmd.iter().cloned().fold(f64::MIN, f64::max);
-                    let _ = writeln!(
-                        o,
-                        "| {name} | {run_name} | nonlinear | {iae_y:.4} (of y; of T: {iae:.4}) | {tv:.1} | {peak:.4} | {tjmin:.1} | {tjmax:.1} |"
-                    );
-                    if name == "proposed" {
-                        for (k, t) in r.t.iter().enumerate().step_by(5) {
-                            csv_rows[ri].push(vec![
-                                *t,
-                                r.r[k],
-                                r.temp[k],
-                                r.y[k],
-                                r.ca[k],
-                                r.tj_cmd[k],
-                                r.tj[k],
-                            ]);
-                        }
-                    }
-                }
-                Err(err) => {
-                    let _ = writeln!(
-                        o,
-                        "| {name} | {run_name} | nonlinear | error: {err} | | | | |"
-                    );
-                }
-            }
-            let sc = Scenario::steps(
-                t_end,
-                0.1,
-                0.0,
-                *sp,
-                if *dj != 0.0 { 0.0 } else { t_end + 1.0 },
-                *dj,
-            );
-            let sc = if *sp == 0.0 {
-                Scenario::steps(t_end, 0.1, 0.0, 0.0, 0.0, *dj)
-            } else {
-                sc
-            };
-            match simulate(&e.family.plant(), &c, &sc) {
-                Ok(r) => {
-                    let m = if *sp != 0.0 {
-                        r.metrics.servo
-                    } else {
-                        r.metrics.regulatory
-                    };
-                    let tjmin = r.u.iter().map(|u| op.tj + u).fold(f64::MAX, f64::min);
-                    let tjmax = r.u.iter().map(|u| op.tj + u).fold(f64::MIN, f64::max);
-                    let _ = writeln!(
-                        o,
-                        "| {name} | {run_name} | Eq. (53) | {} | {} | {} | {tjmin:.1} | {tjmax:.1} |",
-                        m.as_ref().map_or("—".into(), |m| format!("{:.4}", m.iae)),
-                        m.as_ref().map_or("—".into(), |m| format!("{:.1}", m.tv)),
-                        m.as_ref().map_or("—".into(), |m| if *sp != 0.0 { opt(m.overshoot.map(|x| x * sp)) } else { format!("{:.4}", m.peak_error) }),
-                    );
-                }
-                Err(err) => {
-                    let _ = writeln!(
-                        o,
-                        "| {name} | {run_name} | Eq. (53) | error: {err} | | | | |"
-                    );
-                }
-            }
-        }
-    }
+    let csv_rows = cstr_runs(&mut o, &p, &op);
     let f1 = write_csv(
         "medarametla_cstr_servo.csv",
         "t,r,T,y_measured,CA,Tj_commanded,Tj",
@@ -628,46 +344,6 @@ fn cstr_section() -> String {
     o
 }
 
-/// Unit-step response of a proper rational `g` at `times` by classical RK4 (step `h`) on its
-/// controllable canonical realization (an independent reference for the simulator).
-fn step_rk4(g: &pidlab::model::tf::Tf, times: &[f64], h: f64) -> Vec<f64> {
-    let (q, r) = g.split_improper();
-    let d0 = q.coef(0);
-    let n = g.den.degree();
-    let lead = g.den.leading();
-    let a: Vec<f64> = (0..n).map(|i| g.den.coef(i) / lead).collect();
-    let c: Vec<f64> = (0..n).map(|i| r.num.coef(i) / lead).collect();
-    let f = |x: &[f64]| -> Vec<f64> {
-        let mut dx = vec![0.0; n];
-        if n > 0 {
-            dx[..n - 1].copy_from_slice(&x[1..]);
-            dx[n - 1] = 1.0 - (0..n).map(|i| a[i] * x[i]).sum::<f64>();
-        }
-        dx
-    };
-    let mut x = vec![0.0; n];
-    let mut t = 0.0;
-    let mut out = Vec::with_capacity(times.len());
-    for &tt in times {
-        while t < tt - 1e-12 {
-            let hh = h.min(tt - t);
-            let k1 = f(&x);
-            let x2: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * hh * k1[i]).collect();
-            let k2 = f(&x2);
-            let x3: Vec<f64> = (0..n).map(|i| x[i] + 0.5 * hh * k2[i]).collect();
-            let k3 = f(&x3);
-            let x4: Vec<f64> = (0..n).map(|i| x[i] + hh * k3[i]).collect();
-            let k4 = f(&x4);
-            for i in 0..n {
-                x[i] += hh / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-            }
-            t += hh;
-        }
-        out.push(d0 + (0..n).map(|i| c[i] * x[i]).sum::<f64>());
-    }
-    out
-}
-
 /// Ms of the examples, Fig. 2's Ms(λ) curves (CSV) and the Table 1 fits' true errors.
 fn ms_section() -> String {
     let mut o = String::new();
@@ -685,15 +361,9 @@ fn ms_section() -> String {
         "| Example | λ (text) | Ms ours | at ω | Ms printed | exact λ for the printed Ms |"
     );
     let _ = writeln!(o, "|---|---|---|---|---|---|");
-    for e in mm::examples() {
-        let Ok(d) = mm::design(&e.family, e.lambda) else {
-            continue;
-        };
-        let Ok(c) = d.pid().to_controller() else {
-            continue;
-        };
-        let a = pidlab::analysis::freq::analyze(&e.family.plant(), &c);
-        let (ms, w) = match &a {
+    for row in studies::examples_ms() {
+        let e = &row.example;
+        let (ms, w) = match &row.ms {
             Ok(a) => (
                 a.ms.map_or("—".into(), |m| format!("{m:.4}")),
                 a.w_ms
@@ -701,22 +371,22 @@ fn ms_section() -> String {
             ),
             Err(er) => (er.to_string(), String::new()),
         };
-        let l = mm::lambda_for_ms(&e.family, e.ms_printed)
+        let l = row
+            .lambda_for_printed_ms
+            .as_ref()
             .map_or_else(|er| er.to_string(), |l| format!("{l:.4}"));
         let _ = writeln!(
             o,
             "| {} | {} | {ms} | {w} | {} | {l} |",
             e.id, e.lambda, e.ms_printed
         );
-        if e.id == "ex5" {
-            if let Ok(a) = pidlab::analysis::freq::analyze(&mm::example5_process(), &c) {
-                let _ = writeln!(
-                    o,
-                    "| ex5 controller on the process of Eq. (49) | 1.895 | {} | {} | 2.81 | |",
-                    a.ms.map_or("—".into(), |m| format!("{m:.4}")),
-                    a.w_ms.map_or("∞".into(), |w| format!("{w:.4}"))
-                );
-            }
+        if let Some(a) = &row.on_eq49 {
+            let _ = writeln!(
+                o,
+                "| ex5 controller on the process of Eq. (49) | 1.895 | {} | {} | 2.81 | |",
+                a.ms.map_or("—".into(), |m| format!("{m:.4}")),
+                a.w_ms.map_or("∞".into(), |w| format!("{w:.4}"))
+            );
         }
     }
     let _ = writeln!(
@@ -733,15 +403,9 @@ fn ms_section() -> String {
     );
     let _ = writeln!(o, "| Example | Ms ours | at ω | Ms printed |");
     let _ = writeln!(o, "|---|---|---|---|");
-    for c in mm::comparisons() {
-        let Some(e) = mm::examples().into_iter().find(|e| e.id == c.example) else {
-            continue;
-        };
-        let plant = process(&e);
-        let cell = c
-            .controller()
-            .and_then(|ctrl| pidlab::analysis::freq::analyze(&plant, &ctrl))
-            .map(|a| {
+    for c in studies::comparisons_ms() {
+        let cell =
+            c.ms.map(|a| {
                 (
                     a.ms.map_or(format!("— ({})", a.verdict), |m| format!("{m:.4}")),
                     a.w_ms.map_or("∞".into(), |w| format!("{w:.4}")),
@@ -751,7 +415,7 @@ fn ms_section() -> String {
         let _ = writeln!(
             o,
             "| {} | {} | {} | {} |",
-            e.id, cell.0, cell.1, c.ms_printed
+            c.example.id, cell.0, cell.1, c.ms_printed
         );
     }
     let _ = writeln!(
@@ -761,45 +425,26 @@ fn ms_section() -> String {
          designs there (\"for fair comparison\") are the comparison method's values.\n"
     );
 
-    // Fig. 2 curves
-    let mut curves: Vec<(String, Family)> = vec![
-        ("PIPTD".into(), Family::Piptd { k: 1.0, theta: 1.0 }),
-        ("DIPTD".into(), Family::Diptd { k: 1.0, theta: 1.0 }),
-    ];
-    for r in [0.1, 0.3, 0.5, 0.8, 1.2] {
-        curves.push((
-            format!("IFOPTD θ/τ={r}"),
-            Family::Ifoptd {
-                k: 1.0,
-                tau: 1.0 / r,
-                theta: 1.0,
-            },
-        ));
-    }
-    for r in [0.1, 0.3, 0.5] {
-        curves.push((
-            format!("IFOPTD+zero θ/τ={r} z/τ=5"),
-            Family::IfoptdZero {
-                k: 1.0,
-                tau: 1.0 / r,
-                z: 5.0 / r,
-                theta: 1.0,
-            },
-        ));
-    }
+    o.push_str(&fig2_part());
+    o.push_str(&fits_part());
+    o
+}
+
+/// Fig. 2's Ms(λ) curves (CSV).
+fn fig2_part() -> String {
+    let mut o = String::new();
+    let curves = studies::fig2();
+    let lams = studies::fig2_lambdas();
     let mut rows = Vec::new();
-    let lams: Vec<f64> = (0..=80)
-        .map(|i| 0.2 * (50.0f64).powf(i as f64 / 80.0))
-        .collect();
-    for (ci, (_, f)) in curves.iter().enumerate() {
-        for (&l, ms) in lams.iter().zip(mm::ms_curve(f, &lams)) {
+    for (ci, curve) in curves.iter().enumerate() {
+        for (&l, ms) in lams.iter().zip(&curve.ms) {
             rows.push(vec![ci as f64, l, ms.unwrap_or(f64::NAN)]);
         }
     }
     let legend: Vec<String> = curves
         .iter()
         .enumerate()
-        .map(|(i, (n, _))| format!("{i} = {n}"))
+        .map(|(i, c)| format!("{i} = {}", c.name))
         .collect();
     let file = write_csv(
         "medarametla_fig2_ms_lambda.csv",
@@ -812,8 +457,12 @@ fn ms_section() -> String {
          curves {}. The paper does not state the z/τ of Fig. 2(d); 5 (Example 4's) is used here.\n",
         legend.join(", ")
     );
+    o
+}
 
-    // fits' true errors
+/// The true errors of the Table 1 fits.
+fn fits_part() -> String {
+    let mut o = String::new();
     let _ = writeln!(
         o,
         "True errors of the Table 1 fits (at the corners and middle of their ranges):\n"
@@ -823,85 +472,30 @@ fn ms_section() -> String {
         "| fit | θ/τ | Ms asked | λ/θ fit | λ/θ exact | Ms at the fit's λ |"
     );
     let _ = writeln!(o, "|---|---|---|---|---|---|");
-    let mut cases: Vec<(&str, Family, f64)> = Vec::new();
-    for ms in [1.3, 1.9, 2.5] {
-        cases.push(("PIPTD", Family::Piptd { k: 1.0, theta: 1.0 }, ms));
-        cases.push(("DIPTD", Family::Diptd { k: 1.0, theta: 1.0 }, ms));
-    }
-    for r in [0.1, 0.3, 0.5] {
-        for ms in [1.3, 1.9, 2.5] {
-            cases.push((
-                "IFOPTD (0.1–0.5)",
-                Family::Ifoptd {
-                    k: 1.0,
-                    tau: 1.0 / r,
-                    theta: 1.0,
-                },
-                ms,
-            ));
-        }
-    }
-    for r in [0.6, 0.9, 1.2] {
-        for ms in [1.5, 2.25, 3.0] {
-            cases.push((
-                "IFOPTD (0.5–1.2)",
-                Family::Ifoptd {
-                    k: 1.0,
-                    tau: 1.0 / r,
-                    theta: 1.0,
-                },
-                ms,
-            ));
-        }
-    }
-    for r in [0.1, 0.3, 0.5] {
-        for ms in [1.5, 2.0, 2.5] {
-            cases.push((
-                "IFOPTD+zero (z/τ = 5)",
-                Family::IfoptdZero {
-                    k: 1.0,
-                    tau: 1.0 / r,
-                    z: 5.0 / r,
-                    theta: 1.0,
-                },
-                ms,
-            ));
-        }
-    }
-    let mut worst: Vec<(&str, f64)> = Vec::new();
-    for (name, f, ms) in cases {
-        let r = match f {
-            Family::Ifoptd { tau, theta, .. } | Family::IfoptdZero { tau, theta, .. } => {
-                theta / tau
-            }
-            _ => f64::NAN,
-        };
-        let fit = mm::lambda_fit(&f, ms).map(|x| x.0);
-        let exact = mm::lambda_for_ms(&f, ms);
-        let ms_fit = fit
-            .as_ref()
-            .ok()
-            .and_then(|l| mm::design(&f, *l).ok())
-            .and_then(|d| mm::true_ms(&d).ok().flatten());
-        if let Some(m) = ms_fit {
-            match worst.iter_mut().find(|w| w.0 == name) {
-                Some(w) => w.1 = w.1.max((m - ms).abs() / ms),
-                None => worst.push((name, (m - ms).abs() / ms)),
-            }
-        }
+    let checks = studies::fit_checks();
+    for c in &checks {
+        let r = c.theta_over_tau;
         let _ = writeln!(
             o,
-            "| {name} | {} | {ms} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} |",
+            c.fit,
             if r.is_nan() {
                 "—".into()
             } else {
                 format!("{r:.2}")
             },
-            fit.map_or_else(|e| e.to_string(), |l| format!("{l:.4}")),
-            exact.map_or_else(|e| e.message, |l| format!("{l:.4}")),
-            ms_fit.map_or("unstable/invalid".into(), |m| format!("{m:.4}"))
+            c.ms,
+            c.fit_lambda
+                .as_ref()
+                .map_or_else(|e| e.to_string(), |l| format!("{l:.4}")),
+            c.exact_lambda
+                .as_ref()
+                .map_or_else(|e| e.message.clone(), |l| format!("{l:.4}")),
+            c.ms_at_fit
+                .map_or("unstable/invalid".into(), |m| format!("{m:.4}"))
         );
     }
+    let worst = studies::worst_fit_errors(&checks);
     let w: Vec<String> = worst
         .iter()
         .map(|(n, e)| format!("{n}: {:.1} %", 100.0 * e))
@@ -912,4 +506,68 @@ fn ms_section() -> String {
         w.join("; ")
     );
     o
+}
+
+/// Example 6's runs (nonlinear reactor and Eq. 53) as table rows; returns the proposed
+/// controller's nonlinear trajectories (servo, regulatory) as CSV rows.
+fn cstr_runs(o: &mut String, p: &CstrParams, op: &OperatingPoint) -> Vec<Vec<Vec<f64>>> {
+    let t_end = 60.0;
+    let mut csv_rows: Vec<Vec<Vec<f64>>> = vec![vec![], vec![]];
+    for run in studies::cstr_study(p, op, t_end) {
+        let (name, run_name, sp) = (run.controller, run.run, run.sp);
+        let ri = if sp != 0.0 { 0 } else { 1 };
+        match &run.nonlinear {
+            Ok((r, m)) => {
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | nonlinear | {:.4} (of y; of T: {:.4}) | {:.1} | {:.4} | {:.1} | {:.1} |",
+                    m.iae_y, m.iae_t, m.tv, m.peak, m.tj_min, m.tj_max
+                );
+                if name == "proposed" {
+                    for (k, t) in r.t.iter().enumerate().step_by(5) {
+                        csv_rows[ri].push(vec![
+                            *t,
+                            r.r[k],
+                            r.temp[k],
+                            r.y[k],
+                            r.ca[k],
+                            r.tj_cmd[k],
+                            r.tj[k],
+                        ]);
+                    }
+                }
+            }
+            Err(err) => {
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | nonlinear | error: {err} | | | | |"
+                );
+            }
+        }
+        match &run.linear {
+            Ok(l) => {
+                let m = &l.metrics;
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | Eq. (53) | {} | {} | {} | {:.1} | {:.1} |",
+                    m.as_ref().map_or("—".into(), |m| format!("{:.4}", m.iae)),
+                    m.as_ref().map_or("—".into(), |m| format!("{:.1}", m.tv)),
+                    m.as_ref().map_or("—".into(), |m| if sp != 0.0 {
+                        opt(m.overshoot.map(|x| x * sp))
+                    } else {
+                        format!("{:.4}", m.peak_error)
+                    }),
+                    l.tj_min,
+                    l.tj_max
+                );
+            }
+            Err(err) => {
+                let _ = writeln!(
+                    o,
+                    "| {name} | {run_name} | Eq. (53) | error: {err} | | | | |"
+                );
+            }
+        }
+    }
+    csv_rows
 }

@@ -120,6 +120,8 @@ pub enum Details {
     PraveenKumarNarayana(Box<praveen_kumar_narayana::Details>),
     /// Kaya (2020).
     Kaya2020(Box<kaya2020::Details>),
+    /// Medarametla & Manimozhi 2018.
+    Medarametla2018(Box<medarametla_manimozhi2018::Details>),
 }
 
 /// How a preset designs its controller.

@@ -31,8 +31,9 @@
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::poly::Poly;
+use crate::model::ss::ControllerSs;
 use crate::model::tf::Tf;
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DVector;
 
 /// Parameters of Eqs. (51)-(52) (SI units of Table 6: m³, s, K, kJ, kmol, kg).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -235,108 +236,19 @@ pub struct CstrRun {
     pub diverged: bool,
 }
 
-/// A joint state-space realization of `u = Cr r − Cy y` (observable canonical form over a
-/// common denominator, shared integrators merged), ideal derivatives split off:
-/// `ẋ = A x + B [r, y]ᵀ`, `u = C x + D [r, y]ᵀ − k_dy ẏ`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Realization {
-    /// State matrix.
-    pub a: DMatrix<f64>,
-    /// Input matrix (columns r, y).
-    pub b: DMatrix<f64>,
-    /// Output row.
-    pub c: DVector<f64>,
-    /// Feedthrough of r.
-    pub d_r: f64,
-    /// Feedthrough of y (carries the minus sign).
-    pub d_y: f64,
-    /// Coefficient of the ideal derivative on y (`u −= k_dy ẏ`).
-    pub k_dy: f64,
-}
-
-fn divides(d: &Poly, n: &Poly) -> bool {
-    match n.div_rem(d) {
-        Ok((_, r)) => r.max_abs() <= 1e-10 * n.max_abs().max(1e-300),
-        Err(_) => false,
-    }
-}
-
-/// Realizes a controller for [`simulate`]. Errors: `cr.num` when Cr is improper (a
-/// set-point step would be an impulse), `cy.num` when Cy is improper by more than one.
-pub fn realize(c: &Controller) -> Result<Realization> {
+/// Realizes a controller for [`simulate`] with [`crate::model::ss`]: `(Cr, −Cy)` jointly over
+/// a common denominator (shared integrators merged), the ideal derivative on y split off,
+/// `ẋ = A x + B [r, y]ᵀ`, `u = C x + D [r, y]ᵀ − k_dy ẏ`. Errors: `cr.num` when Cr is
+/// improper (a set-point step would be an impulse), `cy.num` when Cy is improper by more
+/// than one.
+pub fn realize(c: &Controller) -> Result<ControllerSs> {
     if c.cr.relative_degree() < 0 {
         return Err(Error::new(
             "cr.num",
             "must be proper for a set-point step (no ideal derivative on r)",
         ));
     }
-    let (dr, dy) = (&c.cr.den, &c.cy.den);
-    let cd = if divides(dy, dr) {
-        dr.clone()
-    } else if divides(dr, dy) {
-        dy.clone()
-    } else {
-        // merge the integrators, multiply the rest
-        let (kr, ky) = (dr.zero_root_multiplicity(), dy.zero_root_multiplicity());
-        let k = kr.max(ky);
-        let mut sp = vec![0.0; k + 1];
-        sp[k] = 1.0;
-        Poly::from_asc(&sp)
-            .mul(&dr.shift_down(kr))
-            .mul(&dy.shift_down(ky))
-    };
-    let over = |n: &Poly, d: &Poly, path: &str| -> Result<Poly> {
-        let (q, r) = cd.div_rem(d)?;
-        if r.max_abs() > 1e-9 * cd.max_abs() {
-            return Err(Error::new(
-                path,
-                "internal: common denominator is not a multiple",
-            ));
-        }
-        Ok(n.mul(&q))
-    };
-    let nr = over(&c.cr.num, dr, "cr.den")?;
-    let ny = over(&c.cy.num, dy, "cy.den")?;
-    let (qy, rem_y) = ny.div_rem(&cd)?;
-    if qy.degree() > 1 {
-        return Err(Error::new(
-            "cy.num",
-            "improper by more than one: cannot be realized",
-        ));
-    }
-    let k_dy = qy.coef(1);
-    let py = cd.scale(qy.coef(0)).add(&rem_y).scale(-1.0); // −(proper part of Cy)
-    let n = cd.degree();
-    let lead = cd.leading();
-    let ac: Vec<f64> = (0..=n).map(|i| cd.coef(i) / lead).collect();
-    let mut a = DMatrix::zeros(n, n);
-    for i in 0..n {
-        a[(i, 0)] = -ac[n - 1 - i];
-        if i + 1 < n {
-            a[(i, i + 1)] = 1.0;
-        }
-    }
-    let mut b = DMatrix::zeros(n, 2);
-    let mut dd = [0.0; 2];
-    for (j, num) in [&nr, &py].iter().enumerate() {
-        let nn: Vec<f64> = (0..=n).map(|i| num.coef(i) / lead).collect();
-        dd[j] = nn[n];
-        for i in 0..n {
-            b[(i, j)] = nn[n - 1 - i] - dd[j] * ac[n - 1 - i];
-        }
-    }
-    let mut cvec = DVector::zeros(n);
-    if n > 0 {
-        cvec[0] = 1.0;
-    }
-    Ok(Realization {
-        a,
-        b,
-        c: cvec,
-        d_r: dd[0],
-        d_y: dd[1],
-        k_dy,
-    })
+    c.realize()
 }
 
 fn step_value(time: f64, size: f64, t: f64) -> f64 {
@@ -347,15 +259,8 @@ fn step_value(time: f64, size: f64, t: f64) -> f64 {
     }
 }
 
-/// Simulates the nonlinear CSTR from the steady state `op` under the controller `c`
-/// (deviation variables: `u` is added to `op.tj`, `r` and `y` are deviations from `op.t`),
-/// with the measurement delay `sc.delay`. Errors name `scenario.*` or the controller field.
-pub fn simulate(
-    p: &CstrParams,
-    op: &OperatingPoint,
-    c: &Controller,
-    sc: &CstrScenario,
-) -> Result<CstrRun> {
+/// Checks a CSTR scenario and returns the measurement delay and the run length in steps.
+fn check_scenario(sc: &CstrScenario) -> Result<(usize, usize)> {
     for (name, x) in [("t_end", sc.t_end), ("dt", sc.dt)] {
         if !(x.is_finite() && x > 0.0) {
             return Err(Error::new(
@@ -390,10 +295,23 @@ pub fn simulate(
             ));
         }
     }
+    Ok((nd as usize, steps as usize))
+}
+
+/// Simulates the nonlinear CSTR from the steady state `op` under the controller `c`
+/// (deviation variables: `u` is added to `op.tj`, `r` and `y` are deviations from `op.t`),
+/// with the measurement delay `sc.delay`. Errors name `scenario.*` or the controller field.
+pub fn simulate(
+    p: &CstrParams,
+    op: &OperatingPoint,
+    c: &Controller,
+    sc: &CstrScenario,
+) -> Result<CstrRun> {
+    let (nd, steps) = check_scenario(sc)?;
     let re = realize(c)?;
-    let (nd, steps) = (nd as usize, steps as usize);
+    let ss = &re.ss;
     let h = sc.dt;
-    let nc = re.a.nrows();
+    let nc = ss.order();
     let nz = 2 + nc;
     // half-step history of T and Ṫ (left and right limits), index j ↔ time j·h/2
     let mut t_hist: Vec<f64> = Vec::with_capacity(2 * steps + 2);
@@ -409,9 +327,9 @@ pub fn simulate(
     };
     // controller output
     let u_of = |z: &DVector<f64>, r: f64, y: f64, yd: f64| -> f64 {
-        let mut u = re.d_r * r + re.d_y * y - re.k_dy * yd;
+        let mut u = ss.d[(0, 0)] * r + ss.d[(0, 1)] * y - re.k_dy * yd;
         for i in 0..nc {
-            u += re.c[i] * z[2 + i];
+            u += ss.c[(0, i)] * z[2 + i];
         }
         u
     };
@@ -421,9 +339,9 @@ pub fn simulate(
         dz[0] = dca;
         dz[1] = dt;
         for i in 0..nc {
-            let mut s = re.b[(i, 0)] * r + re.b[(i, 1)] * y;
+            let mut s = ss.b[(i, 0)] * r + ss.b[(i, 1)] * y;
             for j in 0..nc {
-                s += re.a[(i, j)] * z[2 + j];
+                s += ss.a[(i, j)] * z[2 + j];
             }
             dz[2 + i] = s;
         }

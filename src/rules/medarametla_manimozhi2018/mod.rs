@@ -6,6 +6,15 @@
 //! P. K. Medarametla, M. Manimozhi, "Novel proportional-integral-derivative controller with
 //! second order filter for integrating processes", Asia-Pac. J. Chem. Eng. 13 (2018) e2195.
 //!
+//! # Folder
+//! - `mod.rs`: the rule (Eqs. 4-38 beside the code), its parameter declarations, typed
+//!   [`Details`] and the [`super::Rule`] implementation;
+//! - `tables.rs`: Table 1 (the λ fits), Table 3 and Tables 4-5 as printed, named data;
+//! - `settings.rs`: Examples 1-6, Table 2's comparison settings (Anil & Padma Sree; Ajmeri &
+//!   Ali with their model loop) and the presets;
+//! - `studies.rs`: the simulation studies the reproduction report runs, as typed results;
+//! - `cstr.rs`: Example 6's nonlinear jacketed CSTR (Eqs. 51-53, Table 6).
+//!
 //! # Structure (Fig. 1)
 //! `r → F → (+) → G_c → G_p`, one-degree-of-freedom `G_c` on the filtered error, so
 //! `Cr = F·G_c`, `Cy = G_c` with
@@ -65,17 +74,21 @@
 //!   Example 4, printed 1.07). That fit has no z argument: it was made for one z/τ which the
 //!   paper does not state, so its use always adds a warning.
 
-use super::{LegacyPreset as Preset, LegacyTuning as Tuning, MethodInfo, ParamInfo, Params};
+use super::{MethodInfo, ParamInfo, Params, Tuning};
 pub mod cstr;
+mod settings;
+pub mod studies;
+mod tables;
+pub use settings::*;
+pub use tables::*;
 
-use crate::api::{controller_json, family_json, plant_json};
 use crate::error::{Error, Result};
-use crate::model::controller::{Controller, ModelLoop, Pid};
+use crate::model::controller::{Controller, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use crate::model::tf::Tf;
 use nalgebra::{DMatrix, DVector};
-use serde_json::{json, Map, Value};
+use serde::Serialize;
 
 /// Method id (API.md).
 pub const ID: &str = "medarametla";
@@ -350,39 +363,6 @@ fn columns(family: &Family, tgt: &Poly) -> (Poly, [Poly; 5]) {
     (sd, [c_kp, c_ki, c_kd, c_b1, c_b2])
 }
 
-/// Solves a square system with nalgebra's LU after row and column equilibration (the
-/// coefficients span many decades for plants such as the CSTR); `None` when singular or not
-/// finite.
-fn lin_solve(m: DMatrix<f64>, rhs: DVector<f64>) -> Option<DVector<f64>> {
-    let scale = m.amax();
-    if !(scale.is_finite() && scale > 0.0) || m.nrows() != m.ncols() {
-        return None;
-    }
-    let n = m.nrows();
-    let mut m = m;
-    let mut rhs = rhs;
-    for i in 0..n {
-        let r = m.row(i).amax();
-        if r > 0.0 {
-            m.row_mut(i).scale_mut(1.0 / r);
-            rhs[i] /= r;
-        }
-    }
-    let mut cs = vec![1.0; n];
-    for (j, c) in cs.iter_mut().enumerate() {
-        let a = m.column(j).amax();
-        if a > 0.0 {
-            *c = 1.0 / a;
-            m.column_mut(j).scale_mut(*c);
-        }
-    }
-    let mut x = m.lu().solve(&rhs)?;
-    for (j, c) in cs.iter().enumerate() {
-        x[j] *= c;
-    }
-    x.iter().all(|v| v.is_finite()).then_some(x)
-}
-
 /// The design for a plant family and λ (no validation of the resulting filter; see
 /// [`design`]).
 fn solve(family: &Family, lambda: f64) -> Result<Design> {
@@ -403,8 +383,8 @@ fn solve(family: &Family, lambda: f64) -> Result<Design> {
         let m = DMatrix::from_fn(n, 4, |i, j| cols[idx[j]].coef(i + 1));
         let r0 = DVector::from_fn(n, |i, _| -c0.coef(i + 1));
         let r1 = DVector::from_fn(n, |i, _| -cols[1].coef(i + 1));
-        let x0 = lin_solve(m.clone(), r0).ok_or_else(singular)?;
-        let x1 = lin_solve(m, r1).ok_or_else(singular)?;
+        let x0 = crate::numerics::equilibrated_solve(m.clone(), r0).ok_or_else(singular)?;
+        let x1 = crate::numerics::equilibrated_solve(m, r1).ok_or_else(singular)?;
         // (B₁(k_i))² − 4B₂(k_i) = a k_i² + b k_i + c with c = 0 identically (the degenerate
         // root k_i = 0); the design is the other root.
         let a = x1[2] * x1[2];
@@ -423,7 +403,7 @@ fn solve(family: &Family, lambda: f64) -> Result<Design> {
         if m.nrows() != 5 {
             return Err(singular());
         }
-        let x = lin_solve(m, rhs).ok_or_else(singular)?;
+        let x = crate::numerics::equilibrated_solve(m, rhs).ok_or_else(singular)?;
         (x[0], x[1], x[2], x[3], x[4])
     };
     for (name, v) in [
@@ -579,267 +559,273 @@ pub fn zero_closed_form(
 }
 
 // ---------------------------------------------------------------------------------------
-// λ selection: Table 1 fits
-// ---------------------------------------------------------------------------------------
-
-/// λ from the Table 1 fits for a required Ms, with warnings when the fit is used outside the
-/// ranges it was made for (or, for IFOPTD with a zero, always: the fit has no z argument).
-/// Errors name `params.fit_ms` (no fit for the family, or a non-positive result).
-pub fn lambda_fit(family: &Family, ms: f64) -> Result<(f64, Vec<String>)> {
-    if !(ms.is_finite() && ms > 1.0) {
-        return Err(Error::new(
-            "params.fit_ms",
-            format!("must be finite and > 1 (got {ms})"),
-        ));
-    }
-    let th = family.theta();
-    let mut w = Vec::new();
-    let mut range = |name: &str, x: f64, lo: f64, hi: f64| {
-        if x < lo || x > hi {
-            w.push(format!(
-                "Table 1 fit used outside its range: {name} = {x:.4} not in [{lo}, {hi}]"
-            ));
-        }
-    };
-    let lam = match *family {
-        Family::Piptd { .. } => {
-            // Table 1, first row (labelled DIPTD in the extraction; it is the PIPTD fit)
-            range("Ms", ms, 1.3, 2.5);
-            (0.4192 * ms * ms - 1.401 * ms + 2.48) / (ms - 0.9904) * th
-        }
-        Family::Diptd { .. } => {
-            // Table 1, second row, R² = 1
-            range("Ms", ms, 1.3, 2.5);
-            2.438 / (ms - 1.016) * th
-        }
-        Family::Ifoptd { tau, .. } => {
-            let r = th / tau;
-            let m = ms;
-            if r <= 0.5 {
-                range("θ/τ", r, 0.1, 0.5);
-                range("Ms", m, 1.3, 2.5);
-                th * (117.3 - 122.6 * r - 198.7 * m + 91.08 * r * r + 143.9 * r * m + 131.7 * m * m
-                    - 86.77 * r * r * m
-                    - 55.14 * r * m * m
-                    - 39.61 * m.powi(3)
-                    + 20.75 * m * m * r * r
-                    + 6.68 * r * m.powi(3)
-                    + 4.532 * m.powi(4))
-            } else {
-                range("θ/τ", r, 0.5, 1.2);
-                range("Ms", m, 1.5, 3.0);
-                th * (27.7 - 10.62 * r - 34.5 * m + 11.12 * r * r + 3.332 * r * m + 18.64 * m * m
-                    - 9.092 * r * r * m
-                    + 2.157 * r * m * m
-                    - 4.991 * m.powi(3)
-                    + 1.895 * m * m * r * r
-                    - 0.7633 * r * m.powi(3)
-                    + 0.5505 * m.powi(4))
-            }
-        }
-        Family::IfoptdZero { tau, z, .. } => {
-            let r = th / tau;
-            let m = ms;
-            range("θ/τ", r, 0.1, 0.5);
-            range("Ms", m, 1.5, 2.5);
-            if z < 0.0 {
-                w.push(
-                    "Table 1's IFOPTD-with-zero fit was made for a positive zero; z < 0 here"
-                        .into(),
-                );
-            }
-            w.push(format!(
-                "Table 1's IFOPTD-with-zero fit has no z argument (made for one unstated z/τ; here z/τ = {:.4}); check the true Ms (details.ms)",
-                z / tau
-            ));
-            th * (202.8 - 192.8 * r - 351.5 * m + 145.6 * r * r + 227.2 * r * m + 233.0 * m * m
-                - 136.9 * r * r * m
-                - 86.81 * r * m * m
-                - 69.38 * m.powi(3)
-                + 32.21 * m * m * r * r
-                + 10.52 * r * m.powi(3)
-                + 7.817 * m.powi(4))
-        }
-        _ => {
-            return Err(Error::new(
-                "params.fit_ms",
-                format!(
-                    "Table 1 has no fit for family '{}'; use target_ms",
-                    family.id()
-                ),
-            ))
-        }
-    };
-    if !(lam.is_finite() && lam > 0.0) {
-        return Err(Error::new(
-            "params.fit_ms",
-            format!("the Table 1 fit gives λ = {lam} (not > 0) for Ms = {ms}"),
-        ));
-    }
-    Ok((lam, w))
-}
-
-// ---------------------------------------------------------------------------------------
 // Registry interface
 // ---------------------------------------------------------------------------------------
 
-/// Methods of this paper.
-pub fn methods() -> Vec<MethodInfo> {
-    vec![MethodInfo {
+/// The parameter declarations of the method: the registry validates calls against them and
+/// `methods()` lists them.
+pub fn params_info() -> Vec<ParamInfo> {
+    vec![
+        ParamInfo::number("lambda", "λ (closed-loop time constant)", None, 1e-3, 1e3)
+            .unit("time")
+            .help("required unless target_ms or fit_ms is given"),
+        ParamInfo::number("p", "p (set-point filter time constant)", None, 1e-3, 1e3)
+            .unit("time")
+            .help("default θ; the paper tunes p between 0.5θ and 3θ"),
+        ParamInfo::number("p_order", "n in F₂ = 1/(ps+1)ⁿ", Some(2.0), 2.0, 3.0)
+            .help("2 as printed (Eqs. 34-38); 3 reproduces the paper's simulated Examples 2, 3, 5"),
+        ParamInfo::number(
+            "target_ms",
+            "target Ms (λ solved exactly)",
+            None,
+            1.05,
+            10.0,
+        )
+        .help("λ is solved so that the true Ms (exact delay) equals this value"),
+        ParamInfo::number("fit_ms", "Ms for the Table 1 fit", None, 1.05, 10.0)
+            .help("λ from the paper's Table 1 fit for this Ms (warns outside its ranges)"),
+    ]
+}
+
+/// What `methods()` lists for the method.
+pub fn method_info() -> MethodInfo {
+    MethodInfo {
         id: ID.into(),
         title: "Medarametla & Manimozhi 2018: PID × second-order filter by pole placement, set-point filter".into(),
         citation: CITATION.into(),
         families: FAMILIES.iter().map(|f| f.to_string()).collect(),
         structure: "1-DOF PID × (a₁s+1)²/(b₂s²+b₁s+1) (PIPTD: /(b₁s+1)²) on the error, set-point filter F (Eqs. 35, 37, 38)".into(),
-        params: vec![
-            ParamInfo::number("lambda", "λ (closed-loop time constant)", None, 0.01, 100.0)
-                .required()
-                .help("required unless target_ms or fit_ms is given"),
-            ParamInfo::number("p", "p (set-point filter time constant)", None, 0.01, 100.0)
-                .help("default θ; the paper tunes p between 0.5θ and 3θ"),
-            ParamInfo::number("p_order", "n in F₂ = 1/(ps+1)ⁿ", Some(2.0), 2.0, 3.0).help(
-                "2 as printed (Eqs. 34-38); 3 reproduces the paper's simulated Examples 2, 3, 5",
-            ),
-            ParamInfo::number("target_ms", "target Ms (λ solved exactly)", None, 1.05, 10.0)
-                .help("λ is solved so that the true Ms (exact delay) equals this value"),
-            ParamInfo::number("fit_ms", "Ms for the Table 1 fit", None, 1.05, 10.0)
-                .help("λ from the paper's Table 1 fit for this Ms (warns outside its ranges)"),
-        ],
-    }]
-}
-
-fn named_and_details(d: &Design, p: f64, order: u32) -> (Map<String, Value>, Map<String, Value>) {
-    let mut named = Map::new();
-    named.insert("kp".into(), json!(d.kp));
-    named.insert("ki".into(), json!(d.ki));
-    named.insert("kd".into(), json!(d.kd));
-    named.insert("a1".into(), json!(d.a1));
-    named.insert("b1".into(), json!(d.b1));
-    if !d.square_filter {
-        named.insert("b2".into(), json!(d.b2));
+        params: params_info(),
     }
-    named.insert("p".into(), json!(p));
-    named.insert("lambda".into(), json!(d.lambda));
-    let mut det = Map::new();
-    det.insert("lambda".into(), json!(d.lambda));
-    det.insert("target".into(), json!(d.target_kind.label()));
-    det.insert("target_desc".into(), json!(d.target.to_desc()));
-    det.insert("laguerre_ce_desc".into(), json!(d.laguerre_ce().to_desc()));
-    det.insert(
-        "filter".into(),
-        json!(if d.square_filter {
-            "(a1 s + 1)^2 / (b1 s + 1)^2 (Eq. 4a)"
-        } else {
-            "(a1 s + 1)^2 / (b2 s^2 + b1 s + 1) (Eq. 5a)"
-        }),
-    );
-    let sp = d.setpoint_filter_order(p, order);
-    det.insert("p_order".into(), json!(order));
-    det.insert(
-        "setpoint_filter".into(),
-        json!({"num": sp.num.to_desc(), "den": sp.den.to_desc()}),
-    );
-    det.insert(
-        "approximation".into(),
-        json!(
-            "design only: e^{-θs} ≈ (1 − θs/4)²/(1 + θs/4)² (Eq. 10, second-order Laguerre shift)"
-        ),
-    );
-    (named, det)
 }
 
-/// The full tuning for a family (λ given, or from `target_ms`/`fit_ms`).
-pub fn tune_family(family: &Family, params: &Params) -> Result<Tuning> {
-    check_family(family)?;
-    let th = family.theta();
-    let p = match params.opt_f64("p")? {
-        Some(p) if p > 0.0 => p,
-        Some(p) => return Err(Error::new("params.p", format!("must be > 0 (got {p})"))),
-        None => th,
+/// Methods of this paper.
+pub fn methods() -> Vec<MethodInfo> {
+    vec![method_info()]
+}
+
+/// A transfer function as descending coefficient lists.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DescTf {
+    /// Numerator, descending powers.
+    pub num: Vec<f64>,
+    /// Denominator, descending powers.
+    pub den: Vec<f64>,
+}
+
+impl From<&Tf> for DescTf {
+    fn from(t: &Tf) -> DescTf {
+        DescTf {
+            num: t.num.to_desc(),
+            den: t.den.to_desc(),
+        }
+    }
+}
+
+/// Eq. (14), the printed PIPTD closed form, reported beside the solve for PIPTD plants.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Eq14 {
+    /// Proportional gain.
+    pub kp: f64,
+    /// Integral gain.
+    pub ki: f64,
+    /// Derivative gain.
+    pub kd: f64,
+    /// Filter b₁.
+    pub b1: f64,
+}
+
+/// Where λ came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LambdaSource {
+    /// `params.lambda`.
+    Given,
+    /// Solved for `params.target_ms`.
+    TargetMs,
+    /// Table 1's fit for `params.fit_ms`.
+    FitMs,
+}
+
+/// The details of a Medarametla & Manimozhi tuning.
+#[derive(Debug, Clone, Serialize)]
+pub struct Details {
+    /// λ used.
+    pub lambda: f64,
+    /// The target of Eqs. (13), (21), (29) or (31), in words.
+    pub target: String,
+    /// The target polynomial `T(s)`, descending.
+    pub target_desc: Vec<f64>,
+    /// The Laguerre characteristic polynomial (Eqs. 11, 19, 27), descending.
+    pub laguerre_ce_desc: Vec<f64>,
+    /// The controller filter (Eq. 4a or 5a), in words.
+    pub filter: String,
+    /// n of `F₂ = 1/(ps+1)ⁿ`.
+    pub p_order: u32,
+    /// The set-point filter F (Eqs. 35, 37, 38).
+    pub setpoint_filter: DescTf,
+    /// The approximation used inside the design (Eq. 10).
+    pub approximation: String,
+    /// Where λ came from.
+    pub lambda_source: LambdaSource,
+    /// λ of the Table 1 fit, when `fit_ms` was given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lambda_fit: Option<f64>,
+    /// The Ms asked for, when `target_ms` was given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target_ms: Option<f64>,
+    /// Eq. (14)'s closed form (PIPTD only).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub eq14_closed_form: Option<Eq14>,
+    /// The exact-delay frequency analysis of the design.
+    #[serde(flatten)]
+    pub check: super::DesignCheck,
+    /// Fits used outside their ranges, conflicting parameters.
+    pub warnings: Vec<String>,
+}
+
+/// The named parameters of a design: `kp, ki, kd, a1, b1, (b2), p, lambda`.
+fn named(d: &Design, p: f64) -> Vec<(String, f64)> {
+    let mut v = vec![
+        ("kp", d.kp),
+        ("ki", d.ki),
+        ("kd", d.kd),
+        ("a1", d.a1),
+        ("b1", d.b1),
+    ];
+    if !d.square_filter {
+        v.push(("b2", d.b2));
+    }
+    v.push(("p", p));
+    v.push(("lambda", d.lambda));
+    v.into_iter().map(|(n, x)| (n.to_string(), x)).collect()
+}
+
+/// λ and where it came from: `target_ms` (solved exactly), else `lambda`, else the Table 1
+/// fit for `fit_ms`; the fit's λ (when `fit_ms` is given) and warnings beside.
+fn choose_lambda(
+    family: &Family,
+    params: &Params,
+    decl: &[ParamInfo],
+) -> Result<(f64, LambdaSource, Option<f64>, Vec<String>)> {
+    let number = |name: &str| -> Result<Option<f64>> {
+        params
+            .0
+            .contains_key(name)
+            .then(|| params.number(decl, name))
+            .transpose()
     };
-    let mut warnings: Vec<String> = Vec::new();
-    let mut source = "given";
-    let given = params.opt_f64("lambda")?;
-    let fit = params.opt_f64("fit_ms")?;
-    let target_ms = params.opt_f64("target_ms")?;
+    let mut warnings = Vec::new();
+    let fit_ms = number("fit_ms")?;
     let mut fit_lambda = None;
-    if let Some(ms) = fit {
+    if let Some(ms) = fit_ms {
         let (l, w) = lambda_fit(family, ms)?;
         warnings.extend(w);
         fit_lambda = Some(l);
     }
-    let lambda = if let Some(ms) = target_ms {
-        source = "target_ms";
-        lambda_for_ms(family, ms)?
-    } else if let Some(l) = given {
-        if fit.is_some() {
+    let (lambda, source) = if let Some(ms) = number("target_ms")? {
+        (lambda_for_ms(family, ms)?, LambdaSource::TargetMs)
+    } else if let Some(l) = number("lambda")? {
+        if fit_ms.is_some() {
             warnings.push("both lambda and fit_ms given: lambda used".into());
         }
-        l
+        (l, LambdaSource::Given)
     } else if let Some(l) = fit_lambda {
-        source = "fit_ms";
-        l
+        (l, LambdaSource::FitMs)
     } else {
         return Err(Error::new(
             "params.lambda",
             "is required (or give target_ms or fit_ms)",
         ));
     };
-    let order = match params.opt_f64("p_order")? {
-        None => 2,
-        Some(x) if x == 2.0 || x == 3.0 => x as u32,
-        Some(x) => {
-            return Err(Error::new(
-                "params.p_order",
-                format!("must be 2 or 3 (got {x})"),
-            ))
-        }
+    Ok((lambda, source, fit_lambda, warnings))
+}
+
+/// The full tuning for a family (λ given, or from `target_ms`/`fit_ms`), with `params`
+/// already validated against [`params_info`].
+pub fn tune_family(family: &Family, params: &Params) -> Result<Tuning> {
+    check_family(family)?;
+    let decl = params_info();
+    let p = match params.0.get("p") {
+        Some(_) => params.number(&decl, "p")?,
+        None => family.theta(),
     };
+    let (lambda, lambda_source, lambda_fit, warnings) = choose_lambda(family, params, &decl)?;
+    let order = params.number(&decl, "p_order")?;
+    if order.fract() != 0.0 {
+        return Err(Error::new(
+            "params.p_order",
+            format!("must be 2 or 3 (got {order})"),
+        ));
+    }
+    let order = order as u32;
     let d = design(family, lambda)?;
     let controller = d.controller_order(p, order)?;
-    let (named, mut details) = named_and_details(&d, p, order);
-    details.insert("lambda_source".into(), json!(source));
-    if let Some(l) = fit_lambda {
-        details.insert("lambda_fit".into(), json!(l));
-    }
-    if let Some(ms) = target_ms {
-        details.insert("target_ms".into(), json!(ms));
-    }
-    if let Family::Piptd { k, theta } = *family {
-        let (kp, ki, kd, b1) = piptd_closed_form(k, theta, lambda);
-        details.insert(
-            "eq14_closed_form".into(),
-            json!({"kp": kp, "ki": ki, "kd": kd, "b1": b1}),
-        );
-    }
-    let plant = family.plant();
-    super::add_analysis(&plant, &controller, &mut details);
-    details.insert("warnings".into(), json!(warnings));
+    let eq14_closed_form = match *family {
+        Family::Piptd { k, theta } => {
+            let (kp, ki, kd, b1) = piptd_closed_form(k, theta, lambda);
+            Some(Eq14 { kp, ki, kd, b1 })
+        }
+        _ => None,
+    };
+    let details = Details {
+        lambda: d.lambda,
+        target: d.target_kind.label().into(),
+        target_desc: d.target.to_desc(),
+        laguerre_ce_desc: d.laguerre_ce().to_desc(),
+        filter: if d.square_filter {
+            "(a1 s + 1)^2 / (b1 s + 1)^2 (Eq. 4a)"
+        } else {
+            "(a1 s + 1)^2 / (b2 s^2 + b1 s + 1) (Eq. 5a)"
+        }
+        .into(),
+        p_order: order,
+        setpoint_filter: DescTf::from(&d.setpoint_filter_order(p, order)),
+        approximation:
+            "design only: e^{-θs} ≈ (1 − θs/4)²/(1 + θs/4)² (Eq. 10, second-order Laguerre shift)"
+                .into(),
+        lambda_source,
+        lambda_fit,
+        target_ms: params.opt_f64("target_ms")?,
+        eq14_closed_form,
+        check: super::DesignCheck::of(&family.plant(), &controller),
+        warnings,
+    };
     Ok(Tuning {
         method: ID.into(),
         controller,
-        named,
-        details,
+        named: named(&d, p),
+        details: super::Details::Medarametla2018(Box::new(details)),
     })
 }
 
-/// Tunes method `id` if it belongs to this paper.
-pub fn tune(id: &str, plant: &Plant, params: &Params) -> Option<Result<Tuning>> {
-    if id != ID {
-        return None;
+/// The method of this paper behind [`super::Rule`].
+#[derive(Debug, Clone, Copy, Default)]
+pub struct PidSecondOrderFilter;
+
+impl super::Rule for PidSecondOrderFilter {
+    fn info(&self) -> MethodInfo {
+        method_info()
     }
-    Some(match plant.family {
-        Some(f) => tune_family(&f, params),
-        None => Err(Error::new(
-            "plant.family",
-            format!(
-                "method '{ID}' needs the plant given by family ({})",
-                FAMILIES.join(", ")
-            ),
-        )),
-    })
+
+    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
+        match plant.family {
+            Some(f) => tune_family(&f, params),
+            None => Err(Error::new(
+                "plant.family",
+                format!(
+                    "method '{ID}' needs the plant given by family ({})",
+                    FAMILIES.join(", ")
+                ),
+            )),
+        }
+    }
 }
 
+/// The rules of this paper.
+pub fn rules() -> Vec<Box<dyn super::Rule>> {
+    vec![Box::new(PidSecondOrderFilter)]
+}
 /// λ such that the true Ms (exact delay; the set-point filter does not enter Ms) equals
 /// `ms`, by [`crate::analysis::freq::solve_for_ms`] over λ ∈ [0.02θ, 100θ] (the smallest such λ:
 /// Ms falls as λ grows from the smallest admissible λ). Errors name `params.target_ms`.
@@ -871,494 +857,4 @@ pub fn ms_curve(family: &Family, lambdas: &[f64]) -> Vec<Option<f64>> {
                 .and_then(|d| true_ms(&d).ok().flatten())
         })
         .collect()
-}
-
-// ---------------------------------------------------------------------------------------
-// Presets: Examples 1-6 and the comparison settings of Table 2
-// ---------------------------------------------------------------------------------------
-
-/// One worked example of the paper: id, title, plant family, λ, p, scenario
-/// `(t_end, sp_time, sp_size, d_time, d_size)`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Example {
-    /// Short id.
-    pub id: &'static str,
-    /// Title.
-    pub title: &'static str,
-    /// Design model.
-    pub family: Family,
-    /// λ of the paper.
-    pub lambda: f64,
-    /// p used in the paper's simulation (Example 5: 1.0, the text says 0.9; see `p_text`).
-    pub p: f64,
-    /// p as stated in the text.
-    pub p_text: f64,
-    /// n of `F₂ = 1/(ps+1)ⁿ` in the paper's simulation: 2 as printed for Eqs. (35), (38);
-    /// 3 for the Eq. (37) examples (2, 3, 5), the only value that reproduces Tables 4-5.
-    pub p_order: u32,
-    /// Ms the paper states for its λ.
-    pub ms_printed: f64,
-    /// Scenario end time.
-    pub t_end: f64,
-    /// Disturbance time (the set-point step is at 0).
-    pub d_time: f64,
-    /// Set-point step size.
-    pub sp_size: f64,
-    /// Disturbance step size (at the plant input).
-    pub d_size: f64,
-}
-
-/// Examples 1-6 (Eqs. 45-50, 53; λ and p from the text).
-pub fn examples() -> Vec<Example> {
-    vec![
-        Example {
-            id: "ex1",
-            title: "Example 1: PIPTD 0.05e^{-5s}/s (Eq. 45)",
-            family: Family::Piptd {
-                k: 0.05,
-                theta: 5.0,
-            },
-            lambda: 6.71,
-            p: 3.3,
-            p_text: 3.3,
-            p_order: 2,
-            ms_printed: 2.0,
-            t_end: 200.0,
-            d_time: 100.0,
-            sp_size: 1.0,
-            d_size: 1.0,
-        },
-        Example {
-            id: "ex2",
-            title: "Example 2: DIPTD e^{-s}/s² (Eq. 46)",
-            family: Family::Diptd { k: 1.0, theta: 1.0 },
-            lambda: 2.4776,
-            p: 1.7,
-            p_text: 1.7,
-            p_order: 3,
-            ms_printed: 2.0,
-            t_end: 100.0,
-            d_time: 50.0,
-            sp_size: 1.0,
-            d_size: 1.0,
-        },
-        Example {
-            id: "ex3",
-            title: "Example 3: IFOPTD 0.2e^{-s}/(s(4s+1)) (Eq. 47)",
-            family: Family::Ifoptd {
-                k: 0.2,
-                tau: 4.0,
-                theta: 1.0,
-            },
-            lambda: 1.8857,
-            p: 1.0,
-            p_text: 1.0,
-            p_order: 3,
-            ms_printed: 2.0,
-            t_end: 60.0,
-            d_time: 30.0,
-            sp_size: 1.0,
-            d_size: 1.0,
-        },
-        Example {
-            id: "ex4",
-            title: "Example 4: IFOPTD with zero (10s+1)e^{-s}/(s(2s+1)) (Eq. 48)",
-            family: Family::IfoptdZero {
-                k: 1.0,
-                tau: 2.0,
-                z: 10.0,
-                theta: 1.0,
-            },
-            lambda: 1.07,
-            p: 0.8,
-            p_text: 0.8,
-            p_order: 2,
-            ms_printed: 2.35,
-            t_end: 50.0,
-            d_time: 25.0,
-            sp_size: 1.0,
-            d_size: 1.0,
-        },
-        Example {
-            id: "ex5",
-            title:
-                "Example 5: reduced model 0.5183e^{-1.2799s}/(s(1.1609s+1)) (Eq. 50) of Eq. (49)",
-            family: Family::Ifoptd {
-                k: 0.5183,
-                tau: 1.1609,
-                theta: 1.2799,
-            },
-            lambda: 1.895,
-            p: 1.0,
-            p_text: 0.9,
-            p_order: 3,
-            ms_printed: 2.81,
-            t_end: 80.0,
-            d_time: 40.0,
-            sp_size: 1.0,
-            d_size: 1.0,
-        },
-        Example {
-            id: "ex6",
-            title: "Example 6: jacketed CSTR, 6.83e-4(766.0752s+1)e^{-s}/(s(1112.099s−1)) (Eq. 53)",
-            family: Family::IfoptdZeroUnstable {
-                k: 6.83e-4,
-                tau: 1112.099,
-                z: 766.0752,
-                theta: 1.0,
-            },
-            lambda: 1.0925,
-            p: 1.0,
-            p_text: 1.0,
-            p_order: 2,
-            ms_printed: 3.52,
-            t_end: 100.0,
-            d_time: 50.0,
-            sp_size: 2.0,
-            d_size: -7.4,
-        },
-    ]
-}
-
-/// Eq. (49), Example 5's higher-order process: `0.5(1−0.5s)e^{−0.7s}/(s(0.4s+1)(0.1s+1)(0.5s+1))`.
-pub fn example5_process() -> Plant {
-    let den = Poly::s()
-        .mul(&Poly::linear(0.4, 1.0))
-        .mul(&Poly::linear(0.1, 1.0))
-        .mul(&Poly::linear(0.5, 1.0));
-    Plant {
-        tf: Tf {
-            num: Poly::linear(-0.25, 0.5),
-            den,
-        },
-        delay: 0.7,
-        family: None,
-    }
-}
-
-/// Table 3 as printed (strings, digits as in the paper; "—" not printed): k_p, k_i, k_d, a₁,
-/// b₁, b₂. Example 6's k_d "160,460" has a dropped digit (ERRATA.md: 1,604,557.8).
-pub const TABLE3_PRINTED: [(&str, [&str; 6]); 6] = [
-    ("ex1", ["3.3671", "0.1828", "2.7808", "1.25", "0.6525", "—"]),
-    (
-        "ex2",
-        ["0.2247", "0.0266", "0.7021", "0.25", "0.1894", "0.0253"],
-    ),
-    (
-        "ex3",
-        ["7.6401", "1.1477", "14.309", "0.25", "0.1799", "0.024"],
-    ),
-    (
-        "ex4",
-        ["1.37", "0.2866", "1.6359", "0.25", "10.1367", "1.3672"],
-    ),
-    (
-        "ex5",
-        ["1.0978", "0.1576", "1.0447", "0.32", "0.2941", "0.0490"],
-    ),
-    (
-        "ex6",
-        ["818,880", "168,150", "160,460", "0.25", "766.1607", "65.52"],
-    ),
-];
-
-/// A comparison setting of Table 2 (Anil & Padma Sree 2015): parallel PID × filter.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Comparison {
-    /// Example id it belongs to.
-    pub example: &'static str,
-    /// `k_p, k_i, k_d` as printed.
-    pub kp: f64,
-    /// Integral gain.
-    pub ki: f64,
-    /// Derivative gain.
-    pub kd: f64,
-    /// The PID filter: lead-lag `(αs+1)/(βs+1)` or the footnoted second-order filter,
-    /// descending `(num, den)`.
-    pub filter: (Vec<f64>, Vec<f64>),
-    /// Ms printed in Table 2.
-    pub ms_printed: f64,
-}
-
-impl Comparison {
-    /// The controller: `(k_p + k_i/s + k_d s)·filter` on the error (1-DOF; the set-point
-    /// treatment of the original paper is not given in Medarametla & Manimozhi).
-    pub fn controller(&self) -> Result<Controller> {
-        let f = Tf::parse_desc(&self.filter.0, &self.filter.1)?;
-        Pid::parallel(self.kp, self.ki, self.kd)
-            .series_filter(f)
-            .to_controller()
-    }
-}
-
-/// Table 2's Anil & Padma Sree settings (Ajmeri & Ali's parallel control structure, which runs
-/// an internal process model with its dead time, is [`ajmeri_ali`]).
-pub fn comparisons() -> Vec<Comparison> {
-    let ll = |a: f64, b: f64| (vec![a, 1.0], vec![b, 1.0]);
-    vec![
-        Comparison {
-            example: "ex1",
-            kp: 3.727,
-            ki: 0.1968,
-            kd: 7.0440,
-            filter: (vec![1.0], vec![1.0]),
-            ms_printed: 2.0,
-        },
-        Comparison {
-            example: "ex2",
-            kp: 0.1378,
-            ki: 0.0142,
-            kd: 0.5265,
-            filter: ll(1.0761, 1.0392),
-            ms_printed: 2.0,
-        },
-        Comparison {
-            example: "ex3",
-            kp: 5.7422,
-            ki: 0.9724,
-            kd: 11.2082,
-            filter: ll(0.6320, 0.4915),
-            ms_printed: 2.0,
-        },
-        Comparison {
-            example: "ex4",
-            kp: 1.1601,
-            ki: 0.2251,
-            kd: 1.4452,
-            filter: (vec![0.5214, 1.0], vec![2.674, 10.2674, 1.0]),
-            ms_printed: 2.35,
-        },
-        Comparison {
-            example: "ex5",
-            kp: 1.003,
-            ki: 0.1572,
-            kd: 0.6592,
-            filter: ll(1.1608, 0.5490),
-            ms_printed: 2.81,
-        },
-        Comparison {
-            example: "ex6",
-            kp: 695_400.0,
-            ki: 135_940.0,
-            kd: 1_457_697.0,
-            filter: (vec![0.5095, 1.0], vec![144.7116, 766.2641, 1.0]),
-            ms_printed: 3.52,
-        },
-    ]
-}
-
-/// A comparison setting of Table 2 by Ajmeri & Ali (2015): their parallel control structure
-/// (PCS) for integrating processes, a set-point PD and a disturbance PID.
-#[derive(Debug, Clone, PartialEq)]
-pub struct AjmeriAli {
-    /// Example id (`ex1`..`ex3`).
-    pub example: &'static str,
-    /// Set-point tracking controller `k_p`, `k_d` (Table 2, `k_i` = 0).
-    pub sp: (f64, f64),
-    /// Disturbance rejection controller `k_p`, `k_i`, `k_d`.
-    pub dist: (f64, f64, f64),
-    /// Ms printed in Table 2.
-    pub ms_printed: f64,
-}
-
-impl AjmeriAli {
-    /// The PCS on the model `model` (dead time included), mapped onto (Cr, Cy) plus a
-    /// [`ModelLoop`]: `u = u₁ + C₂(y_m − y)`, `u₁ = k_p(r − y_m) − k_d·ẏ_m`,
-    /// `y_m = model·u₁`, `C₂ = k_p + k_i/s + k_d s` (ideal derivative).
-    ///
-    /// Table 2 gives only gains; the structure is inferred from Table 4 and is the one whose
-    /// nominal servo response reproduces it exactly: with the derivative on the model output
-    /// the integral of the servo error is `(1 + K k_d)/(K k_p)` for `K e^{−θs}/s` and
-    /// `k_d/k_p` for `K e^{−θs}/s²` (9.059, 10.68 and, for Example 3, `(1 + 0.2 k_d)/(0.2 k_p)`
-    /// = 4.594: printed 9.06, 10.67, 4.594, all without overshoot); the derivative on the error
-    /// would make `u₁` impulsive. The disturbance controller acts on `y_m − y`, so with a
-    /// perfect model the servo and regulatory responses decouple, as the PCS is designed to.
-    pub fn controller(&self, model: &Plant) -> Result<Controller> {
-        let (kp, kd) = self.sp;
-        let (dp, di, dd) = self.dist;
-        let cd = Pid::parallel(dp, di, dd).to_controller()?.cy;
-        let ml = ModelLoop::new(
-            model.clone(),
-            Tf::gain(kp),
-            Tf::parse_desc(&[kd, kp], &[1.0])?,
-        )?;
-        Ok(Controller::new(Tf::gain(0.0), cd)?.with_model_loop(ml))
-    }
-}
-
-/// Table 2's Ajmeri & Ali settings (Examples 1-3).
-pub fn ajmeri_ali() -> Vec<AjmeriAli> {
-    vec![
-        AjmeriAli {
-            example: "ex1",
-            sp: (2.9933, 7.1189),
-            dist: (3.3209, 0.1614, 5.8796),
-            ms_printed: 2.0,
-        },
-        AjmeriAli {
-            example: "ex2",
-            sp: (0.0293, 0.3129),
-            dist: (0.0414, 0.0018, 0.3246),
-            ms_printed: 2.0,
-        },
-        AjmeriAli {
-            example: "ex3",
-            sp: (3.1949, 9.6792),
-            dist: (3.67, 0.3521, 9.0902),
-            ms_printed: 2.0,
-        },
-    ]
-}
-
-fn scenario_json(e: &Example) -> Value {
-    json!({"t_end": e.t_end, "dt": 0.1,
-           "setpoint": {"time": 0.0, "size": e.sp_size},
-           "disturbance": {"time": e.d_time, "size": e.d_size}})
-}
-
-/// Presets of this paper: Examples 1-6 (the proposed design), Example 5's design applied to
-/// the higher-order process of Eq. (49), and the Anil & Padma Sree and Ajmeri & Ali settings
-/// of Table 2.
-/// The rules of this paper, behind the [`super::Rule`] interface (transitional adapter).
-pub fn rules() -> Vec<Box<dyn super::Rule>> {
-    super::legacy_rules(methods(), tune)
-}
-
-/// Every preset of this paper.
-pub fn presets() -> Vec<super::AnyPreset> {
-    legacy_presets()
-        .into_iter()
-        .map(super::AnyPreset::Legacy)
-        .collect()
-}
-
-/// The presets as JSON records (transitional).
-pub fn legacy_presets() -> Vec<Preset> {
-    let mut v = Vec::new();
-    for e in examples() {
-        let order_note = if e.p_order == 3 {
-            " The set-point filter uses 1/(ps+1)³ (p_order = 3): the printed Eq. (37) has (ps+1)², but only the \
-             cube reproduces the paper's simulated servo rows (Tables 4-5)."
-        } else {
-            ""
-        };
-        let p_note = if e.p != e.p_text {
-            format!(
-                " The text says p = {}; the simulated Tables 4-5 rows are reproduced with p = {}.",
-                e.p_text, e.p
-            )
-        } else {
-            String::new()
-        };
-        v.push(Preset {
-            id: format!("medarametla2018/{}/proposed", e.id),
-            title: format!("{} — proposed (λ = {}, p = {})", e.title, e.lambda, e.p),
-            description: format!(
-                "Medarametla & Manimozhi design with λ = {} (Ms {} in the paper) and set-point filter p = {}; \
-                 unit set-point step at 0 and input load step at {} as in the paper's simulation{}.{}{}",
-                e.lambda,
-                e.ms_printed,
-                e.p,
-                e.d_time,
-                if e.id == "ex6" {
-                    " (linearized CSTR, Eq. 53: 2 K set-point step, jacket-temperature drop 317.4 → 310 K; the nonlinear runs are in the reproduction report)"
-                } else if e.id == "ex5" {
-                    " on the reduced model of Eq. (50) (the next preset applies it to the process of Eq. 49)"
-                } else {
-                    ""
-                },
-                order_note,
-                p_note
-            ),
-            citation: CITATION.into(),
-            plant: family_json(&e.family),
-            tune: json!({"method": ID, "params": {"lambda": e.lambda, "p": e.p, "p_order": e.p_order}}),
-            controller: Value::Null,
-            scenario: scenario_json(&e),
-        });
-        if e.id == "ex5" {
-            if let Ok(c) =
-                design(&e.family, e.lambda).and_then(|d| d.controller_order(e.p, e.p_order))
-            {
-                v.push(Preset {
-                    id: "medarametla2018/ex5/proposed-on-eq49".into(),
-                    title: "Example 5: the proposed design (on the reduced model Eq. 50) controlling the process of Eq. (49)".into(),
-                    description: "Controller designed on 0.5183e^{-1.2799s}/(s(1.1609s+1)) with λ = 1.895, p = 1 and 1/(ps+1)³ \
-                                  (what reproduces Tables 4-5; the text says p = 0.9), applied to \
-                                  0.5(1−0.5s)e^{−0.7s}/(s(0.4s+1)(0.1s+1)(0.5s+1)) as in Figs. 11-12."
-                        .into(),
-                    citation: CITATION.into(),
-                    plant: plant_json(&example5_process()),
-                    tune: Value::Null,
-                    controller: controller_json(&c),
-                    scenario: scenario_json(&e),
-                });
-            }
-        }
-    }
-    for a in ajmeri_ali() {
-        let Some(e) = examples().into_iter().find(|e| e.id == a.example) else {
-            continue;
-        };
-        let Ok(ctrl) = a.controller(&e.family.plant()) else {
-            continue;
-        };
-        v.push(Preset {
-            id: format!("medarametla2018/{}/ajmeri-ali", e.id),
-            title: format!("{} — Ajmeri & Ali 2015, parallel control structure (Table 2)", e.title),
-            description: format!(
-                "Ajmeri & Ali's parallel control structure as quoted in Table 2: a set-point PD (k_p = {}, k_d = {}, \
-                 derivative on the model output) closed around an internal model of the process with its dead time, \
-                 and a disturbance PID (k_p = {}, k_i = {}, k_d = {}) acting on y_m − y (Ms {} printed). Table 2 gives \
-                 the gains only; this structure is the one that reproduces Table 4's servo IAE exactly \
-                 ((1 + K k_d)/(K k_p) = 9.06 for Example 1). With a perfect model the servo and load responses are \
-                 decoupled; the controller carries the model as `model_loop`, simulated with both dead times exact.",
-                a.sp.0, a.sp.1, a.dist.0, a.dist.1, a.dist.2, a.ms_printed
-            ),
-            citation: "M. Ajmeri, A. Ali, Direct synthesis based tuning of the parallel control structure for integrating \
-                       processes, Int. J. Syst. Sci. 46(13) (2015) 2461-2473; settings as quoted in Medarametla & \
-                       Manimozhi 2018, Table 2"
-                .into(),
-            plant: family_json(&e.family),
-            tune: Value::Null,
-            controller: controller_json(&ctrl),
-            scenario: scenario_json(&e),
-        });
-    }
-    for c in comparisons() {
-        let Some(e) = examples().into_iter().find(|e| e.id == c.example) else {
-            continue;
-        };
-        let Ok(ctrl) = c.controller() else { continue };
-        let improper = ctrl.cr.relative_degree() < 0;
-        let mut scenario = scenario_json(&e);
-        if improper {
-            scenario["setpoint"]["size"] = json!(0.0);
-        }
-        let plant = if e.id == "ex5" {
-            plant_json(&example5_process())
-        } else {
-            family_json(&e.family)
-        };
-        v.push(Preset {
-            id: format!("medarametla2018/{}/anil-padma-sree", e.id),
-            title: format!("{} — Anil & Padma Sree 2015 (Table 2)", e.title),
-            description: format!(
-                "Anil & Padma Sree (ISA Trans. 57, 2015) as quoted in Table 2: k_p = {}, k_i = {}, k_d = {}, PID filter {:?}/{:?} \
-                 (Ms {} printed). Mapped as a one-degree-of-freedom PID × filter on the error: the set-point treatment \
-                 of the original is not given in this paper, so only the regulatory response is comparable with Tables 4-5.{}",
-                c.kp, c.ki, c.kd, c.filter.0, c.filter.1, c.ms_printed,
-                if improper { " With this filter the derivative on the error is ideal, so a set-point step would be an impulse: \
-                              the scenario has the load step only." } else { "" }
-            ),
-            citation: "C. Anil, R. Padma Sree, Tuning of PID controllers for integrating systems using direct synthesis method, \
-                       ISA Transactions 57 (2015) 211-219; settings as quoted in Medarametla & Manimozhi 2018, Table 2"
-                .into(),
-            plant,
-            tune: Value::Null,
-            controller: controller_json(&ctrl),
-            scenario,
-        });
-    }
-    v
 }
