@@ -11,7 +11,7 @@ use pidlab::analysis::freq::analyze;
 use pidlab::analysis::simulate;
 use pidlab::api;
 use pidlab::model::controller::Controller;
-use pidlab::model::plant::{Family, Plant};
+use pidlab::model::plant::Family;
 use pidlab::rules::{self, Params};
 use pidlab::sim::Scenario;
 use serde_json::Value;
@@ -103,48 +103,6 @@ fn row(name: &str, s: &Stats) {
         fmt(s.mean),
         fmt(s.cpu_median)
     );
-}
-
-fn num(v: &Value, key: &str) -> Option<f64> {
-    v.get(key).and_then(Value::as_f64)
-}
-
-fn nums(v: &Value, key: &str) -> Option<Vec<f64>> {
-    v.get(key)?.as_array()?.iter().map(Value::as_f64).collect()
-}
-
-/// A preset's plant (`{family, …}` or `{num, den, delay}`).
-fn plant_of(v: &Value) -> Option<Plant> {
-    if let Some(fam) = v.get("family").and_then(Value::as_str) {
-        return Family::from_params(fam, |n| num(v, n))
-            .ok()
-            .map(|f| f.plant());
-    }
-    Plant::from_desc(
-        &nums(v, "num")?,
-        &nums(v, "den")?,
-        num(v, "delay").unwrap_or(0.0),
-    )
-    .ok()
-}
-
-/// A preset's scenario.
-fn scenario_of(v: &Value) -> Option<Scenario> {
-    let step = |k: &str| -> (f64, f64) {
-        v.get(k)
-            .map(|s| (num(s, "time").unwrap_or(0.0), num(s, "size").unwrap_or(0.0)))
-            .unwrap_or((0.0, 0.0))
-    };
-    let (st, ss) = step("setpoint");
-    let (dt_, ds) = step("disturbance");
-    Some(Scenario::steps(
-        num(v, "t_end")?,
-        num(v, "dt")?,
-        st,
-        ss,
-        dt_,
-        ds,
-    ))
 }
 
 fn main() {
@@ -279,10 +237,7 @@ fn main() {
     if methods.is_empty() {
         return;
     }
-    let presets = pidlab::api::presets()["presets"]
-        .as_array()
-        .cloned()
-        .unwrap_or_default();
+    let presets = rules::presets();
     let per = runs.min(200);
     println!();
     println!("Each method tuned on its first preset ({per} runs each; update = tune + simulate the preset's scenario + analyze):");
@@ -290,46 +245,32 @@ fn main() {
     println!("| method | preset | tune median | tune p95 | points | update median | update p95 |");
     println!("|---|---|---:|---:|---:|---:|---:|");
     for m in methods {
-        let Some(p) = presets
-            .iter()
-            .find(|p| p["tune"].get("method").and_then(Value::as_str) == Some(m.id.as_str()))
-        else {
+        let found = presets.iter().find_map(|p| match &p.design {
+            rules::Design::Rule { method, params } if *method == m.id => Some((p, params)),
+            _ => None,
+        });
+        let Some((p, params)) = found else {
             println!("| {} | (no preset) | | | | | |", m.id);
             continue;
         };
-        // The design model is tune.plant when the preset gives one (Kaya 2020 Ex. 2).
-        let design = p["tune"].get("plant").and_then(plant_of);
-        let (Some(pl), Some(sc)) = (plant_of(&p["plant"]), scenario_of(&p["scenario"])) else {
-            println!(
-                "| {} | {} | (preset not parsed) | | | | |",
-                m.id,
-                p["id"].as_str().unwrap_or("")
-            );
-            continue;
-        };
-        let params = pidlab::api::params_from_json(p["tune"].get("params").unwrap_or(&Value::Null))
-            .unwrap_or_default();
-        let dp = design.unwrap_or_else(|| pl.clone());
-        let c = match rules::tune(&m.id, &dp, &params) {
+        let (pl, sc) = (p.plant.clone(), p.scenario.clone());
+        let dp = pl.clone();
+        let c = match rules::tune(&m.id, &dp, params) {
             Ok(t) => t.controller,
             Err(e) => {
-                println!(
-                    "| {} | {} | error: {e} | | | | |",
-                    m.id,
-                    p["id"].as_str().unwrap_or("")
-                );
+                println!("| {} | {} | error: {e} | | | | |", m.id, p.id);
                 continue;
             }
         };
         let n = simulate(&pl, &c, &sc).map_or(0, |s| s.y.len());
         let tt = time(
-            || drop(black_box(rules::tune(&m.id, &dp, &params).ok())),
+            || drop(black_box(rules::tune(&m.id, &dp, params).ok())),
             per,
             20,
         );
         let tu = time(
             || {
-                if let Ok(t) = rules::tune(&m.id, &dp, &params) {
+                if let Ok(t) = rules::tune(&m.id, &dp, params) {
                     black_box(simulate(&pl, &t.controller, &sc).ok());
                     black_box(analyze(&pl, &t.controller).ok());
                 }
@@ -340,7 +281,7 @@ fn main() {
         println!(
             "| {} | {} | {} | {} | {n} | {} | {} |",
             m.id,
-            p["id"].as_str().unwrap_or(""),
+            p.id,
             fmt(tt.median),
             fmt(tt.p95),
             fmt(tu.median),

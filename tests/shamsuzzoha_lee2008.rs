@@ -607,9 +607,6 @@ fn presets_load_and_simulate() {
         "14 mappable rows (all but Liu et al.), nominal and mismatch"
     );
     for p in ps {
-        let rules::AnyPreset::Typed(p) = p else {
-            panic!("untyped preset")
-        };
         let controller = match &p.design {
             rules::Design::Rule { method, params } => {
                 rules::tune(method, &p.plant, params)

@@ -10,7 +10,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::{family_infos, Family, Plant};
 use crate::model::tf::Tf;
-use crate::rules::{self, Params};
+use crate::rules;
 use crate::sim::Scenario;
 use serde_json::{json, Map, Value};
 
@@ -156,10 +156,9 @@ pub fn presets() -> Value {
 }
 
 /// A preset as JSON: `{id, title, description, citation, plant, tune, controller, scenario}`.
-pub fn preset_json(p: &rules::AnyPreset) -> Value {
-    match p {
-        rules::AnyPreset::Legacy(l) => serde_json::to_value(l).unwrap_or(Value::Null),
-        rules::AnyPreset::Typed(t) => {
+pub fn preset_json(t: &rules::Preset) -> Value {
+    {
+        {
             let plant = match t.plant.family {
                 Some(f) => family_json(&f),
                 None => plant_json(&t.plant),
@@ -190,14 +189,6 @@ pub fn scenario_json(sc: &Scenario) -> Value {
         v["settling_band"] = json!(sc.settling_band);
     }
     v
-}
-
-/// Method parameters from JSON (`params` of `tune`): an object of numbers and strings.
-pub fn params_from_json(v: &Value) -> Result<Params> {
-    if v.is_null() {
-        return Ok(Params::default());
-    }
-    Ok(input::params(&Some(from_json(v, "params")?)))
 }
 
 /// `tune({method, plant, params})` of API.md.
@@ -267,40 +258,4 @@ pub fn analyze(input: &Value) -> Result<Value> {
     )?;
     let a = analyze_loop(&plant, &c)?;
     Ok(analysis_json(&a))
-}
-
-/// A tuning as JSON: `{method, named: {…}, details: {…}}` (what `tune` returns, with the
-/// named parameters apart), for Rust callers that want the JSON view.
-pub fn tuning_json(t: &impl ToTuning) -> Value {
-    let t = t.to_tuning();
-    let named: Map<String, Value> = t.named.iter().map(|(k, x)| (k.clone(), json!(x))).collect();
-    json!({
-        "method": t.method,
-        "named": Value::Object(named),
-        "details": serde_json::to_value(&t.details).unwrap_or(Value::Null),
-    })
-}
-
-/// A tuning of the typed interface or of a paper not yet converted to it (transitional).
-pub trait ToTuning {
-    /// The typed tuning.
-    fn to_tuning(&self) -> rules::Tuning;
-}
-
-impl ToTuning for rules::Tuning {
-    fn to_tuning(&self) -> rules::Tuning {
-        self.clone()
-    }
-}
-
-impl ToTuning for rules::LegacyTuning {
-    fn to_tuning(&self) -> rules::Tuning {
-        self.clone().into()
-    }
-}
-
-impl<T: ToTuning + ?Sized> ToTuning for &T {
-    fn to_tuning(&self) -> rules::Tuning {
-        (**self).to_tuning()
-    }
 }

@@ -15,7 +15,6 @@ use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::sim::Scenario;
 use serde::Serialize;
-use serde_json::{Map, Value};
 
 mod params;
 pub use params::{ParamDefault, ParamInfo, ParamValue, Params};
@@ -41,35 +40,6 @@ pub struct MethodInfo {
     pub structure: String,
     /// Tunable parameters.
     pub params: Vec<ParamInfo>,
-}
-
-/// Adds the exact-delay frequency analysis of a design to `details` (stable, verdict, ms, w_ms,
-/// ms_at_infinity, l_inf_analysis, gm, pm, w_gc, delay_margin) and returns it; an analysis error
-/// is recorded as `analysis_error`.
-pub fn add_analysis(
-    plant: &Plant,
-    c: &Controller,
-    details: &mut Map<String, Value>,
-) -> Option<crate::analysis::freq::Analysis> {
-    match crate::analysis::freq::analyze(plant, c) {
-        Ok(a) => {
-            details.insert("stable".into(), Value::from(a.stable));
-            details.insert("verdict".into(), Value::from(a.verdict.clone()));
-            details.insert("ms".into(), serde_json::json!(a.ms));
-            details.insert("w_ms".into(), serde_json::json!(a.w_ms));
-            details.insert("ms_at_infinity".into(), Value::from(a.ms_at_infinity));
-            details.insert("l_inf_analysis".into(), serde_json::json!(a.l_inf));
-            details.insert("gm".into(), serde_json::json!(a.gm));
-            details.insert("pm".into(), serde_json::json!(a.pm));
-            details.insert("w_gc".into(), serde_json::json!(a.w_gc));
-            details.insert("delay_margin".into(), serde_json::json!(a.delay_margin));
-            Some(a)
-        }
-        Err(e) => {
-            details.insert("analysis_error".into(), Value::from(e.to_string()));
-            None
-        }
-    }
 }
 
 /// One tuning rule: what `methods()` lists for it, and the rule itself.
@@ -112,8 +82,6 @@ impl Tuning {
 pub enum Details {
     /// Arvanitis et al. (2012).
     Arvanitis2012(arvanitis2012::Details),
-    /// A paper not yet moved to typed details (transitional).
-    Legacy(Map<String, Value>),
     /// Shamsuzzoha & Lee 2008.
     ShamsuzzohaLee2008(Box<shamsuzzoha_lee2008::Details>),
     /// Praveen Kumar & Narayana.
@@ -216,100 +184,6 @@ impl DesignCheck {
     }
 }
 
-// ------------------------------------------------------------------------------------------
-// Transitional: papers not yet moved to the Rule interface keep their free functions; these
-// adapters put them behind it. Removed once every paper is converted.
-
-/// The result of a paper not yet converted (named parameters and details as JSON maps).
-#[derive(Debug, Clone)]
-pub struct LegacyTuning {
-    /// Method id.
-    pub method: String,
-    /// The controller as (Cr, Cy).
-    pub controller: Controller,
-    /// Named parameters.
-    pub named: Map<String, Value>,
-    /// Details.
-    pub details: Map<String, Value>,
-}
-
-impl From<LegacyTuning> for Tuning {
-    fn from(t: LegacyTuning) -> Tuning {
-        Tuning {
-            method: t.method,
-            controller: t.controller,
-            named: t
-                .named
-                .iter()
-                .filter_map(|(k, v)| v.as_f64().map(|x| (k.clone(), x)))
-                .collect(),
-            details: Details::Legacy(t.details),
-        }
-    }
-}
-
-/// A preset of a paper not yet converted (JSON fields).
-#[derive(Debug, Clone, Serialize)]
-pub struct LegacyPreset {
-    /// Unique id.
-    pub id: String,
-    /// Short title.
-    pub title: String,
-    /// One-line description.
-    pub description: String,
-    /// Citation.
-    pub citation: String,
-    /// Plant JSON.
-    pub plant: Value,
-    /// `{ method, params }` or null.
-    pub tune: Value,
-    /// Controller JSON or null.
-    pub controller: Value,
-    /// Scenario JSON.
-    pub scenario: Value,
-}
-
-/// A preset, typed or not yet (transitional).
-#[derive(Debug, Clone)]
-pub enum AnyPreset {
-    /// Typed.
-    Typed(Preset),
-    /// Not yet converted.
-    Legacy(LegacyPreset),
-}
-
-type LegacyTune = fn(&str, &Plant, &Params) -> Option<Result<LegacyTuning>>;
-
-struct LegacyRule {
-    info: MethodInfo,
-    tune: LegacyTune,
-}
-
-impl Rule for LegacyRule {
-    fn info(&self) -> MethodInfo {
-        self.info.clone()
-    }
-    fn tune(&self, plant: &Plant, params: &Params) -> Result<Tuning> {
-        (self.tune)(&self.info.id, plant, params)
-            .unwrap_or_else(|| Err(Error::new("method", "has no implementation")))
-            .map(Tuning::from)
-    }
-    /// Names and kinds only: a paper not yet converted still checks its own ranges.
-    fn validate(&self, params: &Params, info: &MethodInfo) -> Result<()> {
-        params.validate_names(&info.id, &info.params)
-    }
-}
-
-/// Puts a paper's `methods()` and `tune()` free functions behind [`Rule`] (transitional).
-pub fn legacy_rules(methods: Vec<MethodInfo>, tune: LegacyTune) -> Vec<Box<dyn Rule>> {
-    methods
-        .into_iter()
-        .map(|info| Box::new(LegacyRule { info, tune }) as Box<dyn Rule>)
-        .collect()
-}
-
-// ------------------------------------------------------------------------------------------
-
 /// Every rule of every paper, in the order `methods()` lists them.
 pub fn registry() -> Vec<Box<dyn Rule>> {
     let mut v = arvanitis2012::rules();
@@ -326,7 +200,7 @@ pub fn methods() -> Vec<MethodInfo> {
 }
 
 /// Every preset of every paper.
-pub fn presets() -> Vec<AnyPreset> {
+pub fn presets() -> Vec<Preset> {
     let mut v = arvanitis2012::presets();
     v.extend(shamsuzzoha_lee2008::presets());
     v.extend(kaya2020::presets());

@@ -186,20 +186,6 @@ impl Params {
         Ok(())
     }
 
-    /// Checks the names and kinds only (transitional: for papers whose rules still check their
-    /// own ranges).
-    pub fn validate_names(&self, method: &str, decl: &[ParamInfo]) -> Result<()> {
-        let loose: Vec<ParamInfo> = decl
-            .iter()
-            .map(|p| ParamInfo {
-                min: None,
-                max: None,
-                ..p.clone()
-            })
-            .collect();
-        self.validate(method, &loose)
-    }
-
     /// Optional number: `None` when absent; error when not a finite number.
     pub fn opt_f64(&self, name: &str) -> Result<Option<f64>> {
         match self.0.get(name) {

@@ -5,7 +5,7 @@
 use super::CITATION;
 use crate::model::controller::{lead_lag, Pid};
 use crate::model::plant::Family;
-use crate::rules::{AnyPreset, Design, Params, Preset};
+use crate::rules::{Design, Params, Preset};
 use crate::sim::Scenario;
 
 // ---------------------------------------------------------------------------------------------
@@ -153,8 +153,8 @@ pub fn printed_gains(id: &str) -> Option<Gains> {
 }
 
 /// Every preset of this paper.
-pub fn presets() -> Vec<AnyPreset> {
-    boiler_presets().into_iter().map(AnyPreset::Typed).collect()
+pub fn presets() -> Vec<Preset> {
+    boiler_presets()
 }
 
 /// Presets of this paper: every Section 6 setting (rule calls), the printed settings as literal

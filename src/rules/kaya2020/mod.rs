@@ -51,7 +51,7 @@ pub use tables::{
     ERRATA_TABLE_I_ISTE_A2, PRINTED_IPD, PRINTED_TABLE_I_ISTE, TABLE_I, TABLE_II,
 };
 
-use super::{AnyPreset, MethodInfo, ParamInfo, Params, Rule, Tuning};
+use super::{MethodInfo, ParamInfo, Params, Preset, Rule, Tuning};
 use crate::error::{Error, Result};
 use crate::model::controller::{Controller, Pid};
 use crate::model::plant::{Family, Plant};
@@ -552,8 +552,8 @@ pub fn rules() -> Vec<Box<dyn Rule>> {
 }
 
 /// Every preset of this paper.
-pub fn presets() -> Vec<AnyPreset> {
-    typed_presets().into_iter().map(AnyPreset::Typed).collect()
+pub fn presets() -> Vec<Preset> {
+    typed_presets()
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@ use crate::model::controller::{Controller, ModelLoop, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use crate::model::tf::Tf;
-use crate::rules::{AnyPreset, Design as PresetDesign, Params, Preset};
+use crate::rules::{Design as PresetDesign, Params, Preset};
 use crate::sim::Scenario;
 
 // ---------------------------------------------------------------------------------------
@@ -509,6 +509,6 @@ pub fn typed_presets() -> Vec<Preset> {
 }
 
 /// Every preset of this paper.
-pub fn presets() -> Vec<AnyPreset> {
-    typed_presets().into_iter().map(AnyPreset::Typed).collect()
+pub fn presets() -> Vec<Preset> {
+    typed_presets()
 }

@@ -7,7 +7,7 @@ use crate::error::Result;
 use crate::model::controller::{lead_lag, Controller, Pid};
 use crate::model::plant::Plant;
 use crate::model::poly::Poly;
-use crate::rules::{AnyPreset, Design as PresetDesign, Params, Preset};
+use crate::rules::{Design as PresetDesign, Params, Preset};
 use crate::sim::Scenario;
 
 /// Citation of the comparison settings quoted by the paper.
@@ -82,8 +82,8 @@ fn preset(
     plant: Plant,
     design: PresetDesign,
     scenario: Scenario,
-) -> AnyPreset {
-    AnyPreset::Typed(Preset {
+) -> Preset {
+    Preset {
         id: format!("praveen_kumar_narayana/{name}"),
         title,
         description,
@@ -91,7 +91,7 @@ fn preset(
         plant,
         design,
         scenario,
-    })
+    }
 }
 
 /// The rule called with λ or a target Ms and ε = 0.2.
@@ -106,14 +106,14 @@ fn rule_call(name: &str, x: f64) -> PresetDesign {
 
 /// Presets of this paper: both examples with the proposed design (also for Ms = 2), the
 /// +40 % delay perturbation with the nominal controller, and Pai et al. 2010's settings.
-pub fn presets() -> Vec<AnyPreset> {
+pub fn presets() -> Vec<Preset> {
     let mut v = example1_presets();
     v.extend(example2_presets());
     v
 }
 
 /// Example 1 (the boiler steam drum, Eq. 20).
-fn example1_presets() -> Vec<AnyPreset> {
+fn example1_presets() -> Vec<Preset> {
     let mut v = vec![];
     let sc1 = scenario(60.0, 30.0);
     v.push(preset(
@@ -183,7 +183,7 @@ fn example1_presets() -> Vec<AnyPreset> {
 }
 
 /// Example 2 (the fourth-order process of Eq. 21, designed on the reduced model of Eq. 22).
-fn example2_presets() -> Vec<AnyPreset> {
+fn example2_presets() -> Vec<Preset> {
     let mut v = vec![];
     let full = ex2_process();
     let mut full40 = full.clone();

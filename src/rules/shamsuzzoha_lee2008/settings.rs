@@ -9,7 +9,7 @@ use crate::model::controller::{lag, Controller, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
 use crate::model::tf::Tf;
-use crate::rules::{AnyPreset, Preset};
+use crate::rules::Preset;
 use crate::sim::Scenario;
 
 pub(super) const C_WANG_CAI: &str =
@@ -349,7 +349,7 @@ pub fn liu_load_response(t_d: f64, d: f64, t_end: f64, dt: f64) -> Result<(f64, 
 /// Presets of this paper: every row of Tables 1-5 that maps onto (Cr, Cy), on the nominal
 /// plant (the proposed rows as a method call) and on the example's worst-case mismatch plant
 /// (the controller designed for the nominal model, as a literal).
-pub fn presets() -> Vec<AnyPreset> {
+pub fn presets() -> Vec<Preset> {
     let mut out = vec![];
     for s in studies() {
         for r in &s.rows {
@@ -387,5 +387,5 @@ pub fn presets() -> Vec<AnyPreset> {
             });
         }
     }
-    out.into_iter().map(AnyPreset::Typed).collect()
+    out
 }
