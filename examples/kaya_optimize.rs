@@ -15,10 +15,9 @@ use pidlab::analysis::freq::analyze;
 use pidlab::analysis::simulate;
 use pidlab::model::controller::{Controller, Pid};
 use pidlab::model::plant::{Family, Plant};
-use pidlab::model::poly::Poly;
 use pidlab::model::tf::Tf;
 use pidlab::rules::kaya2020::{
-    default_n, normalized_settings, table_for, Criterion, TABLE_I, TABLE_II,
+    default_n, normalized_settings, studies::pade33, table_for, Criterion, TABLE_I, TABLE_II,
 };
 use pidlab::sim::Scenario;
 use std::fmt::Write;
@@ -88,20 +87,6 @@ fn cost(x: f64, y: f64, crit: Criterion, p: [f64; 3]) -> f64 {
             None => f64::INFINITY,
         },
         _ => f64::INFINITY,
-    }
-}
-
-/// 3/3 Padé approximation of e^{−θs}.
-fn pade33(theta: f64) -> Tf {
-    let c = [
-        1.0,
-        theta / 2.0,
-        theta * theta / 10.0,
-        theta.powi(3) / 120.0,
-    ];
-    Tf {
-        num: Poly::from_asc(&[c[0], -c[1], c[2], -c[3]]),
-        den: Poly::from_asc(&c),
     }
 }
 

@@ -190,7 +190,8 @@ export function buildMethod() {
   box.replaceChildren();
   const tr = $('target-row');
   const names = info ? info.params.map((p) => p.name) : [];
-  const hasTarget = names.includes('target_ms') || names.includes('lambda');
+  // a target Ms is offered where the rule declares target_ms (it then solves λ for it)
+  const hasTarget = names.includes('target_ms');
   tr.hidden = !hasTarget;
   if (!info) return;
   // λ without a default: start from the λ that gives Ms = 1.6 (solved once), then let the
@@ -211,8 +212,11 @@ export function buildMethod() {
   }
   if (!hasTarget) state.target = null;
   $('target-on').checked = state.target !== null;
+  // the target-Ms slider spans the rule's declaration of target_ms (methods())
+  const tm = info.params.find((p) => p.name === 'target_ms');
+  const [tmMin, tmMax] = tm ? [tm.min, tm.max] : [1.05, 4];
   $('target-slider').replaceChildren(slider({
-    id: 'mp-target_ms', key: 'mp-target_ms', label: 'Target Ms', min: 1.05, max: 4, step: '0.01', value: state.target ?? 1.6,
+    id: 'mp-target_ms', key: 'mp-target_ms', label: 'Target Ms', min: tmMin, max: tmMax, step: '0.01', value: state.target ?? 1.6,
     disabled: state.target === null,
     onInput: (v) => { store.state.target = v; changed(); },
   }));

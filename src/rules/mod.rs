@@ -230,15 +230,22 @@ pub fn tune(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
     })?;
     let info = rule.info();
     let fam = plant.family.map(|f| f.id()).unwrap_or("custom");
-    if !info.families.iter().any(|f| f == fam) {
-        return Err(Error::new(
-            "plant.family",
-            format!(
-                "method '{id}' applies to families {}; got '{fam}'",
-                info.families.join(", ")
-            ),
-        ));
+    let families: Vec<&str> = info.families.iter().map(String::as_str).collect();
+    if !families.contains(&fam) {
+        return Err(wrong_family(id, &families, fam));
     }
     rule.validate(params, &info)?;
     rule.tune(plant, params)
+}
+
+/// The error for a plant of family `got` given to method `id`, which applies to `families`
+/// (named `plant.family`; `custom` for a plant given as `{num, den, delay}`).
+pub fn wrong_family(id: &str, families: &[&str], got: &str) -> Error {
+    Error::new(
+        "plant.family",
+        format!(
+            "method '{id}' applies to families {}; got '{got}'",
+            families.join(", ")
+        ),
+    )
 }

@@ -487,7 +487,8 @@ fn history(
 }
 
 /// Integrates the several-delay loop (see the module docs).
-fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
+/// The internal step: at most `dt`, `0.5/ρ(A)` and every nonzero delay.
+fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {
     let a = mm.a();
     let rho = if mm.n == 0 {
         0.0
@@ -505,25 +506,12 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
             h = h.min(d);
         }
     }
-    let tol = 1e-9 * h;
-    let events: Vec<f64> = [&sc.setpoint, &sc.disturbance]
-        .iter()
-        .filter(|e| e.size != 0.0 && e.time <= sc.t_end)
-        .map(|e| e.time)
-        .collect();
-    let brk = breakpoints(&events, &mm.delays, sc.t_end, tol)?;
-    let n_steps = ((sc.t_end + tol) / h).ceil().max(1.0) as usize;
-    if n_steps.saturating_add(brk.len()) > MAX_PIECES {
-        return Err(Error::new(
-            "dt",
-            format!(
-                "the loop needs an internal step of {h:.3e}; more than {MAX_PIECES} pieces: \
-                 shorten t_end"
-            ),
-        ));
-    }
-    // boundaries: the grid k·h merged with the breakpoints (a grid point within tol of a
-    // breakpoint gives way to it)
+    h
+}
+
+/// Piece boundaries: the grid `k·h` (k = 0..=n_steps) merged with the breakpoints `brk` (a
+/// grid point within `tol` of a breakpoint gives way to it).
+fn piece_bounds(brk: &[f64], n_steps: usize, h: f64, tol: f64) -> Vec<f64> {
     let mut bounds: Vec<f64> = Vec::with_capacity(n_steps + brk.len() + 1);
     let mut bi = 0;
     for k in 0..=n_steps {
@@ -543,6 +531,63 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
             bounds.push(p);
         }
     }
+    bounds
+}
+
+/// Fills the node values of each delayed channel on piece `k` (`[t0, t0 + len)`) from the
+/// channel's history one delay earlier; a channel without delay has none (zeros).
+#[allow(clippy::too_many_arguments)]
+fn fill_histories(
+    mm: &MultiModel,
+    z: &mut [f64],
+    chans: &[Vec<f64>],
+    starts: &[f64],
+    lens: &[f64],
+    k: usize,
+    tol: f64,
+) {
+    let (n, m) = (mm.n, mm.m);
+    let (t0, len) = (starts[k], lens[k]);
+    for j in 0..m {
+        let seg = &mut z[n + NODES * j..n + NODES * (j + 1)];
+        if mm.delays[j] > 0.0 {
+            history(
+                &starts[..k],
+                &lens[..k],
+                &chans[j],
+                t0 - mm.delays[j],
+                len,
+                tol,
+                seg,
+            );
+        } else {
+            seg.fill(0.0);
+        }
+    }
+}
+
+/// Integrates the loop piece by piece (see the module docs): the continuous response and the
+/// time divergence was detected, if it was.
+fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
+    let h = internal_step(mm, sc);
+    let tol = 1e-9 * h;
+    let events: Vec<f64> = [&sc.setpoint, &sc.disturbance]
+        .iter()
+        .filter(|e| e.size != 0.0 && e.time <= sc.t_end)
+        .map(|e| e.time)
+        .collect();
+    let brk = breakpoints(&events, &mm.delays, sc.t_end, tol)?;
+    let n_steps = ((sc.t_end + tol) / h).ceil().max(1.0) as usize;
+    if n_steps.saturating_add(brk.len()) > MAX_PIECES {
+        return Err(Error::new(
+            "dt",
+            format!(
+                "the loop needs an internal step of {h:.3e}; more than {MAX_PIECES} pieces: \
+                 shorten t_end"
+            ),
+        ));
+    }
+    let bounds = piece_bounds(&brk, n_steps, h, tol);
     let starts: Vec<f64> = bounds[..bounds.len() - 1].to_vec();
     let lens: Vec<f64> = bounds.windows(2).map(|w| w[1] - w[0]).collect();
     let total = starts.len();
@@ -580,22 +625,7 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
         let (t0, len) = (starts[k], lens[k]);
         let r = traj.step_at(&sc.setpoint, t0);
         let d = traj.step_at(&sc.disturbance, t0);
-        for j in 0..m {
-            let seg = &mut z[n + NODES * j..n + NODES * (j + 1)];
-            if mm.delays[j] > 0.0 {
-                history(
-                    &starts[..k],
-                    &lens[..k],
-                    &chans[j],
-                    t0 - mm.delays[j],
-                    len,
-                    tol,
-                    seg,
-                );
-            } else {
-                seg.fill(0.0);
-            }
-        }
+        fill_histories(mm, &mut z, &chans, &starts, &lens, k, tol);
         z[n + NODES * m] = r;
         z[n + NODES * m + 1] = d;
         let p = if (len - h).abs() <= 1e-12 * h {

@@ -242,27 +242,25 @@ fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
     Ok(p)
 }
 
-/// Integrates the loop and returns the continuous response, or the error that explains why
-/// it cannot be simulated. `diverged_at` is set when the response left the bounds.
-pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
+/// The internal step h = θ/N (so the delay maps steps onto steps exactly), with h ≤ dt and
+/// h ≤ 0.5/ρ(A).
+fn internal_step(m: &LoopModel, sc: &Scenario) -> f64 {
     let mut hmax = sc.dt;
     let rho = m.rho();
     if rho > 0.0 {
         hmax = hmax.min(0.5 / rho);
     }
-    let h = if m.delay > 0.0 {
+    if m.delay > 0.0 {
         let n = (m.delay / hmax - 1e-9).ceil().max(1.0);
         m.delay / n
     } else {
         sc.dt / (sc.dt / hmax - 1e-9).ceil().max(1.0)
-    };
-    let n_delay = if m.delay > 0.0 {
-        (m.delay / h).round() as usize
-    } else {
-        0
-    };
-    let tol = 1e-9 * h;
-    // piece offsets within a step: 0 and the event offsets
+    }
+}
+
+/// The pieces of one step: their offsets within the step (0 and the events' offsets, so every
+/// discontinuity an event causes falls on a boundary) and their lengths.
+fn step_pieces(sc: &Scenario, h: f64, tol: f64) -> (Vec<f64>, Vec<f64>) {
     let mut offs = vec![0.0];
     for ev in [&sc.setpoint, &sc.disturbance] {
         if ev.size == 0.0 || ev.time > sc.t_end {
@@ -285,6 +283,20 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
             }
         })
         .collect();
+    (offs, lens)
+}
+
+/// Integrates the loop and returns the continuous response, or the error that explains why
+/// it cannot be simulated. `diverged_at` is set when the response left the bounds.
+pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
+    let h = internal_step(m, sc);
+    let n_delay = if m.delay > 0.0 {
+        (m.delay / h).round() as usize
+    } else {
+        0
+    };
+    let tol = 1e-9 * h;
+    let (offs, lens) = step_pieces(sc, h, tol);
     let pps = offs.len();
     let n_steps = ((sc.t_end + tol) / h).ceil().max(1.0) as usize;
     let total = n_steps.saturating_mul(pps);

@@ -318,14 +318,7 @@ pub fn target(family: &Family, lambda: f64) -> (TargetKind, Poly) {
 /// Checks the family belongs to the paper and its parameters allow the design.
 fn check_family(family: &Family) -> Result<()> {
     if !FAMILIES.contains(&family.id()) {
-        return Err(Error::new(
-            "plant.family",
-            format!(
-                "method '{ID}' applies to families {}; got '{}'",
-                FAMILIES.join(", "),
-                family.id()
-            ),
-        ));
+        return Err(super::wrong_family(ID, &FAMILIES, family.id()));
     }
     family.validate().map_err(|e| e.within("plant"))?;
     let th = family.theta();
@@ -567,6 +560,7 @@ pub fn zero_closed_form(
 pub fn params_info() -> Vec<ParamInfo> {
     vec![
         ParamInfo::number("lambda", "λ (closed-loop time constant)", None, 1e-3, 1e3)
+            .required()
             .unit("time")
             .help("required unless target_ms or fit_ms is given"),
         ParamInfo::number("p", "p (set-point filter time constant)", None, 1e-3, 1e3)

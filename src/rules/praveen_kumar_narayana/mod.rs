@@ -459,6 +459,7 @@ pub fn controller(d: &Design, epsilon: f64, deriv: Derivative) -> Result<Control
 pub fn param_decls() -> Vec<ParamInfo> {
     vec![
         ParamInfo::number("lambda", "λ (closed-loop poles at −λ)", None, 1e-6, 1e6)
+            .required()
             .unit("1/time unit")
             .help(
                 "required unless target_ms is given; the admissible interval depends on the \

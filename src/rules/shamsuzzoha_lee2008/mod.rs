@@ -530,16 +530,7 @@ pub fn design_model(family: &Family, phi: f64) -> Result<DesignModel> {
                 fmt_g(phi)
             ),
         },
-        _ => {
-            return Err(Error::new(
-                "plant.family",
-                format!(
-                    "method '{ID}' applies to families {}; got '{}'",
-                    FAMILIES.join(", "),
-                    family.id()
-                ),
-            ))
-        }
+        _ => return Err(super::wrong_family(ID, &FAMILIES, family.id())),
     })
 }
 
@@ -625,7 +616,9 @@ pub fn method_info() -> MethodInfo {
                     series for ifoptd_zero with z > 0"
             .into(),
         params: vec![
-            ParamInfo::number("lambda", "λ (closed-loop time constant)", None, 1e-3, 1e3).help(
+            ParamInfo::number("lambda", "λ (closed-loop time constant)", None, 1e-3, 1e3)
+                .required()
+                .help(
                 "required unless target_ms is given. Ms 1.6-2.0 is a good trade-off; for the DIP \
                  (piptd) the paper's guideline is λ = αθ with α = 2.245, 1.5757, 1.221 for \
                  Ms = 1.6, 1.8, 2.0",
