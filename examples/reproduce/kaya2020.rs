@@ -144,7 +144,7 @@ pub fn report() -> String {
     let _ = writeln!(
         w,
         "Rule: Eqs. (5)-(7) with Tables I (0.1 ≤ θ/T ≤ 1.0) and II (1.1 ≤ θ/T ≤ 2.0); I-PD of Eqs. (3)-(4) \
-         mapped as Cr = K_c/(T_i s), Cy = K_c(1 + T_d s) + K_c/(T_i s). Module `src/rules/kaya2020.rs`.\n"
+         mapped as Cr = K_c/(T_i s), Cy = K_c(1 + T_d s) + K_c/(T_i s). Module `src/rules/kaya2020/`.\n"
     );
     settings_section(w);
     reduction_section(w);

@@ -29,7 +29,7 @@ pub fn report() -> String {
     );
     let _ = writeln!(
         o,
-        "Method `shamsuzzoha_lee` (src/rules/shamsuzzoha_lee2008.rs). One generic routine: the \
+        "Method `shamsuzzoha_lee` (src/rules/shamsuzzoha_lee2008/). One generic routine: the \
          integrator(s) replaced by φ/(φs+1) (φ = 100), the IMC filter of Eq. (7) with one β per \
          model pole, β from the pole-cancellation conditions of Eq. (8) as a linear solve \
          (derivative conditions at the double pole of the double integrator), then the Maclaurin \
