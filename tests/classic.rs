@@ -335,3 +335,39 @@ fn presets_and_declarations() {
     .unwrap_err();
     assert_eq!(e.path, "params.structure");
 }
+
+/// Skogestad (2003), Example E1: `g₀(s) = (−0.3s + 1)(0.08s + 1)/((2s + 1)(s + 1)(0.4s + 1)
+/// (0.2s + 1)(0.05s + 1)³)`. The half rule gives the FOPDT model τ₁ = 2 + 1/2 = 2.5,
+/// θ = 0.3 (inverse-response zero) + 1/2 (half of the second lag) + 0.4 + (0.2 − 0.08)
+/// (the LHP zero cancelled against the nearest lag) + 3·0.05 = 1.47 (as printed, and as
+/// tbcontrol's test of Skogestad's course notes also quotes it), and the SIMC PI settings
+/// with τ_c = θ printed as K_c = 0.85, τ_I = 2.5. Two printed decimals: the computed values
+/// must round to them, i.e. lie within half a unit of the last digit (5e-3, plus 1e-9 for
+/// rounding).
+#[wasm_bindgen_test(unsupported = test)]
+fn simc_skogestad_2003_example_e1() {
+    let tau1: f64 = 2.0 + 1.0 / 2.0;
+    let theta: f64 = 0.3 + 1.0 / 2.0 + 0.4 + (0.2 - 0.08) + 3.0 * 0.05;
+    let (_, tau1_printed, theta_printed) = classic::SKOGESTAD_E1_MODEL;
+    assert!((tau1 - tau1_printed).abs() < 1e-12 && (theta - theta_printed).abs() < 1e-12);
+    let (kc_printed, ti_printed) = classic::SKOGESTAD_E1_PI;
+    let t = tune("simc", &fopdt(1.0, tau1, 0.0, theta), Params::default()).unwrap();
+    let half = 5e-3 + 1e-9;
+    assert!(
+        (t.named("kc").unwrap() - kc_printed).abs() <= half,
+        "{:?}",
+        t.named
+    );
+    assert!((t.named("ti").unwrap() - ti_printed).abs() <= half);
+    assert!(stable(&t));
+    // The same model through the rule's own half-rule path: the inverse-response zero as a
+    // delay (fopdt_ir with τ_z = 0.3 and the remaining θ = 1.17) gives the same settings.
+    let t2 = tune(
+        "simc",
+        &fopdt(1.0, tau1, 0.3, theta - 0.3),
+        Params::default(),
+    )
+    .unwrap();
+    close(t2.named("kc").unwrap(), t.named("kc").unwrap(), "kc");
+    close(t2.named("ti").unwrap(), t.named("ti").unwrap(), "ti");
+}
