@@ -7,8 +7,8 @@
 //!
 //! - `fopdt_ir` `k(1 − τ_z s)e^{−θs}/(τs + 1)`: self-regulating `(k, τ, θ_eff)` with
 //!   `θ_eff = θ + τ_z`: the inverse-response zero is taken as dead time,
-//!   `(1 − τ_z s) ≈ e^{−τ_z s}` (Skogestad 2003, Section 3, Eq. 11, the rule that goes with
-//!   the half rule). `τ_z = 0` is the plain FOPDT and is used exactly.
+//!   `(1 − τ_z s) ≈ e^{−τ_z s}` (Skogestad 2003: the approximation of a negative numerator
+//!   time constant that accompanies the half rule). `τ_z = 0` is the plain FOPDT and is used exactly.
 //! - `piptd` `k e^{−θs}/s`, `ifoptd` `k e^{−θs}/(s(τs + 1))`, `ipdt_ir`
 //!   `k(1 − τ_z s)e^{−θs}/(s(τs + 1))`: integrating `(k, lag τ₂, θ_eff = θ + τ_z)`. A PID with
 //!   `τ_D = τ₂` (series form) cancels the lag (SIMC, IMC); a PI uses Skogestad's half rule,
@@ -172,7 +172,7 @@ impl Settings {
 // ---------------------------------------------------------------------------------------
 // The formulas (pure functions; the tests check them against independent arithmetic).
 
-/// SIMC, Skogestad 2003 Eqs. (20)-(21) (Table 3), FOPDT `k e^{−θs}/(τ₁s + 1)`, PI:
+/// SIMC, Skogestad 2003 (the SIMC PI rule), FOPDT `k e^{−θs}/(τ₁s + 1)`, PI:
 /// `K_c = τ₁/(k(τ_c + θ))`, `τ_I = min(τ₁, 4(τ_c + θ))`.
 pub fn simc_fopdt_pi(k: f64, tau1: f64, theta: f64, tau_c: f64) -> Settings {
     Settings {
@@ -183,9 +183,9 @@ pub fn simc_fopdt_pi(k: f64, tau1: f64, theta: f64, tau_c: f64) -> Settings {
     }
 }
 
-/// SIMC, Skogestad 2003 Table 3, integrating `k' e^{−θs}/s` (τ₁ → ∞), PI:
+/// SIMC, Skogestad 2003 (SIMC settings table), integrating `k' e^{−θs}/s` (τ₁ → ∞), PI:
 /// `K_c = 1/(k'(τ_c + θ))`, `τ_I = 4(τ_c + θ)`; with a lag τ₂ the series PID adds `τ_D = τ₂`
-/// (Eq. 22, Table 3 "integrating with lag").
+/// (the table's "integrating process with lag" row).
 pub fn simc_integrating(k: f64, theta: f64, tau_c: f64, td: f64) -> Settings {
     Settings {
         kc: 1.0 / (k * (tau_c + theta)),
@@ -195,7 +195,7 @@ pub fn simc_integrating(k: f64, theta: f64, tau_c: f64, td: f64) -> Settings {
     }
 }
 
-/// AMIGO PID, Åström & Hägglund 2004 Eq. (10) (FOTD `K e^{−sL}/(1 + sT)`):
+/// AMIGO PID, Åström & Hägglund 2004 (FOTD `K e^{−sL}/(1 + sT)`):
 /// `K = (0.2 + 0.45 T/L)/K_p`, `T_i = L(0.4L + 0.8T)/(L + 0.1T)`, `T_d = 0.5LT/(0.3L + T)`.
 pub fn amigo_pid_fotd(kp: f64, t: f64, l: f64) -> Settings {
     Settings {
@@ -206,7 +206,7 @@ pub fn amigo_pid_fotd(kp: f64, t: f64, l: f64) -> Settings {
     }
 }
 
-/// AMIGO PID for the integrating process `K_v e^{−sL}/s`, Åström & Hägglund 2004 Eq. (11):
+/// AMIGO PID for the integrating process `K_v e^{−sL}/s`, Åström & Hägglund 2004:
 /// `K = 0.45/(K_v L)`, `T_i = 8L`, `T_d = 0.5L`.
 pub fn amigo_pid_int(kv: f64, l: f64) -> Settings {
     Settings {
@@ -251,7 +251,7 @@ pub fn imc_fopdt_pi(k: f64, tau: f64, theta: f64, lambda: f64) -> Settings {
 }
 
 /// IMC PID, FOPDT with the first-order Padé `e^{−θs} ≈ (1 − θs/2)/(1 + θs/2)` (Rivera et al.
-/// 1986, Table 1): `C = (τs + 1)(θs/2 + 1)/(k(λ + θ/2)s)`, i.e. the ideal PID
+/// 1986, the IMC derivation with that approximation): `C = (τs + 1)(θs/2 + 1)/(k(λ + θ/2)s)`, i.e. the ideal PID
 /// `K_c = (2τ + θ)/(k(2λ + θ))`, `τ_I = τ + θ/2`, `τ_D = τθ/(2τ + θ)`.
 pub fn imc_fopdt_pid(k: f64, tau: f64, theta: f64, lambda: f64) -> Settings {
     Settings {
@@ -273,7 +273,7 @@ pub fn imc_integrating(k: f64, theta: f64, lambda: f64, td: f64) -> Settings {
     }
 }
 
-/// Ziegler–Nichols step-response rule (1942, Table II of Åström & Hägglund's restatement):
+/// Ziegler–Nichols step-response rule (1942):
 /// with `a = K_p L/T` (FOTD) or `a = K_v L` (integrating): P `K = 1/a`; PI `K = 0.9/a`,
 /// `T_i = 3L`; PID `K = 1.2/a`, `T_i = 2L`, `T_d = L/2`.
 pub fn zn_step(a: f64, l: f64, structure: &str) -> Settings {

@@ -1,6 +1,6 @@
 //! Published constants of the classic rules.
 
-/// Constants of the AMIGO PID gain `K K_p = k0 + k1·T/L` (Åström & Hägglund 2004, Eq. 10).
+/// Constants of the AMIGO PID gain `K K_p = k0 + k1·T/L` (Åström & Hägglund 2004).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct AmigoGain {
     /// Constant term.
