@@ -20,6 +20,7 @@ mod params;
 pub use params::{ParamDefault, ParamInfo, ParamValue, Params};
 
 pub mod arvanitis2012;
+pub mod classic;
 pub mod kaya2020;
 pub mod medarametla_manimozhi2018;
 pub mod praveen_kumar_narayana;
@@ -90,6 +91,8 @@ pub enum Details {
     Kaya2020(Box<kaya2020::Details>),
     /// Medarametla & Manimozhi 2018.
     Medarametla2018(Box<medarametla_manimozhi2018::Details>),
+    /// Classic baselines (SIMC, AMIGO, IMC, Ziegler–Nichols).
+    Classic(Box<classic::Details>),
 }
 
 /// How a preset designs its controller.
@@ -191,6 +194,7 @@ pub fn registry() -> Vec<Box<dyn Rule>> {
     v.extend(kaya2020::rules());
     v.extend(medarametla_manimozhi2018::rules());
     v.extend(praveen_kumar_narayana::rules());
+    v.extend(classic::rules());
     v
 }
 
@@ -206,6 +210,7 @@ pub fn presets() -> Vec<Preset> {
     v.extend(kaya2020::presets());
     v.extend(medarametla_manimozhi2018::presets());
     v.extend(praveen_kumar_narayana::presets());
+    v.extend(classic::presets());
     v
 }
 
