@@ -592,160 +592,22 @@ pub fn tune(method: Method, plant: &Plant, params: &Params) -> Result<Tuning> {
             ));
         }
     }
-    let mut tcl: Option<(f64, &'static str)> = None;
-    let mut ultimate = None;
-    let (settings, theta_used, tau_used, formula): (Settings, f64, Option<f64>, String) =
-        match (method, model) {
-            (Method::Simc | Method::ImcLambda, _) => {
-                let name = if method == Method::Simc {
-                    "tau_c"
-                } else {
-                    "lambda"
-                };
-                let (theta_u, tau_u, td) = match model {
-                    Model::SelfRegulating { tau, theta_eff, .. } => (theta_eff, Some(tau), 0.0),
-                    Model::Integrating { lag, theta_eff, .. } if pid => (theta_eff, None, lag),
-                    Model::Integrating { lag, theta_eff, .. } => {
-                        if lag > 0.0 {
-                            warnings.push(format!(
-                                "PI: lag τ₂ = {lag} approximated by the half rule (θ + τ₂/2)"
-                            ));
-                        }
-                        (theta_eff + lag / 2.0, None, 0.0)
-                    }
-                };
-                let t = match params.opt_f64(name)? {
-                    Some(x) => (x, "given"),
-                    None => {
-                        if theta_u <= 0.0 {
-                            return Err(Error::new(
-                                format!("params.{name}"),
-                                "the plant has no dead time (θ_eff = 0), so the default \
-                                 (= θ_eff) is 0: give a positive value",
-                            ));
-                        }
-                        (theta_u, "default: θ_eff")
-                    }
-                };
-                tcl = Some(t);
-                let tc = t.0;
-                let (s, f) = match (method, model) {
-                    (Method::Simc, Model::SelfRegulating { k, tau, .. }) => {
-                        if pid {
-                            return Err(Error::new(
-                                "params.structure",
-                                "SIMC on a first-order plant is PI (its PID form needs a \
-                                 second time constant, τ_D = τ₂)",
-                            ));
-                        }
-                        (
-                            simc_fopdt_pi(k, tau, theta_u, tc),
-                            "SIMC PI: K_c = τ₁/(k(τ_c + θ)), τ_I = min(τ₁, 4(τ_c + θ))",
-                        )
-                    }
-                    (Method::Simc, Model::Integrating { k, .. }) => (
-                        simc_integrating(k, theta_u, tc, td),
-                        "SIMC integrating: K_c = 1/(k'(τ_c + θ)), τ_I = 4(τ_c + θ), τ_D = τ₂ \
-                         (series)",
-                    ),
-                    (_, Model::SelfRegulating { k, tau, .. }) if pid => (
-                        imc_fopdt_pid(k, tau, theta_u, tc),
-                        "IMC PID (Padé): K_c = (2τ + θ)/(k(2λ + θ)), τ_I = τ + θ/2, \
-                         τ_D = τθ/(2τ + θ)",
-                    ),
-                    (_, Model::SelfRegulating { k, tau, .. }) => (
-                        imc_fopdt_pi(k, tau, theta_u, tc),
-                        "IMC PI (λ-tuning): K_c = τ/(k(λ + θ)), τ_I = τ",
-                    ),
-                    (_, Model::Integrating { k, .. }) => (
-                        imc_integrating(k, theta_u, tc, td),
-                        "IMC integrating: K_c = (2λ + θ)/(k(λ + θ)²), τ_I = 2λ + θ, τ_D = τ₂ \
-                         (series)",
-                    ),
-                };
-                (s, theta_u, tau_u, f.to_string())
-            }
-            (Method::Amigo, Model::SelfRegulating { k, tau, theta_eff }) => {
-                positive_theta(theta_eff, "plant.theta", "AMIGO needs L > 0")?;
-                let s = if pid {
-                    amigo_pid_fotd(k, tau, theta_eff)
-                } else {
-                    amigo_pi_fotd(k, tau, theta_eff)
-                };
-                let f = if pid {
-                    "AMIGO PID: K = (0.2 + 0.45T/L)/K_p, T_i = L(0.4L + 0.8T)/(L + 0.1T), \
-                     T_d = 0.5LT/(0.3L + T)"
-                } else {
-                    "AMIGO PI: K = 0.15/K_p + (0.35 − LT/(L + T)²)T/(K_p L), \
-                     T_i = 0.35L + 13LT²/(T² + 12LT + 7L²)"
-                };
-                let tau_l = theta_eff / (theta_eff + tau);
-                if tau_l < 0.1 {
-                    warnings.push(format!(
-                    "τ = L/(L + T) = {tau_l:.3} < 0.1: the AMIGO rules were derived for τ ≥ 0.1 \
-                         (lag dominated processes get conservative settings)"
-                ));
-                }
-                (s, theta_eff, Some(tau), f.into())
-            }
-            (Method::Amigo, Model::Integrating { k, lag, theta_eff }) => {
-                let l = theta_eff + lag;
-                positive_theta(l, "plant.theta", "AMIGO needs L > 0")?;
-                let (s, f) = if pid {
-                    (
-                        amigo_pid_int(k, l),
-                        "AMIGO PID integrating: K = 0.45/(K_v L), T_i = 8L, T_d = 0.5L",
-                    )
-                } else {
-                    (
-                        amigo_pi_int(k, l),
-                        "AMIGO PI integrating: K = 0.35/(K_v L), T_i = 13.4L",
-                    )
-                };
-                (
-                    s,
-                    l,
-                    None,
-                    format!("{f}; L = θ + τ_z + τ (step-response asymptote)"),
-                )
-            }
-            (Method::ZnStep, _) => {
-                let (a, l, t) = match model {
-                    Model::SelfRegulating { k, tau, theta_eff } => {
-                        (k * theta_eff / tau, theta_eff, Some(tau))
-                    }
-                    Model::Integrating { k, lag, theta_eff } => {
-                        (k * (theta_eff + lag), theta_eff + lag, None)
-                    }
-                };
-                positive_theta(
-                    l,
-                    "plant.theta",
-                    "Ziegler–Nichols step response needs L > 0",
-                )?;
-                (
-                    zn_step(a, l, &structure),
-                    l,
-                    t,
-                    "ZN step: a = K_p L/T (or K_v L); P 1/a; PI 0.9/a, T_i = 3L; PID 1.2/a, \
-                     T_i = 2L, T_d = L/2"
-                        .into(),
-                )
-            }
-            (Method::ZnUltimate, _) => {
-                let (wu, ku) = ultimate_point(plant)?;
-                let tu = 2.0 * std::f64::consts::PI / wu;
-                ultimate = Some(Ultimate { wu, ku, tu });
-                (
-                    zn_ultimate(ku, tu, &structure),
-                    plant.delay,
-                    None,
-                    "ZN ultimate cycle: P 0.5K_u; PI 0.45K_u, T_i = T_u/1.2; PID 0.6K_u, \
-                     T_i = T_u/2, T_d = T_u/8 (exact ultimate point)"
-                        .into(),
-                )
-            }
-        };
+    let d = match (method, model) {
+        (Method::Simc | Method::ImcLambda, _) => {
+            direct_synthesis(method, model, params, pid, &mut warnings)?
+        }
+        (Method::Amigo, _) => amigo(model, pid, &mut warnings)?,
+        (Method::ZnStep, _) => zn_step_design(model, &structure)?,
+        (Method::ZnUltimate, _) => zn_ultimate_design(plant, &structure)?,
+    };
+    let Designed {
+        settings,
+        theta_used,
+        tau_used,
+        formula,
+        tcl,
+        ultimate,
+    } = d;
     let (kp, ki, kd) = settings.parallel();
     let has_d = kd != 0.0;
     let mut p = Pid::parallel(kp, ki, kd);
@@ -858,4 +720,201 @@ pub fn presets() -> Vec<Preset> {
         }
     }
     v
+}
+
+/// What one rule's formulas give: the settings and what the details report of them.
+struct Designed {
+    settings: Settings,
+    theta_used: f64,
+    tau_used: Option<f64>,
+    formula: String,
+    tcl: Option<(f64, &'static str)>,
+    ultimate: Option<Ultimate>,
+}
+
+impl Designed {
+    fn new(t: (Settings, f64, Option<f64>, String)) -> Designed {
+        Designed {
+            settings: t.0,
+            theta_used: t.1,
+            tau_used: t.2,
+            formula: t.3,
+            tcl: None,
+            ultimate: None,
+        }
+    }
+}
+
+/// SIMC and IMC/λ: direct synthesis with the closed-loop time constant τ_c (λ), default θ_eff.
+fn direct_synthesis(
+    method: Method,
+    model: Model,
+    params: &Params,
+    pid: bool,
+    warnings: &mut Vec<String>,
+) -> Result<Designed> {
+    let name = if method == Method::Simc {
+        "tau_c"
+    } else {
+        "lambda"
+    };
+    let (theta_u, tau_u, td) = match model {
+        Model::SelfRegulating { tau, theta_eff, .. } => (theta_eff, Some(tau), 0.0),
+        Model::Integrating { lag, theta_eff, .. } if pid => (theta_eff, None, lag),
+        Model::Integrating { lag, theta_eff, .. } => {
+            if lag > 0.0 {
+                warnings.push(format!(
+                    "PI: lag τ₂ = {lag} approximated by the half rule (θ + τ₂/2)"
+                ));
+            }
+            (theta_eff + lag / 2.0, None, 0.0)
+        }
+    };
+    let t = match params.opt_f64(name)? {
+        Some(x) => (x, "given"),
+        None => {
+            if theta_u <= 0.0 {
+                return Err(Error::new(
+                    format!("params.{name}"),
+                    "the plant has no dead time (θ_eff = 0), so the default \
+                     (= θ_eff) is 0: give a positive value",
+                ));
+            }
+            (theta_u, "default: θ_eff")
+        }
+    };
+    let tcl = Some(t);
+    let tc = t.0;
+    let (s, f) = match (method, model) {
+        (Method::Simc, Model::SelfRegulating { k, tau, .. }) => {
+            if pid {
+                return Err(Error::new(
+                    "params.structure",
+                    "SIMC on a first-order plant is PI (its PID form needs a \
+                     second time constant, τ_D = τ₂)",
+                ));
+            }
+            (
+                simc_fopdt_pi(k, tau, theta_u, tc),
+                "SIMC PI: K_c = τ₁/(k(τ_c + θ)), τ_I = min(τ₁, 4(τ_c + θ))",
+            )
+        }
+        (Method::Simc, Model::Integrating { k, .. }) => (
+            simc_integrating(k, theta_u, tc, td),
+            "SIMC integrating: K_c = 1/(k'(τ_c + θ)), τ_I = 4(τ_c + θ), τ_D = τ₂ \
+             (series)",
+        ),
+        (_, Model::SelfRegulating { k, tau, .. }) if pid => (
+            imc_fopdt_pid(k, tau, theta_u, tc),
+            "IMC PID (Padé): K_c = (2τ + θ)/(k(2λ + θ)), τ_I = τ + θ/2, \
+             τ_D = τθ/(2τ + θ)",
+        ),
+        (_, Model::SelfRegulating { k, tau, .. }) => (
+            imc_fopdt_pi(k, tau, theta_u, tc),
+            "IMC PI (λ-tuning): K_c = τ/(k(λ + θ)), τ_I = τ",
+        ),
+        (_, Model::Integrating { k, .. }) => (
+            imc_integrating(k, theta_u, tc, td),
+            "IMC integrating: K_c = (2λ + θ)/(k(λ + θ)²), τ_I = 2λ + θ, τ_D = τ₂ \
+             (series)",
+        ),
+    };
+    Ok(Designed {
+        tcl,
+        ..Designed::new((s, theta_u, tau_u, f.to_string()))
+    })
+}
+
+/// AMIGO on the self-regulating or the integrating model.
+fn amigo(model: Model, pid: bool, warnings: &mut Vec<String>) -> Result<Designed> {
+    Ok(Designed::new(match model {
+        Model::SelfRegulating { k, tau, theta_eff } => {
+            positive_theta(theta_eff, "plant.theta", "AMIGO needs L > 0")?;
+            let s = if pid {
+                amigo_pid_fotd(k, tau, theta_eff)
+            } else {
+                amigo_pi_fotd(k, tau, theta_eff)
+            };
+            let f = if pid {
+                "AMIGO PID: K = (0.2 + 0.45T/L)/K_p, T_i = L(0.4L + 0.8T)/(L + 0.1T), \
+                 T_d = 0.5LT/(0.3L + T)"
+            } else {
+                "AMIGO PI: K = 0.15/K_p + (0.35 − LT/(L + T)²)T/(K_p L), \
+                 T_i = 0.35L + 13LT²/(T² + 12LT + 7L²)"
+            };
+            let tau_l = theta_eff / (theta_eff + tau);
+            if tau_l < 0.1 {
+                warnings.push(format!(
+                    "τ = L/(L + T) = {tau_l:.3} < 0.1: the AMIGO rules were derived for τ ≥ 0.1 \
+                     (lag dominated processes get conservative settings)"
+                ));
+            }
+            (s, theta_eff, Some(tau), f.into())
+        }
+        Model::Integrating { k, lag, theta_eff } => {
+            let l = theta_eff + lag;
+            positive_theta(l, "plant.theta", "AMIGO needs L > 0")?;
+            let (s, f) = if pid {
+                (
+                    amigo_pid_int(k, l),
+                    "AMIGO PID integrating: K = 0.45/(K_v L), T_i = 8L, T_d = 0.5L",
+                )
+            } else {
+                (
+                    amigo_pi_int(k, l),
+                    "AMIGO PI integrating: K = 0.35/(K_v L), T_i = 13.4L",
+                )
+            };
+            (
+                s,
+                l,
+                None,
+                format!("{f}; L = θ + τ_z + τ (step-response asymptote)"),
+            )
+        }
+    }))
+}
+
+/// Ziegler–Nichols, step-response form.
+fn zn_step_design(model: Model, structure: &str) -> Result<Designed> {
+    Ok(Designed::new({
+        let (a, l, t) = match model {
+            Model::SelfRegulating { k, tau, theta_eff } => {
+                (k * theta_eff / tau, theta_eff, Some(tau))
+            }
+            Model::Integrating { k, lag, theta_eff } => {
+                (k * (theta_eff + lag), theta_eff + lag, None)
+            }
+        };
+        positive_theta(
+            l,
+            "plant.theta",
+            "Ziegler–Nichols step response needs L > 0",
+        )?;
+        (
+            zn_step(a, l, structure),
+            l,
+            t,
+            "ZN step: a = K_p L/T (or K_v L); P 1/a; PI 0.9/a, T_i = 3L; PID 1.2/a, \
+             T_i = 2L, T_d = L/2"
+                .into(),
+        )
+    }))
+}
+
+/// Ziegler–Nichols, ultimate-cycle form, from the exact ultimate point.
+fn zn_ultimate_design(plant: &Plant, structure: &str) -> Result<Designed> {
+    let (wu, ku) = ultimate_point(plant)?;
+    let tu = 2.0 * std::f64::consts::PI / wu;
+    Ok(Designed {
+        ultimate: Some(Ultimate { wu, ku, tu }),
+        ..Designed::new((
+            zn_ultimate(ku, tu, structure),
+            plant.delay,
+            None,
+            "ZN ultimate cycle: P 0.5K_u; PI 0.45K_u, T_i = T_u/1.2; PID 0.6K_u, \
+             T_i = T_u/2, T_d = T_u/8 (exact ultimate point)"
+                .into(),
+        ))
+    })
 }
