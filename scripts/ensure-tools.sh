@@ -10,6 +10,8 @@
 #   - wasm-pack (cargo install --locked; ~3 min). wasm-pack itself installs the wasm-bindgen CLI
 #     matching Cargo.lock on its first build (~5 min, cached under ~/.cache/.wasm-pack);
 #   - the npm devDependencies of package.json (npm ci), e.g. playwright-core;
+#   - python-control in a local virtual environment .venv (scripts/ensure-python.sh), for the
+#     export tests and the benchmark;
 #   - with --browser: Debian's chromium (/usr/bin/chromium) for the browser tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -87,6 +89,9 @@ if [ -f package.json ]; then
     echo "$lock_sum" >"$stamp"
   fi
 fi
+
+# --- python-control in .venv (export tests, benchmark) ----------------------------------------
+bash scripts/ensure-python.sh >/dev/null
 
 # --- chromium (browser tests only) ------------------------------------------------------------
 if [ "$want_browser" = 1 ] && [ ! -x /usr/bin/chromium ]; then
