@@ -529,3 +529,42 @@ fn absent_fields_change_nothing() {
     y["actuator"] = json!(null);
     assert_eq!(pidlab::api::simulate(&y).unwrap(), a);
 }
+
+/// The "windup demo" presets carry their actuator and sampling, and run through `simulate`
+/// as the page loads them: the same tuning, the wound-up loop overshoots more and spends
+/// more of the servo window at a limit.
+#[wasm_bindgen_test(unsupported = test)]
+fn windup_demo_presets_run_and_differ() {
+    let all = pidlab::api::presets();
+    let demo: Vec<&serde_json::Value> = all["presets"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|p| p["id"].as_str().unwrap().starts_with("windup_demo/"))
+        .collect();
+    assert_eq!(demo.len(), 2);
+    assert_eq!(demo[0]["controller"], demo[1]["controller"], "same tuning");
+    let run = |p: &serde_json::Value| {
+        let mut x = json!({});
+        for k in ["plant", "controller", "scenario", "actuator", "sampling"] {
+            x[k] = p[k].clone();
+        }
+        pidlab::api::simulate(&x).unwrap()
+    };
+    let (none, track) = (run(demo[0]), run(demo[1]));
+    assert_eq!(demo[0]["actuator"]["anti_windup"]["kind"], "none");
+    assert_eq!(demo[1]["actuator"]["anti_windup"]["kind"], "tracking");
+    let m = |r: &serde_json::Value, k: &str| r["metrics"]["servo"][k].as_f64().unwrap();
+    println!(
+        "windup demo servo: overshoot {:.3} vs {:.3}, iae {:.3} vs {:.3}, at limit {:.3} vs {:.3}",
+        m(&none, "overshoot"),
+        m(&track, "overshoot"),
+        m(&none, "iae"),
+        m(&track, "iae"),
+        m(&none, "saturated"),
+        m(&track, "saturated")
+    );
+    assert!(m(&track, "overshoot") < m(&none, "overshoot"));
+    let u = none["u"].as_array().unwrap();
+    assert!(u.iter().all(|u| u.as_f64().unwrap().abs() <= 1.5));
+}

@@ -174,8 +174,51 @@ pub fn presets() -> Value {
     json!({ "presets": rules::presets().iter().map(preset_json).collect::<Vec<_>>() })
 }
 
-/// A preset as JSON: `{id, title, description, citation, plant, tune, controller, scenario}`.
+/// A preset as JSON: `{id, title, description, citation, plant, tune, controller, scenario}`,
+/// plus `actuator`, `sampling`, `noise` when the preset carries them
+/// ([`rules::preset_real_loop`]), in the form `simulate` accepts.
 pub fn preset_json(t: &rules::Preset) -> Value {
+    let mut j = preset_json_base(t);
+    if let Some(rl) = rules::preset_real_loop(&t.id) {
+        for (k, v) in real_loop_json(&rl) {
+            j[k] = v;
+        }
+    }
+    j
+}
+
+/// `actuator`, `sampling`, `noise` of a [`crate::sim::RealLoop`] as `simulate` accepts them
+/// (absent parts omitted).
+pub fn real_loop_json(rl: &crate::sim::RealLoop) -> Vec<(&'static str, Value)> {
+    use crate::model::discrete::AntiWindup;
+    let mut out = vec![];
+    let lim = rl.limits;
+    if lim.is_active() || rl.anti_windup != AntiWindup::None {
+        let mut a = json!({});
+        if lim.u_min.is_finite() {
+            a["u_min"] = json!(lim.u_min);
+        }
+        if lim.u_max.is_finite() {
+            a["u_max"] = json!(lim.u_max);
+        }
+        a["anti_windup"] = match rl.anti_windup {
+            AntiWindup::None => json!({"kind": "none"}),
+            AntiWindup::Conditional => json!({"kind": "conditional"}),
+            AntiWindup::Tracking { tt: None } => json!({"kind": "tracking"}),
+            AntiWindup::Tracking { tt: Some(tt) } => json!({"kind": "tracking", "tt": tt}),
+        };
+        out.push(("actuator", a));
+    }
+    if let Some(s) = rl.sampling {
+        out.push(("sampling", json!({"h": s.h, "method": s.method.name()})));
+    }
+    if let Some(n) = rl.noise {
+        out.push(("noise", json!({"std": n.std, "seed": n.seed})));
+    }
+    out
+}
+
+fn preset_json_base(t: &rules::Preset) -> Value {
     {
         {
             let plant = match t.plant.family {
