@@ -530,10 +530,10 @@ pub fn scenario(v: &Value, path: &str) -> Result<Scenario> {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ActuatorIn {
-    #[serde(default)]
-    u_min: Option<Num>,
-    #[serde(default)]
-    u_max: Option<Num>,
+    #[serde(default, deserialize_with = "present")]
+    u_min: Option<Value>,
+    #[serde(default, deserialize_with = "present")]
+    u_max: Option<Value>,
     #[serde(default)]
     anti_windup: Option<AntiWindupIn>,
 }
@@ -543,8 +543,32 @@ pub struct ActuatorIn {
 #[serde(deny_unknown_fields)]
 pub struct AntiWindupIn {
     kind: String,
-    #[serde(default)]
-    tt: Option<Num>,
+    #[serde(default, deserialize_with = "present")]
+    tt: Option<Value>,
+}
+
+/// An optional field that, when present, must hold a value: `null` (what NaN and ±Infinity
+/// become at the wasm boundary) is kept as `Some(Null)` so it can be refused, not dropped.
+fn present<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<Option<Value>, D::Error> {
+    Value::deserialize(d).map(Some)
+}
+
+/// A present optional number: finite, else an error naming `path`.
+fn finite_at(v: &Option<Value>, path: &str) -> Result<Option<f64>> {
+    match v {
+        None => Ok(None),
+        Some(Value::Number(n)) => match n.as_f64() {
+            Some(x) if x.is_finite() => Ok(Some(x)),
+            _ => Err(Error::new(path, "must be a finite number")),
+        },
+        Some(other) => Err(Error::new(
+            path,
+            format!(
+                "must be a finite number (got {}; NaN and ±Infinity arrive as null)",
+                kind(other)
+            ),
+        )),
+    }
 }
 
 /// `sampling = {h, method?}`.
@@ -578,8 +602,11 @@ pub fn real_loop(
     let mut rl = crate::sim::RealLoop::default();
     if !actuator.is_null() {
         let a: ActuatorIn = from_json(actuator, "actuator")?;
-        rl.limits = Limits::new(a.u_min.map(|x| x.0), a.u_max.map(|x| x.0))
-            .map_err(|e| e.within("actuator"))?;
+        rl.limits = Limits::new(
+            finite_at(&a.u_min, "actuator.u_min")?,
+            finite_at(&a.u_max, "actuator.u_max")?,
+        )
+        .map_err(|e| e.within("actuator"))?;
         if let Some(aw) = &a.anti_windup {
             let p = "actuator.anti_windup";
             rl.anti_windup = match aw.kind.as_str() {
@@ -592,8 +619,8 @@ pub fn real_loop(
                 "none" => AntiWindup::None,
                 "conditional" => AntiWindup::Conditional,
                 "tracking" => AntiWindup::Tracking {
-                    tt: match aw.tt {
-                        Some(t) => Some(crate::error::positive(&format!("{p}.tt"), t.0)?),
+                    tt: match finite_at(&aw.tt, &format!("{p}.tt"))? {
+                        Some(t) => Some(crate::error::positive(&format!("{p}.tt"), t)?),
                         None => None,
                     },
                 },
