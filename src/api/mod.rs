@@ -14,6 +14,7 @@ use crate::rules;
 use crate::sim::Scenario;
 use serde_json::{json, Map, Value};
 
+pub mod export;
 pub mod input;
 
 pub use input::MAX_COEFFS;
@@ -258,4 +259,10 @@ pub fn analyze(input: &Value) -> Result<Value> {
     )?;
     let a = analyze_loop(&plant, &c)?;
     Ok(analysis_json(&a))
+}
+
+/// `export({plant, controller | tuning, target, sampling?, actuator?, date?, label?})` of
+/// API.md: `{text, filename}` (see [`export::export`]).
+pub fn export(input: &Value) -> Result<Value> {
+    export::export(input)
 }
