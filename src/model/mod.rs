@@ -3,6 +3,7 @@
 //! Imports nothing above it.
 
 pub mod controller;
+pub mod discrete;
 pub mod plant;
 pub mod poly;
 pub mod ss;
