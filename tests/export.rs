@@ -106,7 +106,6 @@ fn exact_json(text: &str) -> Value {
     serde_json::from_str(&out).unwrap_or_else(|e| panic!("bad JSON from python ({e}): {text}"))
 }
 
-
 /// Designs covering the structures: I-PD with ideal derivative (improper Cy), PID with
 /// set-point filter, PID × lead-lag with weights, a literal filtered 2-DOF PID on a custom
 /// plant without dead time.
@@ -495,5 +494,559 @@ fn label_is_sanitised() {
                 .any(|l| l.starts_with("% evil") || l.starts_with("evil")),
             "{t}"
         );
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// Sampled targets: C and IEC 61131-3 ST, from pidlab's own difference equations.
+
+use pidlab::model::discrete::{AntiWindup, DiscreteController, Limits, Method};
+
+/// The sampled cases: (name, plant, controller JSON, sampling, actuator).
+fn sampled_cases() -> Vec<(String, Value, Value, Value, Value)> {
+    let mut out = vec![];
+    let filtered = api::controller_json(
+        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 0.8)
+            .weights(0.6, 0.2)
+            .filter_n(10.0)
+            .to_controller()
+            .unwrap(),
+    );
+    let pi = api::controller_json(
+        &pidlab::model::controller::Pid::parallel(1.3, 0.4, 0.0)
+            .to_controller()
+            .unwrap(),
+    );
+    let plant = json!({"family": "piptd", "k": 0.2, "theta": 1.5});
+    let lim = json!({"u_min": -0.8, "u_max": 1.1});
+    for (cname, ctl) in [("pid2dof", &filtered), ("pi", &pi)] {
+        for m in ["tustin", "backward", "forward"] {
+            for (aname, act) in [
+                ("free", Value::Null),
+                (
+                    "none",
+                    json!({"u_min": -0.8, "u_max": 1.1, "anti_windup": {"kind": "none"}}),
+                ),
+                (
+                    "tracking",
+                    json!({"u_min": -0.8, "u_max": 1.1, "anti_windup": {"kind": "tracking"}}),
+                ),
+                (
+                    "tracking_tt",
+                    json!({"u_max": 1.1, "anti_windup": {"kind": "tracking", "tt": 0.9}}),
+                ),
+                (
+                    "conditional",
+                    json!({"u_min": -0.8, "u_max": 1.1, "anti_windup": {"kind": "conditional"}}),
+                ),
+                (
+                    "conditional_lo",
+                    json!({"u_min": 0.5, "anti_windup": {"kind": "conditional"}}),
+                ),
+            ] {
+                let _ = &lim;
+                out.push((
+                    format!("{cname}_{m}_{aname}"),
+                    plant.clone(),
+                    ctl.clone(),
+                    json!({"h": 0.1, "method": m}),
+                    act,
+                ));
+            }
+        }
+    }
+    // I-PD with an ideal derivative from a rule: backward Euler (the only method for it)
+    let ipdt = json!({"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1});
+    let ipd = api::tune(&json!({"method": "arvanitis_alg1", "plant": ipdt})).unwrap()["controller"]
+        .clone();
+    out.push((
+        "arvanitis_backward_tracking".into(),
+        ipdt.clone(),
+        ipd,
+        json!({"h": 0.02, "method": "backward"}),
+        json!({"u_min": -2.0, "u_max": 2.0, "anti_windup": {"kind": "tracking"}}),
+    ));
+    // PID x lead-lag (improper Cy: backward Euler) with set-point weighting, conditional
+    let pk =
+        api::tune(&json!({"method": "praveen_kumar", "plant": ipdt, "params": {"lambda": 1.2}}))
+            .unwrap()["controller"]
+            .clone();
+    out.push((
+        "praveen_backward_conditional".into(),
+        ipdt,
+        pk,
+        json!({"h": 0.05, "method": "backward"}),
+        json!({"u_min": -1.5, "u_max": 1.5, "anti_windup": {"kind": "conditional"}}),
+    ));
+    out
+}
+
+/// pidlab's discrete controller for a case (parsed the way the API does).
+fn discrete(ctl: &Value, sampling: &Value, actuator: &Value) -> DiscreteController {
+    let c = api::parse_controller(ctl, "controller").unwrap();
+    let method = match sampling["method"].as_str() {
+        None | Some("tustin") => Method::Tustin,
+        Some("backward") => Method::Backward,
+        Some(_) => Method::Forward,
+    };
+    let g = |k: &str| actuator.get(k).and_then(Value::as_f64);
+    let limits = Limits::new(g("u_min"), g("u_max")).unwrap();
+    let aw = match actuator["anti_windup"]["kind"].as_str() {
+        None | Some("none") => AntiWindup::None,
+        Some("tracking") => AntiWindup::Tracking {
+            tt: actuator["anti_windup"]["tt"].as_f64(),
+        },
+        Some(_) => AntiWindup::Conditional,
+    };
+    DiscreteController::new(&c, sampling["h"].as_f64().unwrap(), method, limits, aw).unwrap()
+}
+
+/// A recorded input sequence (r_k, y_k), k = 0..600: set-point steps up and down (0 → 1 →
+/// −0.7 → 0.4) and a measurement that lags them with an oscillation and a deterministic
+/// pseudo-random part, large enough that the controller sits at its limits for a while.
+fn recorded() -> Vec<(f64, f64)> {
+    let mut seed: u64 = 0x2545_f491_4f6c_dd1d;
+    let mut noise = || {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((seed >> 11) as f64 / (1u64 << 53) as f64) - 0.5
+    };
+    (0..600)
+        .map(|k| {
+            let t = k as f64 * 0.1;
+            let r = if k < 10 {
+                0.0
+            } else if k < 250 {
+                1.0
+            } else if k < 420 {
+                -0.7
+            } else {
+                0.4
+            };
+            let y = 0.8 * r * (1.0 - (-t / 9.0).exp()) + 0.3 * (0.7 * t).sin() + 0.05 * noise();
+            (r, y)
+        })
+        .collect()
+}
+
+fn compile_c(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let src = dir.join(format!("{name}.c"));
+    std::fs::write(&src, text).unwrap();
+    let exe = dir.join(name);
+    // -ffp-contract=off: no fused multiply-adds, so the C evaluates exactly the operations
+    // the Rust does (IEEE double, round to nearest) and the comparison can be this tight
+    let out = Command::new("cc")
+        .args([
+            "-std=c99",
+            "-pedantic",
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            "-O2",
+            "-ffp-contract=off",
+        ])
+        .arg("-DPIDLAB_EXPORT_MAIN")
+        .arg(&src)
+        .arg("-o")
+        .arg(&exe)
+        .output()
+        .expect("the system C compiler `cc` must run");
+    assert!(
+        out.status.success(),
+        "{name}: cc failed:\n{}\n{text}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // also as a library translation unit (no main): the functions alone compile cleanly
+    let out = Command::new("cc")
+        .args(["-std=c99", "-pedantic", "-Wall", "-Wextra", "-Werror", "-c"])
+        .arg(&src)
+        .arg("-o")
+        .arg(dir.join(format!("{name}.o")))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{name}: cc -c failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    exe
+}
+
+/// (b) The C export, compiled with the system `cc` and run on the recorded (r_k, y_k), gives
+/// pidlab's own sampled controller's v_k and u_k to 1e-12.
+#[test]
+fn c_export_runs_like_pidlab() {
+    use std::io::Write as _;
+    let dir = tmp_dir("c");
+    let seq = recorded();
+    let input: String = seq.iter().map(|(r, y)| format!("{r:?} {y:?}\n")).collect();
+    for (name, plant, ctl, sampling, actuator) in sampled_cases() {
+        let out = export(json!({"plant": plant, "controller": ctl, "target": "c",
+                                "sampling": sampling, "actuator": actuator, "date": DATE}));
+        let text = out["text"].as_str().unwrap();
+        assert!(out["filename"].as_str().unwrap().ends_with(".c"));
+        let exe = compile_c(&dir, &name, text);
+        let mut child = Command::new(&exe)
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .spawn()
+            .unwrap();
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(input.as_bytes())
+            .unwrap();
+        let res = child.wait_with_output().unwrap();
+        assert!(res.status.success(), "{name}: the program failed");
+        let lines: Vec<String> = String::from_utf8(res.stdout)
+            .unwrap()
+            .lines()
+            .map(String::from)
+            .collect();
+        assert_eq!(lines.len(), seq.len(), "{name}: one line per sample");
+        let mut dc = discrete(&ctl, &sampling, &actuator);
+        let (mut at_limit, mut worst) = (0, 0.0f64);
+        for (k, ((r, y), line)) in seq.iter().zip(&lines).enumerate() {
+            let mut it = line.split(' ').map(|x| x.parse::<f64>().unwrap());
+            let (vc, uc) = (it.next().unwrap(), it.next().unwrap());
+            let (v, u) = dc.step(*r, *y);
+            // 1e-12 relative to the size of the signal (O(1) here): the C runs the same
+            // operations in the same order, so the difference is 0 unless the compiler
+            // reassociates (it may not, in C99 without -ffast-math)
+            let tol = 1e-12 * (1.0 + u.abs().max(v.abs()));
+            assert!(
+                (uc - u).abs() <= tol && (vc - v).abs() <= tol,
+                "{name}: k={k}: C (v, u) = ({vc}, {uc}), pidlab ({v}, {u})"
+            );
+            worst = worst.max((uc - u).abs());
+            if u != v {
+                at_limit += 1;
+            }
+        }
+        // the limits are exercised where there are limits
+        if !actuator.is_null() {
+            assert!(at_limit >= 10, "{name}: only {at_limit} samples at a limit");
+        }
+        eprintln!("{name}: max |u_C - u_pidlab| = {worst:e}, {at_limit} samples at a limit");
+    }
+}
+
+/// The numbers of the `static const double NAME[...] = {..};` / `NAME : ... := [..];`
+/// definition of `name` in a text.
+fn array_in(text: &str, name: &str, open: char, close: char) -> Vec<f64> {
+    let line = text
+        .lines()
+        .find(|l| {
+            let l = l.trim_start();
+            l.contains(&format!("{name}[")) && l.starts_with("static const double")
+                || l.starts_with(&format!("{name} : ARRAY"))
+        })
+        .unwrap_or_else(|| panic!("no array {name} in\n{text}"));
+    let body = line.rsplit_once(open).unwrap().1;
+    let body = body.split(close).next().unwrap();
+    body.split(',').map(|x| x.trim().parse().unwrap()).collect()
+}
+
+/// A scalar constant `NAME = x;` (C) or `NAME : LREAL := x;` (ST).
+fn scalar_in(text: &str, name: &str, st: bool) -> f64 {
+    let pat = if st {
+        format!("{name} : LREAL := ")
+    } else {
+        format!("static const double {name} = ")
+    };
+    let line = text
+        .lines()
+        .find(|l| l.trim_start().starts_with(&pat))
+        .unwrap_or_else(|| panic!("no {name} in\n{text}"));
+    let v = line.trim_start()[pat.len()..].split(';').next().unwrap();
+    v.trim().parse().unwrap()
+}
+
+/// Block keywords balance in order (a stack), every statement line ends with `;`, comments
+/// are closed, and only the identifiers the block declares are assigned.
+fn st_structure(text: &str) {
+    let mut stack: Vec<&str> = vec![];
+    let pairs = [
+        ("FUNCTION_BLOCK", "END_FUNCTION_BLOCK"),
+        ("VAR_INPUT", "END_VAR"),
+        ("VAR_OUTPUT", "END_VAR"),
+        ("VAR CONSTANT", "END_VAR"),
+        ("VAR", "END_VAR"),
+        ("IF", "END_IF;"),
+        ("FOR", "END_FOR;"),
+    ];
+    // comments removed (they do not nest here: the header cannot contain "(*" or "*)")
+    let mut code = String::new();
+    let mut rest = text;
+    while let Some(i) = rest.find("(*") {
+        code.push_str(&rest[..i]);
+        let j = rest[i..].find("*)").expect("unclosed comment") + i;
+        assert!(!rest[i + 2..j].contains("(*"), "nested comment");
+        rest = &rest[j + 2..];
+    }
+    code.push_str(rest);
+    let mut declared = vec![];
+    let mut in_decl = false;
+    for line in code.lines().map(str::trim).filter(|l| !l.is_empty()) {
+        let first = line.split_whitespace().next().unwrap();
+        if let Some((open, _)) = pairs.iter().find(|(o, _)| {
+            line == *o
+                || (first == *o
+                    && !o.contains(' ')
+                    && *o != "VAR"
+                    && *o != "VAR_INPUT"
+                    && *o != "VAR_OUTPUT")
+        }) {
+            stack.push(open);
+            in_decl = open.starts_with("VAR");
+            continue;
+        }
+        if pairs.iter().any(|(_, c)| line == *c) {
+            let open = stack.pop();
+            let want = pairs.iter().find(|(o, _)| Some(*o) == open).map(|p| p.1);
+            assert_eq!(want, Some(line), "{line} closes {open:?}");
+            in_decl = false;
+            continue;
+        }
+        if line == "ELSE" || line.starts_with("ELSIF ") {
+            assert_eq!(stack.last(), Some(&"IF"), "{line} outside IF");
+            continue;
+        }
+        assert!(
+            line.ends_with(';') || line.ends_with(" THEN") || line.ends_with(" DO"),
+            "statement without ';': {line}"
+        );
+        if in_decl {
+            for id in line.split(':').next().unwrap().split(',') {
+                declared.push(id.trim().to_string());
+            }
+        } else if let Some((lhs, _)) = line.split_once(":=") {
+            let id = lhs.trim().split('[').next().unwrap().trim();
+            let id = id.strip_prefix("FOR ").unwrap_or(id).trim();
+            assert!(
+                declared.iter().any(|d| d == id),
+                "assignment to undeclared {id}"
+            );
+        }
+    }
+    assert!(stack.is_empty(), "unclosed blocks: {stack:?}");
+    assert!(text.trim_end().ends_with("END_FUNCTION_BLOCK"));
+}
+
+/// blark (an IEC 61131-3 ST parser, TwinCAT's grammar) from `tests/export/ensure-blark.sh`,
+/// which installs it (pinned) into a venv under cargo's target dir: a failure fails the test.
+fn blark() -> PathBuf {
+    let venv = Path::new(env!("CARGO_TARGET_TMPDIR")).join("blark-venv");
+    let out = Command::new("bash")
+        .arg(root().join("tests/export/ensure-blark.sh"))
+        .arg(&venv)
+        .output()
+        .expect("bash tests/export/ensure-blark.sh must run");
+    assert!(
+        out.status.success(),
+        "tests/export/ensure-blark.sh failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    PathBuf::from(String::from_utf8(out.stdout).unwrap().trim())
+}
+
+/// (c) ST: the function block carries exactly the coefficients of the C text (and pidlab's),
+/// and is well formed: parsed by blark, a real IEC 61131-3 parser (which rejects, e.g., a
+/// dangling operator: checked below so the check can fail), plus our own checks (balanced
+/// blocks, terminated statements, declared identifiers). The
+/// ST statements mirror the C ones line for line (see src/export/sampled.rs), which the C test
+/// runs against pidlab.
+#[test]
+fn st_export_matches_c() {
+    let dir = tmp_dir("st");
+    for (name, plant, ctl, sampling, actuator) in sampled_cases() {
+        let inp = |t: &str| {
+            json!({"plant": plant, "controller": ctl, "target": t,
+                                   "sampling": sampling, "actuator": actuator, "date": DATE})
+        };
+        let st = export(inp("iec61131-st"));
+        let c = export(inp("c"));
+        let st_text = st["text"].as_str().unwrap();
+        let c_text = c["text"].as_str().unwrap();
+        assert!(st["filename"].as_str().unwrap().ends_with(".st"));
+        std::fs::write(dir.join(format!("{name}.st")), st_text).unwrap();
+        assert!(st_text.is_ascii() && c_text.is_ascii());
+        st_structure(st_text);
+        let stem = c["filename"]
+            .as_str()
+            .unwrap()
+            .trim_end_matches(".c")
+            .to_string();
+        let dc = discrete(&ctl, &sampling, &actuator);
+        let eq = match &dc.law {
+            pidlab::model::discrete::Law::Linear(eq) => eq.clone(),
+            pidlab::model::discrete::Law::Clamped { rest, integrator } => {
+                for (k, x) in [
+                    ("c0", integrator.c0),
+                    ("c1", integrator.c1),
+                    ("g_r", integrator.g_r),
+                    ("g_y", integrator.g_y),
+                ] {
+                    assert_eq!(
+                        scalar_in(st_text, &k.to_uppercase(), true),
+                        x,
+                        "{name}: {k}"
+                    );
+                    assert_eq!(
+                        scalar_in(c_text, &format!("{stem}_{k}"), false),
+                        x,
+                        "{name}: {k}"
+                    );
+                }
+                rest.clone()
+            }
+        };
+        for (k, xs) in [
+            ("a", &eq.a),
+            ("b_r", &eq.b_r),
+            ("b_y", &eq.b_y),
+            ("b_u", &eq.b_u),
+        ] {
+            let in_st = array_in(st_text, &k.to_uppercase(), '[', ']');
+            let in_c = array_in(c_text, &format!("{stem}_{k}"), '{', '}');
+            assert_eq!(&in_st, xs, "{name}: ST {k}");
+            assert_eq!(&in_c, xs, "{name}: C {k}");
+        }
+        assert_eq!(scalar_in(st_text, "H", true), dc.h);
+        for (k, x) in [("U_MIN", dc.limits.u_min), ("U_MAX", dc.limits.u_max)] {
+            if x.is_finite() {
+                assert_eq!(scalar_in(st_text, k, true), x, "{name}: {k}");
+            } else {
+                assert!(!st_text.contains(k), "{name}: {k} without a limit");
+            }
+        }
+        assert!(st_text.contains(&format!("Sampled: h = {}", pidlab::export::num(dc.h))));
+    }
+    // every file through the parser (one process), and a broken one must be refused
+    let blark = blark();
+    let py = blark.with_file_name("python");
+    let bad = dir.join("broken.st");
+    let one = std::fs::read_to_string(dir.join("pi_tustin_tracking.st")).unwrap();
+    std::fs::write(&bad, one.replacen("C := 0.0;", "C := 0.0 +;", 1)).unwrap();
+    // one file of each shape of code (law, limits present, order); the others differ from
+    // these in numbers and array lengths only (blark takes ~1 s of CPU a file)
+    let shapes = [
+        "pid2dof_tustin_free",
+        "pid2dof_tustin_none",
+        "pid2dof_tustin_tracking",
+        "pid2dof_tustin_tracking_tt",
+        "pid2dof_tustin_conditional",
+        "pid2dof_tustin_conditional_lo",
+        "pi_forward_tracking",
+        "arvanitis_backward_tracking",
+        "praveen_backward_conditional",
+        "broken",
+    ];
+    let files: Vec<PathBuf> = shapes.iter().map(|n| dir.join(format!("{n}.st"))).collect();
+    let out = Command::new(&py)
+        .arg(root().join("tests/export/parse_st.py"))
+        .args(&files)
+        .output()
+        .unwrap();
+    let report = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(!out.status.success(), "the broken file must fail: {report}");
+    let mut n_ok = 0;
+    for f in &files {
+        let fs = f.display().to_string();
+        if *f == bad {
+            assert!(
+                report.contains(&format!("error {fs}:")),
+                "blark accepted a broken function block"
+            );
+        } else {
+            assert!(
+                report.contains(&format!("ok {fs}\n")),
+                "blark cannot parse {fs}: {report}"
+            );
+            n_ok += 1;
+        }
+    }
+    assert_eq!(n_ok, shapes.len() - 1);
+}
+
+/// Bad input to the sampled targets: errors name the field.
+#[test]
+fn sampled_bad_input() {
+    let plant = json!({"family": "piptd", "k": 0.2, "theta": 1.5});
+    let ideal = api::controller_json(
+        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 1.0)
+            .to_controller()
+            .unwrap(),
+    );
+    let pi = api::controller_json(
+        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 0.0)
+            .to_controller()
+            .unwrap(),
+    );
+    let pd = api::controller_json(
+        &pidlab::model::controller::Pid::parallel(2.0, 0.0, 0.5)
+            .filter_n(5.0)
+            .to_controller()
+            .unwrap(),
+    );
+    let cases: Vec<(Value, &str)> = vec![
+        (
+            json!({"plant": plant, "controller": pi, "target": "c"}),
+            "sampling: is required",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "iec61131-st", "sampling": {}}),
+            "sampling.h: is required",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "c", "sampling": {"h": 0}}),
+            "sampling.h: must be finite and > 0",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "c", "sampling": {"h": "1"}}),
+            "sampling.h",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "c", "sampling": {"h": 0.1, "method": "zoh"}}),
+            "sampling.method: unknown method",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "c", "sampling": {"h": 0.1, "dt": 1}}),
+            "sampling.dt",
+        ),
+        (
+            json!({"plant": plant, "controller": ideal, "target": "c", "sampling": {"h": 0.1}}),
+            "controller.cr: an ideal derivative",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "c", "sampling": {"h": 0.1}, "actuator": {"u_min": 1, "u_max": 0}}),
+            "actuator.u_max",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "c", "sampling": {"h": 0.1}, "actuator": {"anti_windup": {"kind": "tracking"}}}),
+            "actuator.anti_windup: anti-windup needs a limit",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "c", "sampling": {"h": 0.1}, "actuator": {"u_max": 1, "anti_windup": {"kind": "clamp"}}}),
+            "actuator.anti_windup.kind: unknown kind",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "c", "sampling": {"h": 0.1}, "actuator": {"u_max": 1, "anti_windup": {"kind": "none", "tt": 1}}}),
+            "actuator.anti_windup.tt",
+        ),
+        (
+            json!({"plant": plant, "controller": pi, "target": "c", "sampling": {"h": 0.1}, "actuator": {"u_max": 1, "anti_windup": {"kind": "tracking", "tt": -1}}}),
+            "actuator.anti_windup.tt",
+        ),
+        (
+            json!({"plant": plant, "controller": pd, "target": "c", "sampling": {"h": 0.1}, "actuator": {"u_max": 1, "anti_windup": {"kind": "conditional"}}}),
+            "actuator.anti_windup: the controller has no integral action",
+        ),
+    ];
+    for (v, want) in cases {
+        let e = export_err(v.clone());
+        assert!(e.contains(want), "{v}: got '{e}', want '{want}'");
     }
 }

@@ -17,12 +17,16 @@
 
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
+use crate::model::discrete::DiscreteController;
 use crate::model::plant::{Family, Plant};
 use crate::model::tf::Tf;
 
+pub mod c;
 pub mod julia;
 pub mod matlab;
 pub mod python;
+pub mod sampled;
+pub mod st;
 
 /// An export target of API.md.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -161,9 +165,34 @@ pub fn export_continuous(target: Target, d: &Design) -> Result<Exported> {
     })
 }
 
-/// `pidlab_<method>.<ext>` (or `pidlab_controller.<ext>`): a valid MATLAB/Julia/C identifier.
-pub fn filename(o: &Origin, t: Target) -> String {
-    let stem: String = o
+/// Exports the sampled controller `dc` (discretised from `d.controller` by the caller, with
+/// [`DiscreteController::new`]: the same difference equations pidlab's sampled loop runs) for
+/// `target` (`iec61131-st` or `c`).
+pub fn export_sampled(target: Target, d: &Design, dc: &DiscreteController) -> Result<Exported> {
+    check(d)?;
+    let id = stem(&d.origin);
+    let text = match target {
+        Target::C => c::write(d, dc, &id),
+        Target::St => st::write(d, dc, &id.to_uppercase()),
+        _ => {
+            return Err(Error::new(
+                "sampling",
+                format!(
+                    "applies to the sampled targets (iec61131-st, c); '{}' exports the continuous design",
+                    target.id()
+                ),
+            ))
+        }
+    };
+    Ok(Exported {
+        text,
+        filename: filename(&d.origin, target),
+    })
+}
+
+/// `pidlab_<method>` (or `pidlab_controller`): a valid MATLAB, Julia, C and ST identifier.
+pub fn stem(o: &Origin) -> String {
+    let s: String = o
         .method
         .as_deref()
         .unwrap_or("controller")
@@ -171,7 +200,20 @@ pub fn filename(o: &Origin, t: Target) -> String {
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
         .take(40)
         .collect();
-    format!("pidlab_{stem}.{}", t.extension())
+    // IEC 61131-3 identifiers have no double underscore and do not end with one
+    let mut s = s.trim_matches('_').to_string();
+    while s.contains("__") {
+        s = s.replace("__", "_");
+    }
+    if s.is_empty() {
+        s.push_str("controller");
+    }
+    format!("pidlab_{s}")
+}
+
+/// `<stem>.<ext>`.
+pub fn filename(o: &Origin, t: Target) -> String {
+    format!("{}.{}", stem(o), t.extension())
 }
 
 /// A number as a literal every target reads back to the same `f64`: the shortest round-trip
