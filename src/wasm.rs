@@ -148,11 +148,13 @@ pub fn plot(spec: JsValue) -> Result<(), JsError> {
     crate::plot::draw(&v).map_err(err)
 }
 
-/// `export({plant, controller | tuning, target, sampling?, actuator?, date?, label?})`:
-/// `{text, filename}`. Without `date`, today's date (UTC, from the JS clock) goes into the
-/// header; give `date` for a reproducible text.
+/// `export_code({plant, controller | tuning, target, sampling?, actuator?, date?, label?})`:
+/// API.md's `export` (`{text, filename}`). `export` is a JavaScript keyword, which
+/// wasm-bindgen does not take as a function name (it would rename it `_export`), hence
+/// `export_code`. Without `date`, today's date (UTC, from the JS clock) goes into the header;
+/// give `date` for a reproducible text.
 #[wasm_bindgen]
-pub fn export(input: JsValue) -> Result<JsValue, JsError> {
+pub fn export_code(input: JsValue) -> Result<JsValue, JsError> {
     let mut v = from_js(input)?;
     if let Value::Object(m) = &mut v {
         if !m.contains_key("date") {

@@ -1050,3 +1050,175 @@ fn sampled_bad_input() {
         assert!(e.contains(want), "{v}: got '{e}', want '{want}'");
     }
 }
+
+/// Random and malformed inputs to `export`: each call returns a file or an error whose message
+/// starts with a field path; nothing panics, and no file carries a non-finite number.
+#[test]
+fn export_survives_random_inputs() {
+    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+    let mut next = move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        seed
+    };
+    let nums = [
+        json!(0.0),
+        json!(-1.0),
+        json!(1e-300),
+        json!(1e300),
+        json!(-1e300),
+        json!(0.1),
+        json!(2.5),
+        json!(1e6),
+        Value::Null,
+        json!("x"),
+        json!([1.0]),
+        json!(true),
+        json!({}),
+    ];
+    let tfs = [
+        json!({"num": [1.0], "den": [1.0, 0.0]}),
+        json!({"num": [2.0, 1.0, 0.5], "den": [1.0, 0.0]}),
+        json!({"num": [2.0, 1.0, 0.5], "den": [0.1, 1.0, 0.0]}),
+        json!({"num": [1e300, 1.0], "den": [1e-300, 1.0]}),
+        json!({"num": [1.0, 2.0, 3.0, 4.0], "den": [1.0, 0.0]}),
+        json!({"num": [], "den": [1.0]}),
+        json!({"num": [1.0], "den": [0.0]}),
+        json!({"num": [0.0], "den": [1.0, 0.0, 0.0]}),
+        json!("1/s"),
+    ];
+    let plants = [
+        json!({"family": "piptd", "k": 0.2, "theta": 1.5}),
+        json!({"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1}),
+        json!({"num": [1.0], "den": [1.0, 1.0], "delay": 0.0}),
+        json!({"num": [1.0, 1.0, 1.0], "den": [1.0, 1.0], "delay": 1.0}),
+        json!({"family": "nope"}),
+        Value::Null,
+    ];
+    // mostly good values (repeated), so that files are made too
+    let good_h = [
+        json!(0.1),
+        json!(0.01),
+        json!(1.0),
+        json!(0.1),
+        json!(0.5),
+        json!(1e-300),
+        json!(1e300),
+        Value::Null,
+        json!(-1.0),
+        json!("x"),
+    ];
+    let good_lim = [
+        json!(-1.0),
+        json!(1.0),
+        json!(0.5),
+        json!(-0.5),
+        Value::Null,
+        Value::Null,
+        json!(1e300),
+        json!("x"),
+    ];
+    let tfs = [
+        tfs[0].clone(),
+        tfs[1].clone(),
+        tfs[2].clone(),
+        tfs[0].clone(),
+        tfs[2].clone(),
+        tfs[1].clone(),
+        tfs[3].clone(),
+        tfs[4].clone(),
+        tfs[5].clone(),
+        tfs[6].clone(),
+        tfs[7].clone(),
+        tfs[8].clone(),
+    ];
+    let plants = [
+        plants[0].clone(),
+        plants[1].clone(),
+        plants[2].clone(),
+        plants[0].clone(),
+        plants[3].clone(),
+        plants[4].clone(),
+        plants[5].clone(),
+    ];
+    let targets = [
+        json!("python-control"),
+        json!("matlab"),
+        json!("julia"),
+        json!("iec61131-st"),
+        json!("c"),
+        json!("C"),
+        Value::Null,
+    ];
+    let methods = [
+        json!("tustin"),
+        json!("backward"),
+        json!("forward"),
+        json!("zoh"),
+        Value::Null,
+    ];
+    let kinds = [
+        json!("none"),
+        json!("tracking"),
+        json!("conditional"),
+        json!("x"),
+    ];
+    let mut pick = |xs: &[Value]| xs[(next() % xs.len() as u64) as usize].clone();
+    let (mut ok, mut errs) = (0, 0);
+    for _ in 0..3000 {
+        let mut inp = serde_json::Map::new();
+        inp.insert("plant".into(), pick(&plants));
+        let mut ctl = serde_json::Map::new();
+        ctl.insert("cr".into(), pick(&tfs));
+        ctl.insert("cy".into(), pick(&tfs));
+        if pick(&[json!(0), json!(1), json!(2)]) == json!(0) {
+            ctl.insert("kp".into(), pick(&nums));
+        }
+        inp.insert("controller".into(), Value::Object(ctl));
+        // mostly coherent: sampling and actuator with the sampled targets, rarely otherwise
+        let t = pick(&targets);
+        let sampled_target = t == json!("c") || t == json!("iec61131-st");
+        inp.insert("target".into(), t);
+        let ten: Vec<Value> = (0..10).map(|i| json!(i)).collect();
+        if pick(&ten).as_u64().unwrap() < if sampled_target { 9 } else { 1 } {
+            inp.insert(
+                "sampling".into(),
+                json!({"h": pick(&good_h), "method": pick(&methods)}),
+            );
+        }
+        if pick(&ten).as_u64().unwrap() < if sampled_target { 6 } else { 1 } {
+            inp.insert(
+                "actuator".into(),
+                json!({"u_min": pick(&good_lim), "u_max": pick(&good_lim),
+                       "anti_windup": {"kind": pick(&kinds)}}),
+            );
+        }
+        let v = Value::Object(inp);
+        match std::panic::catch_unwind(|| api::export(&v)) {
+            Err(_) => panic!("export panicked on {v}"),
+            Ok(Ok(out)) => {
+                ok += 1;
+                let t = out["text"].as_str().unwrap();
+                for bad in ["NaN", "inf,", "inf]", "inf;", "inf)", "inf}", "inf\n"] {
+                    assert!(!t.contains(bad), "{bad} in the file for {v}:\n{t}");
+                }
+            }
+            Ok(Err(e)) => {
+                errs += 1;
+                let m = e.to_string();
+                let head = m.split(':').next().unwrap();
+                assert!(
+                    !head.is_empty()
+                        && head
+                            .chars()
+                            .all(|c| c.is_ascii_alphanumeric() || "._[]".contains(c)),
+                    "error without a field path: '{m}' for {v}"
+                );
+            }
+        }
+    }
+    // both outcomes are exercised
+    eprintln!("{ok} files, {errs} errors");
+    assert!(ok > 100 && errs > 100, "{ok} files, {errs} errors");
+}

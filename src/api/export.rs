@@ -292,6 +292,25 @@ fn design(inp: &ExportIn) -> Result<Design> {
     })
 }
 
+/// The export targets for `methods()`: `[{id, title, extension, sampled}]` (`sampled`: the
+/// target needs `sampling` and takes `actuator`).
+pub fn targets() -> Value {
+    let title = |t: Target| match t {
+        Target::PythonControl => "Python (python-control)",
+        Target::Matlab => "MATLAB (Control System Toolbox)",
+        Target::Julia => "Julia (ControlSystems.jl)",
+        Target::St => "PLC: IEC 61131-3 Structured Text (sampled)",
+        Target::C => "C99 (sampled)",
+    };
+    Value::Array(
+        Target::IDS
+            .iter()
+            .filter_map(|id| Target::from_id(id).ok())
+            .map(|t| json!({"id": t.id(), "title": title(t), "extension": t.extension(), "sampled": t.is_sampled()}))
+            .collect(),
+    )
+}
+
 /// `export(...)` of API.md: `{text, filename, target}`.
 pub fn export(input_v: &Value) -> Result<Value> {
     let inp: ExportIn = from_json(input_v, "")?;

@@ -148,6 +148,7 @@ pub fn methods() -> Value {
     json!({
         "methods": rules::methods().iter().map(|m| serde_json::to_value(m).unwrap_or(Value::Null)).collect::<Vec<_>>(),
         "families": serde_json::to_value(family_infos()).unwrap_or(Value::Null),
+        "export_targets": export::targets(),
     })
 }
 

@@ -418,6 +418,9 @@ pub fn std_pid(ctl: &Controller) -> Option<StdPid> {
         return None;
     }
     let n = if tf_ == 0.0 { f64::INFINITY } else { td / tf_ };
+    if !(kp.is_finite() && ti.is_finite() && td.is_finite() && (n.is_finite() || tf_ == 0.0)) {
+        return None;
+    }
     let mut out = StdPid {
         kp,
         ti,
@@ -439,8 +442,10 @@ pub fn std_pid(ctl: &Controller) -> Option<StdPid> {
             } else {
                 return Some(out);
             };
-            out.b = Some(b);
-            out.c = Some(c);
+            if b.is_finite() && c.is_finite() {
+                out.b = Some(b);
+                out.c = Some(c);
+            }
         }
     }
     Some(out)
