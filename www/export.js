@@ -9,7 +9,7 @@ import { $, el, errText } from './dom.js';
 import { store, methodParams } from './store.js';
 
 const METHODS = [
-  ['auto', 'auto (Tustin; backward Euler for an ideal derivative)'],
+  ['auto', 'auto: Tustin (backward Euler for an ideal derivative)'],
   ['tustin', 'Tustin (bilinear)'],
   ['backward', 'backward Euler'],
   ['forward', 'forward Euler'],
