@@ -4,16 +4,20 @@
 //! One slider update for the boiler steam drum: tune (Praveen Kumar & Narayana λ = 1.9 when
 //! that rule is registered, else Arvanitis Algorithm I, else a literal I-PD controller) +
 //! simulate 3001 points (t_end 30, dt 0.01, set-point step at 0, load step at 15) + analyze.
+//! The same update with a sampled controller (h = 0.01) and with a sampled, saturated one
+//! (valve ±1.5, tracking anti-windup).
 //! Median and p95 over `runs` (default 1000, at least 200) after 100 warm-up runs; then each
 //! registered method tuned on its first preset.
 
 use pidlab::analysis::freq::analyze;
-use pidlab::analysis::simulate;
+use pidlab::analysis::{simulate, simulate_real};
 use pidlab::api;
 use pidlab::model::controller::Controller;
+use pidlab::model::discrete::{AntiWindup, Limits, Method};
 use pidlab::model::plant::Family;
 use pidlab::rules::{self, Params};
 use pidlab::sim::Scenario;
+use pidlab::sim::{RealLoop, Sampling};
 use serde_json::Value;
 use std::hint::black_box;
 use std::time::Instant;
@@ -232,6 +236,45 @@ fn main() {
         "analyze",
         &time(|| drop(black_box(analyze(&plant, &c0).ok())), runs, WARMUP),
     );
+    // Real loops (issue 13): the same update with the controller sampled at h = 0.01
+    // (backward Euler, which also takes an ideal derivative), then also with the valve
+    // limited to ±1.5 and tracking anti-windup (default tt).
+    let sampled = RealLoop {
+        sampling: Some(Sampling {
+            h: 0.01,
+            method: Method::Backward,
+        }),
+        ..RealLoop::default()
+    };
+    let saturated = RealLoop {
+        limits: Limits::new(Some(-1.5), Some(1.5)).expect("limits"),
+        anti_windup: AntiWindup::Tracking { tt: None },
+        ..sampled
+    };
+    for (name, rl) in [
+        (
+            "update, sampled h = 0.01 (tune + simulate + analyze)",
+            &sampled,
+        ),
+        (
+            "update, sampled h = 0.01, valve ±1.5, tracking anti-windup",
+            &saturated,
+        ),
+    ] {
+        simulate_real(&plant, &c0, &scenario, rl).expect("real-loop simulate");
+        row(
+            name,
+            &time(
+                || {
+                    let c = controller(&tune_call);
+                    black_box(simulate_real(&plant, &c, &scenario, rl).ok());
+                    black_box(analyze(&plant, &c).ok());
+                },
+                runs,
+                WARMUP,
+            ),
+        );
+    }
 
     let methods = rules::methods();
     if methods.is_empty() {

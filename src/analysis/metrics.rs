@@ -20,6 +20,8 @@
 //! - `rise_time`: 10 % → 90 % of the set-point step (servo only);
 //! - `tv = Σ|u_k − u_{k−1}|` over the output samples in the window (API.md), including the
 //!   move at the window's first sample;
+//! - `saturated`: fraction of the window's time during which the applied u is at a limit
+//!   (sampled loops with limits: the held `u_k` at `u_min` or `u_max`; `None` without limits);
 //! - `y_final`, `u_final`: the loop's steady state for the window's r and d (solved
 //!   exactly from the loop equations; the last sample when the loop has no steady state).
 
@@ -62,6 +64,8 @@ pub struct Metrics {
     pub y_final: f64,
     /// Steady-state u for the window's inputs.
     pub u_final: f64,
+    /// Fraction of the window's time with u at a limit (`None`: no limits).
+    pub saturated: Option<f64>,
 }
 
 /// Servo and regulatory metrics.
@@ -369,6 +373,11 @@ fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool)
         tv: total_variation(res, a, b, sc.t_end),
         y_final,
         u_final,
+        saturated: res
+            .sampled
+            .as_ref()
+            .filter(|s| s.limits.is_active())
+            .map(|s| s.fraction_at_limit(a, b)),
     }
 }
 

@@ -6,4 +6,4 @@ pub mod freq;
 pub mod metrics;
 pub mod response;
 
-pub use response::{simulate, SimResult};
+pub use response::{simulate, simulate_real, SimResult};

@@ -4,7 +4,7 @@ use super::metrics::{windows, Windows};
 use crate::error::Result;
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
-use crate::sim::{self, Response, Scenario, Trajectory};
+use crate::sim::{self, RealLoop, Response, Scenario, Trajectory};
 
 /// A simulation with its metrics.
 #[derive(Debug, Clone, PartialEq)]
@@ -30,12 +30,28 @@ pub struct SimResult {
     /// The continuous response the samples and metrics come from (what a paper's own
     /// criteria integrate, see [`crate::analysis::metrics::quadrature`]).
     pub trajectory: Trajectory,
+    /// Controller output before the limits at the samples (`None`: continuous loop, v = u).
+    pub v: Option<Vec<f64>>,
+    /// Noise samples `n_k` added to `y(t_k)`, `t_k = k·h` (`None`: no noise).
+    pub noise: Option<Vec<f64>>,
 }
 
 /// Simulates the closed loop ([`crate::sim::simulate`]) and computes the metrics of its
 /// windows ([`crate::analysis::metrics`]).
 pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResult> {
-    let res = sim::simulate(plant, c, sc)?;
+    simulate_real(plant, c, sc, &RealLoop::default())
+}
+
+/// [`simulate`] with actuator limits, anti-windup, sampling and noise
+/// ([`crate::sim::simulate_real`]); metrics integrate the continuous response, `tv` is of the
+/// applied u, `saturated` is the fraction of time at a limit.
+pub fn simulate_real(
+    plant: &Plant,
+    c: &Controller,
+    sc: &Scenario,
+    rl: &RealLoop,
+) -> Result<SimResult> {
+    let res = sim::simulate_real(plant, c, sc, rl)?;
     let metrics = windows(&res, sc);
     let internal_step = res.internal_step();
     let Response {
@@ -46,8 +62,11 @@ pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResul
         u,
         diverged_at,
         trajectory,
+        sampled,
+        v,
         ..
     } = res;
+    let noise = sampled.and_then(|s| s.noise);
     Ok(SimResult {
         t,
         r,
@@ -59,5 +78,7 @@ pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResul
         metrics,
         internal_step,
         trajectory,
+        v,
+        noise,
     })
 }

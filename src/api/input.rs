@@ -481,6 +481,15 @@ pub struct SimulateIn {
     /// Scenario ([`scenario`]).
     #[serde(default)]
     pub scenario: Value,
+    /// Actuator limits and anti-windup ([`real_loop`]).
+    #[serde(default)]
+    pub actuator: Value,
+    /// Sampled controller ([`real_loop`]).
+    #[serde(default)]
+    pub sampling: Value,
+    /// Measurement noise ([`real_loop`]).
+    #[serde(default)]
+    pub noise: Value,
 }
 
 /// `analyze` input.
@@ -515,4 +524,151 @@ pub fn plant(v: &Value, path: &str) -> Result<Plant> {
 /// The scenario at `path`.
 pub fn scenario(v: &Value, path: &str) -> Result<Scenario> {
     from_json::<ScenarioIn>(v, path)?.build(path)
+}
+
+/// `actuator = {u_min?, u_max?, anti_windup?}`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ActuatorIn {
+    #[serde(default, deserialize_with = "present")]
+    u_min: Option<Value>,
+    #[serde(default, deserialize_with = "present")]
+    u_max: Option<Value>,
+    #[serde(default)]
+    anti_windup: Option<AntiWindupIn>,
+}
+
+/// `anti_windup = {kind: "none" | "tracking" | "conditional", tt?}` (tt only with tracking).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AntiWindupIn {
+    kind: String,
+    #[serde(default, deserialize_with = "present")]
+    tt: Option<Value>,
+}
+
+/// An optional field that, when present, must hold a value: `null` (what NaN and ±Infinity
+/// become at the wasm boundary) is kept as `Some(Null)` so it can be refused, not dropped.
+fn present<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<Option<Value>, D::Error> {
+    Value::deserialize(d).map(Some)
+}
+
+/// A present optional number: finite, else an error naming `path`.
+fn finite_at(v: &Option<Value>, path: &str) -> Result<Option<f64>> {
+    match v {
+        None => Ok(None),
+        Some(Value::Number(n)) => match n.as_f64() {
+            Some(x) if x.is_finite() => Ok(Some(x)),
+            _ => Err(Error::new(path, "must be a finite number")),
+        },
+        Some(other) => Err(Error::new(
+            path,
+            format!(
+                "must be a finite number (got {}; NaN and ±Infinity arrive as null)",
+                kind(other)
+            ),
+        )),
+    }
+}
+
+/// `sampling = {h, method?}`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SamplingIn {
+    h: Num,
+    #[serde(default)]
+    method: Option<String>,
+}
+
+/// `noise = {std, seed?}`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct NoiseIn {
+    std: Num,
+    #[serde(default)]
+    seed: Option<u64>,
+}
+
+/// The optional `actuator`, `sampling`, `noise` of `simulate` (absent or null = not used),
+/// validated: errors name `actuator.u_max`, `sampling.h`, `noise.std`, …. `t_end` is the
+/// run length (h may not exceed it).
+pub fn real_loop(
+    actuator: &Value,
+    sampling: &Value,
+    noise: &Value,
+    t_end: f64,
+) -> Result<crate::sim::RealLoop> {
+    use crate::model::discrete::{AntiWindup, Limits, Method};
+    let mut rl = crate::sim::RealLoop::default();
+    if !actuator.is_null() {
+        let a: ActuatorIn = from_json(actuator, "actuator")?;
+        rl.limits = Limits::new(
+            finite_at(&a.u_min, "actuator.u_min")?,
+            finite_at(&a.u_max, "actuator.u_max")?,
+        )
+        .map_err(|e| e.within("actuator"))?;
+        if let Some(aw) = &a.anti_windup {
+            let p = "actuator.anti_windup";
+            rl.anti_windup = match aw.kind.as_str() {
+                "none" | "conditional" if aw.tt.is_some() => {
+                    return Err(Error::new(
+                        format!("{p}.tt"),
+                        "only kind \"tracking\" takes tt",
+                    ))
+                }
+                "none" => AntiWindup::None,
+                "conditional" => AntiWindup::Conditional,
+                "tracking" => AntiWindup::Tracking {
+                    tt: match finite_at(&aw.tt, &format!("{p}.tt"))? {
+                        Some(t) => Some(crate::error::positive(&format!("{p}.tt"), t)?),
+                        None => None,
+                    },
+                },
+                k => {
+                    return Err(Error::new(
+                        format!("{p}.kind"),
+                        format!(
+                            "unknown kind {k:?} (allowed: \"none\", \"tracking\", \"conditional\")"
+                        ),
+                    ))
+                }
+            };
+            if rl.anti_windup != AntiWindup::None && !rl.limits.is_active() {
+                return Err(Error::new(
+                    p,
+                    "anti-windup needs a limit: give actuator.u_min and/or actuator.u_max",
+                ));
+            }
+        }
+    }
+    if !sampling.is_null() {
+        let s: SamplingIn = from_json(sampling, "sampling")?;
+        let h = crate::error::positive("sampling.h", s.h.0)?;
+        if h > t_end {
+            return Err(Error::new(
+                "sampling.h",
+                format!("must not exceed the run length scenario.t_end = {t_end} (got {h})"),
+            ));
+        }
+        let method = match &s.method {
+            Some(m) => Method::parse("sampling.method", m)?,
+            None => Method::Tustin,
+        };
+        rl.sampling = Some(crate::sim::Sampling { h, method });
+    }
+    if !noise.is_null() {
+        let n: NoiseIn = from_json(noise, "noise")?;
+        let std = crate::error::non_negative("noise.std", n.std.0)?;
+        if rl.sampling.is_none() {
+            return Err(Error::new(
+                "noise",
+                "measurement noise needs a sampled controller: give sampling { h }",
+            ));
+        }
+        rl.noise = Some(crate::sim::NoiseSpec {
+            std,
+            seed: n.seed.unwrap_or(0),
+        });
+    }
+    Ok(rl)
 }

@@ -5,7 +5,7 @@
 
 use crate::analysis::freq::{analyze as analyze_loop, Analysis};
 use crate::analysis::metrics::Metrics;
-use crate::analysis::{simulate as simulate_loop, SimResult};
+use crate::analysis::SimResult;
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::{family_infos, Family, Plant};
@@ -93,8 +93,16 @@ fn num_or_null(x: Option<f64>) -> Value {
     }
 }
 
-/// Metrics as JSON (null for absent values).
+/// Metrics as JSON (null for absent values; `saturated` only with actuator limits).
 pub fn metrics_json(m: &Metrics) -> Value {
+    let mut j = metrics_json_base(m);
+    if let Some(f) = m.saturated {
+        j["saturated"] = json!(f);
+    }
+    j
+}
+
+fn metrics_json_base(m: &Metrics) -> Value {
     json!({
         "t_start": m.t_start, "t_end": m.t_end, "step": m.step,
         "iae": m.iae, "ise": m.ise, "itae": m.itae, "iste": m.iste, "ist2e": m.ist2e, "ist3e": m.ist3e,
@@ -105,8 +113,19 @@ pub fn metrics_json(m: &Metrics) -> Value {
     })
 }
 
-/// A simulation result as JSON (API.md SimResult).
+/// A simulation result as JSON (API.md SimResult; `v` with sampling, `noise` with noise).
 pub fn sim_json(r: &SimResult) -> Value {
+    let mut j = sim_json_base(r);
+    if let Some(v) = &r.v {
+        j["v"] = json!(v);
+    }
+    if let Some(n) = &r.noise {
+        j["noise"] = json!(n);
+    }
+    j
+}
+
+fn sim_json_base(r: &SimResult) -> Value {
     json!({
         "t": r.t, "r": r.r, "d": r.d, "y": r.y, "u": r.u,
         "diverged": r.diverged, "diverged_at": num_or_null(r.diverged_at),
@@ -157,8 +176,51 @@ pub fn presets() -> Value {
     json!({ "presets": rules::presets().iter().map(preset_json).collect::<Vec<_>>() })
 }
 
-/// A preset as JSON: `{id, title, description, citation, plant, tune, controller, scenario}`.
+/// A preset as JSON: `{id, title, description, citation, plant, tune, controller, scenario}`,
+/// plus `actuator`, `sampling`, `noise` when the preset carries them
+/// ([`rules::preset_real_loop`]), in the form `simulate` accepts.
 pub fn preset_json(t: &rules::Preset) -> Value {
+    let mut j = preset_json_base(t);
+    if let Some(rl) = rules::preset_real_loop(&t.id) {
+        for (k, v) in real_loop_json(&rl) {
+            j[k] = v;
+        }
+    }
+    j
+}
+
+/// `actuator`, `sampling`, `noise` of a [`crate::sim::RealLoop`] as `simulate` accepts them
+/// (absent parts omitted).
+pub fn real_loop_json(rl: &crate::sim::RealLoop) -> Vec<(&'static str, Value)> {
+    use crate::model::discrete::AntiWindup;
+    let mut out = vec![];
+    let lim = rl.limits;
+    if lim.is_active() || rl.anti_windup != AntiWindup::None {
+        let mut a = json!({});
+        if lim.u_min.is_finite() {
+            a["u_min"] = json!(lim.u_min);
+        }
+        if lim.u_max.is_finite() {
+            a["u_max"] = json!(lim.u_max);
+        }
+        a["anti_windup"] = match rl.anti_windup {
+            AntiWindup::None => json!({"kind": "none"}),
+            AntiWindup::Conditional => json!({"kind": "conditional"}),
+            AntiWindup::Tracking { tt: None } => json!({"kind": "tracking"}),
+            AntiWindup::Tracking { tt: Some(tt) } => json!({"kind": "tracking", "tt": tt}),
+        };
+        out.push(("actuator", a));
+    }
+    if let Some(s) = rl.sampling {
+        out.push(("sampling", json!({"h": s.h, "method": s.method.name()})));
+    }
+    if let Some(n) = rl.noise {
+        out.push(("noise", json!({"std": n.std, "seed": n.seed})));
+    }
+    out
+}
+
+fn preset_json_base(t: &rules::Preset) -> Value {
     {
         {
             let plant = match t.plant.family {
@@ -246,7 +308,8 @@ pub fn simulate(input: &Value) -> Result<Value> {
         "controller",
     )?;
     let sc = input::scenario(input::required(&inp.scenario, "scenario")?, "scenario")?;
-    let r = simulate_loop(&plant, &c, &sc)?;
+    let rl = input::real_loop(&inp.actuator, &inp.sampling, &inp.noise, sc.t_end)?;
+    let r = crate::analysis::simulate_real(&plant, &c, &sc, &rl)?;
     Ok(sim_json(&r))
 }
 

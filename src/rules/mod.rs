@@ -211,7 +211,73 @@ pub fn presets() -> Vec<Preset> {
     v.extend(medarametla_manimozhi2018::presets());
     v.extend(praveen_kumar_narayana::presets());
     v.extend(classic::presets());
+    v.extend(windup_demo().into_iter().map(|(p, _)| p));
     v
+}
+
+/// The "windup demo" (issue 13): the boiler loop with Luyben's (2003) PID
+/// (`arvanitis2012/boiler/luyben2003`, which asks for 17.7 units of input on the unit
+/// set-point step), a valve limited to `[−1.5, 1.5]`, sampled at h = 0.01 (Tustin): once
+/// without anti-windup (the integrator winds up) and once with tracking anti-windup (default
+/// tt), the same tuning, to pin side by side. Each preset comes with the actuator and
+/// sampling it needs ([`preset_real_loop`]).
+pub fn windup_demo() -> Vec<(Preset, crate::sim::RealLoop)> {
+    use crate::model::discrete::{AntiWindup, Limits, Method};
+    let Some((_, _, c)) = arvanitis2012::comparison_controllers()
+        .into_iter()
+        .find(|(id, _, _)| *id == "luyben2003")
+    else {
+        return vec![];
+    };
+    let Ok(limits) = Limits::new(Some(-1.5), Some(1.5)) else {
+        return vec![];
+    };
+    let sampling = Some(crate::sim::Sampling {
+        h: 0.01,
+        method: Method::Tustin,
+    });
+    [
+        ("none", "without anti-windup", AntiWindup::None),
+        (
+            "tracking",
+            "with tracking anti-windup",
+            AntiWindup::Tracking { tt: None },
+        ),
+    ]
+    .into_iter()
+    .map(|(id, what, aw)| {
+        (
+            Preset {
+                id: format!("windup_demo/boiler/{id}"),
+                title: format!("windup demo: boiler, valve ±1.5, {what}"),
+                description: format!(
+                    "Luyben's PID on the boiler steam drum with the valve limited to [−1.5, 1.5], \
+                     sampled at h = 0.01 (Tustin), {what}; pin both to compare"
+                ),
+                citation: "Luyben, W. L. (2003), via Arvanitis et al. (2012), Section 6".into(),
+                plant: arvanitis2012::BOILER.plant(),
+                design: Design::Controller(c.clone()),
+                scenario: arvanitis2012::boiler_scenario(),
+            },
+            crate::sim::RealLoop {
+                limits,
+                anti_windup: aw,
+                sampling,
+                noise: None,
+            },
+        )
+    })
+    .collect()
+}
+
+/// The actuator limits, anti-windup, sampling and noise a preset carries (`None`: the linear
+/// continuous loop of every paper preset). A lookup rather than a field of [`Preset`] so the
+/// paper folders' preset literals stay unchanged.
+pub fn preset_real_loop(id: &str) -> Option<crate::sim::RealLoop> {
+    windup_demo()
+        .into_iter()
+        .find(|(p, _)| p.id == id)
+        .map(|(_, r)| r)
 }
 
 /// Runs method `id` on `plant`. Errors: `method` (unknown id), `plant.family` (a family the

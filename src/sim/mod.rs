@@ -33,10 +33,13 @@
 //! `t_e + iθ + jθ_m`).
 
 pub(crate) mod model_loop;
+pub mod noise;
+pub mod sampled;
 mod scenario;
 pub(crate) mod single;
 mod trajectory;
 
+pub use sampled::{NoiseSpec, RealLoop, SampledRecord, Sampling};
 pub use scenario::{Scenario, Step};
 pub(crate) use single::LoopModel;
 pub(crate) use trajectory::{interpolation_inverse, piece_exponential};
@@ -71,6 +74,11 @@ pub struct Response {
     /// The loop's steady state `(y∞, u∞)` for constant `(r, d)`, at the inputs in force from
     /// each event on (`None`: the loop has none).
     pub steady: Vec<SteadyPoint>,
+    /// Sampled loops: the controller's samples (`v_k`, `u_k`, `n_k`); `None` for continuous.
+    pub sampled: Option<SampledRecord>,
+    /// Controller output before the limits at the output samples (sampled loops; `None`
+    /// otherwise, where `v = u`).
+    pub v: Option<Vec<f64>>,
 }
 
 impl Response {
@@ -126,6 +134,8 @@ pub(crate) fn sample(
         diverged_at,
         steady: vec![],
         trajectory: traj,
+        sampled: None,
+        v: None,
     };
     let traj = &res.trajectory;
     let t_traj_end = traj.end();
@@ -150,4 +160,66 @@ pub(crate) fn sample(
         }
     }
     res
+}
+
+/// Simulates a loop with actuator limits, anti-windup, a sampled controller and measurement
+/// noise ([`RealLoop`]); with none of them it is [`simulate`].
+///
+/// Supported: every rational (Cr, Cy) controller **sampled** ([`sampled`]: limits act on the
+/// held `u_k`, anti-windup in the discretised `A_o` or clamping form, noise on `y_k`).
+/// Refused with an error naming the field: limits or anti-windup on a **continuous**
+/// controller (`actuator`: give `sampling`), noise without sampling (`noise`), and any of them
+/// with a model-based set-point loop (`controller.model_loop`).
+pub fn simulate_real(
+    plant: &Plant,
+    c: &Controller,
+    sc: &Scenario,
+    rl: &RealLoop,
+) -> Result<Response> {
+    if rl.is_plain() {
+        return simulate(plant, c, sc);
+    }
+    sc.validate().map_err(|e| e.within("scenario"))?;
+    if c.model_loop.is_some() {
+        return Err(crate::error::Error::new(
+            "controller.model_loop",
+            "actuator limits, sampling and noise are not simulated for controllers with a \
+             model-based set-point loop (its internal model would need a sampled version \
+             with its dead time); remove actuator/sampling/noise",
+        ));
+    }
+    if rl.noise.is_some() && rl.sampling.is_none() {
+        return Err(crate::error::Error::new(
+            "noise",
+            "measurement noise needs a sampled controller: give sampling { h }",
+        ));
+    }
+    let Some(smp) = rl.sampling else {
+        return Err(crate::error::Error::new(
+            "actuator",
+            "limits and anti-windup are simulated for sampled controllers: give sampling { h } \
+             (a continuous controller with limits is not supported yet)",
+        ));
+    };
+    let (traj, diverged_at, rec) = sampled::integrate(plant, c, sc, rl, smp)?;
+    let steady_model = LoopModel::new(plant, c, false).ok();
+    let lim = rl.limits;
+    let steady = |r: f64, d: f64| {
+        let (y, u) = steady_model.as_ref()?.steady_state(r, d)?;
+        (u >= lim.u_min && u <= lim.u_max).then_some((y, u))
+    };
+    let mut res = sample(sc, traj, diverged_at, &steady);
+    let tol = res.trajectory.tol;
+    let mut v = Vec::with_capacity(res.t.len());
+    for (j, t) in res.t.iter().enumerate() {
+        if let Some(k) = rec.index_at(*t, tol) {
+            res.u[j] = rec.u[k];
+            v.push(rec.v[k]);
+        } else {
+            v.push(0.0);
+        }
+    }
+    res.v = Some(v);
+    res.sampled = Some(rec);
+    Ok(res)
 }
