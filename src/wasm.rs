@@ -154,3 +154,21 @@ pub fn plot(spec: JsValue) -> Result<(), JsError> {
     let v = from_js(spec)?;
     crate::plot::draw(&v).map_err(err)
 }
+
+/// `export_code({plant, controller | tuning, target, sampling?, actuator?, date?, label?})`:
+/// API.md's `export` (`{text, filename}`). `export` is a JavaScript keyword, which
+/// wasm-bindgen does not take as a function name (it would rename it `_export`), hence
+/// `export_code`. Without `date`, today's date (UTC, from the JS clock) goes into the header;
+/// give `date` for a reproducible text.
+#[wasm_bindgen]
+pub fn export_code(input: JsValue) -> Result<JsValue, JsError> {
+    let mut v = from_js(input)?;
+    if let Value::Object(m) = &mut v {
+        if !m.contains_key("date") {
+            let iso = String::from(js_sys::Date::new_0().to_iso_string());
+            m.insert("date".into(), Value::String(iso.chars().take(10).collect()));
+        }
+    }
+    let out = api::export(&v).map_err(err)?;
+    to_js(&out)
+}

@@ -2,7 +2,7 @@
 //! `src/` names must point to its own layer or a layer below it, and no two modules may import
 //! each other, directly or through others (no cycle between the modules of `src/`).
 //!
-//! Layers, lowest first: `error`, `numerics`, `model`, `sim`, `analysis`, `rules`, `api`,
+//! Layers, lowest first: `error`, `numerics`, `model`, `sim`, `analysis`, `rules`, `export`, `api`,
 //! `plot`, `wasm`. (`plot` draws from a spec and knows nothing of rules; `wasm` is the only
 //! `#[wasm_bindgen]` file and sits on top.)
 
@@ -12,8 +12,8 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-const LAYERS: [&str; 9] = [
-    "error", "numerics", "model", "sim", "analysis", "rules", "api", "plot", "wasm",
+const LAYERS: [&str; 10] = [
+    "error", "numerics", "model", "sim", "analysis", "rules", "export", "api", "plot", "wasm",
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

@@ -16,6 +16,7 @@ import { drawPlots, watchSizes } from './plots.js';
 import { showBanners, showReadouts } from './readouts.js';
 import { showMetrics } from './table.js';
 import { showController } from './design.js';
+import { buildExport } from './export.js';
 
 /** Builds every control from the state. */
 function buildAll() {
@@ -126,6 +127,7 @@ async function main() {
     const m = E.call('methods');
     store.methods = m.methods || [];
     store.families = m.families || [];
+    store.exportTargets = m.export_targets || [];
     S.setFamilies(store.families);
     const pr = E.call('presets');
     store.presets = Array.isArray(pr) ? pr : (pr && pr.presets) || [];
@@ -143,6 +145,7 @@ async function main() {
   $('loading').hidden = true;
   Pr.buildPresets();
   buildAll();
+  buildExport(store.exportTargets);
   P.refreshPins();
   wire();
   // What the tests and the benchmark read (the module itself, the state, the timings).

@@ -14,6 +14,7 @@ use crate::rules;
 use crate::sim::Scenario;
 use serde_json::{json, Map, Value};
 
+pub mod export;
 pub mod input;
 
 pub use input::MAX_COEFFS;
@@ -166,6 +167,7 @@ pub fn methods() -> Value {
     json!({
         "methods": rules::methods().iter().map(|m| serde_json::to_value(m).unwrap_or(Value::Null)).collect::<Vec<_>>(),
         "families": serde_json::to_value(family_infos()).unwrap_or(Value::Null),
+        "export_targets": export::targets(),
     })
 }
 
@@ -342,4 +344,10 @@ pub fn analyze(input: &Value) -> Result<Value> {
     )?;
     let a = analyze_loop(&plant, &c)?;
     Ok(analysis_json(&a))
+}
+
+/// `export({plant, controller | tuning, target, sampling?, actuator?, date?, label?})` of
+/// API.md: `{text, filename}` (see [`export::export`]).
+pub fn export(input: &Value) -> Result<Value> {
+    export::export(input)
 }
