@@ -33,6 +33,7 @@
 pub mod analysis;
 pub mod api;
 pub mod error;
+pub mod identify;
 pub mod model;
 pub mod numerics;
 pub mod plot;

@@ -147,3 +147,10 @@ pub fn plot(spec: JsValue) -> Result<(), JsError> {
     let v = from_js(spec)?;
     crate::plot::draw(&v).map_err(err)
 }
+
+/// `identify({t, u, y, family, options?})`: a plant family fitted to an open-loop test
+/// (`family: "auto"` ranks several by AICc).
+#[wasm_bindgen]
+pub fn identify(input: JsValue) -> Result<JsValue, JsError> {
+    call(input, api::identify)
+}
