@@ -81,9 +81,11 @@ pub fn minimize(
                 let dscale = hm[(ju, ju)].max(1e-12 * hm.diagonal().max().max(1e-300));
                 a[(u, u)] += lambda * dscale;
             }
-            let step = match a.clone().cholesky() {
-                Some(ch) => ch.solve(&b),
-                None => {
+            // LU (already in the module for the rules) rather than Cholesky: the same answer on
+            // this damped symmetric positive definite system, and no new code in the wasm
+            let step = match a.clone().lu().solve(&b) {
+                Some(st) if st.iter().all(|v| v.is_finite()) => st,
+                _ => {
                     lambda *= 10.0;
                     continue;
                 }

@@ -328,8 +328,8 @@ fn sq(r: &[f64]) -> f64 {
 /// first-move delay for θ, and zero sizes relative to τ, scored by the projected cost.
 fn grid(sp: &Space, sc: &Scales, dt_min: f64) -> Vec<Vec<f64>> {
     let lo_tau = (sc.span / 300.0).max(0.5 * dt_min).min(sc.span);
-    let taus: Vec<f64> = (0..10)
-        .map(|i| lo_tau * (sc.span / lo_tau).powf(i as f64 / 9.0))
+    let taus: Vec<f64> = (0..8)
+        .map(|i| lo_tau * (sc.span / lo_tau).powf(i as f64 / 7.0))
         .collect();
     let mut thetas: Vec<f64> = [0.0, 0.3, 0.6, 0.9]
         .iter()
@@ -384,7 +384,7 @@ pub fn fit(d: &Data, id: &str, max_iter: usize) -> Result<Fit> {
         let g = unit_response(kind, d, &sp.natural(x))?;
         Ok(project(&g, &d.y).2)
     };
-    // the grid's two best distinct starts
+    // the grid's two best starts
     let mut scored: Vec<(f64, Vec<f64>)> = grid(&sp, &sc, dt_min)
         .into_iter()
         .filter_map(|x| cost_at(&x).ok().map(|r| (sq(&r), x)))
@@ -456,14 +456,15 @@ pub fn fit(d: &Data, id: &str, max_iter: usize) -> Result<Fit> {
         .collect();
     let mut ci = intervals(kind, d, &vals, c, ssr, &sp, &fixed, &mut warnings)?;
     if let Some(p) = &piece {
-        // θ: every value of the piece fits equally; τ_z follows it (τ_z(θ) decreasing in θ)
+        // θ: the profile interval; τ_z follows θ (τ_z(θ) decreasing in θ), ± its own half-width
         let half = ci[2].1.map_or(0.0, |[lo, hi]| (hi - lo) / 2.0);
         ci[2].1 = Some([p.tau_z_at(p.hi) - half, p.tau_z_at(p.lo) + half]);
         ci[3].1 = Some([p.lo, p.hi]);
         warnings.push(format!(
             "theta: a fopdt_ir model with tau_z > 0 jumps at the dead time, so sampled data place θ only \
-             within a sampling interval: every θ in ({:.6}, {:.6}] fits equally well (tau_z following it, \
-             from {:.6} to {:.6}); the middle is reported",
+             to whole sampling intervals (θ and tau_z trade off between the jumps): θ in ({:.6}, {:.6}] \
+             fits within the 95 % profile bound (tau_z following it, from {:.6} to {:.6}); the middle of \
+             the best interval is reported",
             p.lo,
             p.hi,
             p.tau_z_at(p.lo),
@@ -509,6 +510,55 @@ pub fn fit(d: &Data, id: &str, max_iter: usize) -> Result<Fit> {
         noise: sc.noise,
         warnings,
     })
+}
+
+/// Eigenvalues and eigenvectors (columns) of a small symmetric matrix by cyclic Jacobi
+/// rotations (written by hand: nalgebra's SVD or symmetric eigen-decomposition would add
+/// about 100 kB to the wasm module for a 5×5 matrix; Jacobi is exact to round-off here).
+pub fn jacobi_eigen(mut a: DMatrix<f64>) -> (Vec<f64>, DMatrix<f64>) {
+    let n = a.nrows();
+    let mut v = DMatrix::identity(n, n);
+    for _ in 0..100 {
+        let mut off = 0.0;
+        let mut diag = 0.0;
+        for i in 0..n {
+            diag += a[(i, i)] * a[(i, i)];
+            for j in i + 1..n {
+                off += a[(i, j)] * a[(i, j)];
+            }
+        }
+        if off <= 1e-32 * diag || !off.is_finite() {
+            break;
+        }
+        for p in 0..n {
+            for q in p + 1..n {
+                if a[(p, q)] == 0.0 {
+                    continue;
+                }
+                // the rotation that zeroes a_pq (Numerical Recipes §11.1)
+                let th = (a[(q, q)] - a[(p, p)]) / (2.0 * a[(p, q)]);
+                let t = th.signum() / (th.abs() + (th * th + 1.0).sqrt());
+                let c = 1.0 / (t * t + 1.0).sqrt();
+                let s = t * c;
+                for k in 0..n {
+                    let (kp, kq) = (a[(k, p)], a[(k, q)]);
+                    a[(k, p)] = c * kp - s * kq;
+                    a[(k, q)] = s * kp + c * kq;
+                }
+                for k in 0..n {
+                    let (pk, qk) = (a[(p, k)], a[(q, k)]);
+                    a[(p, k)] = c * pk - s * qk;
+                    a[(q, k)] = s * pk + c * qk;
+                }
+                for k in 0..n {
+                    let (kp, kq) = (v[(k, p)], v[(k, q)]);
+                    v[(k, p)] = c * kp - s * kq;
+                    v[(k, q)] = s * kp + c * kq;
+                }
+            }
+        }
+    }
+    ((0..n).map(|i| a[(i, i)]).collect(), v)
 }
 
 /// The interval of dead times that fit a fopdt_ir record with τ_z > 0 equally well.
@@ -581,7 +631,15 @@ fn jump_piece(
         let x0 = shift(x, 0.5 * (p.0 + p.1));
         let lo = [sp.lo[0], sp.lo[1], p.0 + 1e-9 * (p.1 - p.0)];
         let hi = [sp.hi[0], sp.hi[1], p.1];
-        lm::minimize(&mut |x| cost_at(x), &x0, &lo, &hi, &sp.scale, max_iter)
+        // a piece's fit starts next to its optimum (the warm start keeps the invariant)
+        lm::minimize(
+            &mut |x| cost_at(x),
+            &x0,
+            &lo,
+            &hi,
+            &sp.scale,
+            max_iter.min(30),
+        )
     };
     let mut piece = piece_of(d, start.x[2], theta_max);
     let mut cur = at(&start.x, piece)?;
@@ -626,13 +684,41 @@ fn jump_piece(
     if hi <= piece.0 || cur.x[1] <= 0.0 {
         return Ok((cur, None));
     }
+    // the 95 % profile interval: the neighbouring pieces whose best cost stays within
+    // χ²₁(0.95)·s² = 3.84·s² of the minimum (s² = SSR/(N − 5)); the jump at a few samples is all
+    // that separates the pieces, so a small jump in noise leaves several of them
+    let n = d.t.len() as f64;
+    let limit = cur.cost * (1.0 + 3.84 / (n - 5.0).max(1.0));
+    let mut lo_p = piece;
+    while let Some(np) = neighbour(lo_p, false) {
+        if np == lo_p || at(&cur.x, np)?.cost > limit {
+            break;
+        }
+        lo_p = np;
+    }
+    let mut hi_p = piece;
+    while let Some(np) = neighbour(hi_p, true) {
+        if np == hi_p {
+            break;
+        }
+        let r = at(&cur.x, np)?;
+        if r.cost > limit {
+            break;
+        }
+        hi_p = np;
+        if r.x[1] <= 0.0 {
+            // τ_z reached 0: the smooth FOPDT end of the family; no piece beyond is feasible
+            hi_p.1 = r.x[2].max(hi_p.0);
+            break;
+        }
+    }
     let p = Piece {
-        lo: piece.0,
-        hi,
+        lo: lo_p.0,
+        hi: if hi_p == piece { hi } else { hi_p.1 },
         tau,
         a,
     };
-    let theta = 0.5 * (p.lo + p.hi);
+    let theta = 0.5 * (piece.0 + hi);
     let mut x = cur.x.clone();
     x[1] = p.tau_z_at(theta);
     x[2] = theta;
@@ -666,7 +752,7 @@ pub type Failed = (String, Error);
 
 /// Linearised 95 % intervals of every parameter (the family's, then the offset) from the
 /// Jacobian in natural units: `k` and `c` analytic (`g`, 1), the others by central differences.
-/// A direction the data do not determine (a singular value below 1e-9 of the largest, the
+/// A direction the data do not determine (a singular value below 1e-6 of the largest, the
 /// columns scaled to unit norm) makes the parameters along it unidentifiable (`None`).
 #[allow(clippy::too_many_arguments)] // one private helper of `fit`, all its inputs
 fn intervals(
@@ -727,15 +813,17 @@ fn intervals(
             jac.column_mut(j).scale_mut(1.0 / nj);
         }
     }
-    let svd = jac.svd(false, true);
-    let vt = svd.v_t.as_ref().expect("v_t requested");
-    let smax = svd.singular_values.max();
+    // eigen-decomposition of the scaled normal matrix: λ_r = σ_r², σ the singular values
+    let (lam, v) = jacobi_eigen(jac.transpose() * &jac);
+    let lmax = lam.iter().cloned().fold(0.0, f64::max);
     let mut unident = vec![false; p];
     let mut cov = DMatrix::<f64>::zeros(p, p);
-    for (r, s) in svd.singular_values.iter().enumerate() {
-        if s.is_nan() || *s <= 1e-9 * smax {
+    for (r, l) in lam.iter().enumerate() {
+        // σ_r ≤ 1e-6 σ_max: the data do not determine that direction (forming JᵀJ squares the
+        // condition number, so λ cannot resolve σ below ~1e-8 σ_max anyway)
+        if l.is_nan() || *l <= 1e-12 * lmax {
             for j in 0..p {
-                if vt[(r, j)].abs() > 0.1 {
+                if v[(j, r)].abs() > 0.1 {
                     unident[j] = true;
                 }
             }
@@ -743,7 +831,7 @@ fn intervals(
         }
         for a in 0..p {
             for b in 0..p {
-                cov[(a, b)] += vt[(r, a)] * vt[(r, b)] / (s * s);
+                cov[(a, b)] += v[(a, r)] * v[(b, r)] / l;
             }
         }
     }
@@ -807,4 +895,31 @@ pub fn rank(d: &Data, families: &[&str], max_iter: usize) -> Result<(Vec<Fit>, V
     // stable sort: an exact tie keeps the order of `families` (the simpler first)
     fits.sort_by(|a, b| a.aicc.total_cmp(&b.aicc));
     Ok((fits, failed))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Jacobi on a symmetric positive definite 4×4 (BᵀB): V diag(λ) Vᵀ rebuilds it, V is
+    /// orthogonal and the product of the eigenvalues is the determinant, to round-off.
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn jacobi_rebuilds_the_matrix() {
+        let b = DMatrix::from_row_slice(
+            5,
+            4,
+            &[
+                1.0, 2.0, 3.0, 3.0, 0.5, -1.0, 2.0, -0.5, 2.0, 0.1, 0.3, 2.1, -1.0, 4.0, 1.0, 3.0,
+                0.7, 0.7, -2.0, 1.4,
+            ],
+        );
+        let m = b.transpose() * &b;
+        let (lam, v) = jacobi_eigen(m.clone());
+        let rebuilt =
+            &v * DMatrix::from_diagonal(&nalgebra::DVector::from_vec(lam.clone())) * v.transpose();
+        assert!((rebuilt - &m).amax() < 1e-13 * m.amax());
+        assert!((v.transpose() * &v - DMatrix::identity(4, 4)).amax() < 1e-14);
+        let det: f64 = lam.iter().product();
+        assert!((det - m.clone().determinant()).abs() < 1e-10 * m.amax().powi(4));
+    }
 }
