@@ -707,8 +707,9 @@ fn jump_piece(
         }
         hi_p = np;
         if r.x[1] <= 0.0 {
-            // τ_z reached 0: the smooth FOPDT end of the family; no piece beyond is feasible
-            hi_p.1 = r.x[2].max(hi_p.0);
+            // τ_z reached 0: the smooth FOPDT end of the family (no jump, θ continuous, the
+            // cost rising past the best θ of this piece); the whole piece is kept, so the
+            // interval is conservative by less than one sampling interval at this end
             break;
         }
     }

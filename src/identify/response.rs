@@ -17,64 +17,81 @@ use nalgebra::DMatrix;
 /// Most cached segment lengths (an even grid needs two or three; uneven data recycle slots).
 const CACHE: usize = 64;
 
-/// Zero-order-hold transition of one segment length: `x ← F x + G v` (F row-major n×n).
+/// Largest model order handled (the identified families have order ≤ 2).
+pub const MAX_ORDER: usize = 4;
+
+/// Zero-order-hold transition of one segment length: `x ← F x + G v` (F row-major n×n, in
+/// fixed arrays: this is the inner loop of every fit).
 struct Step {
     h: f64,
-    f: Vec<f64>,
-    g: Vec<f64>,
+    f: [f64; MAX_ORDER * MAX_ORDER],
+    g: [f64; MAX_ORDER],
 }
 
 /// The held-input response `y(t_i)` of `tf · e^{−θs}` from rest, for the input deviations `du`
 /// (`du[0]` is the level before and at `t[0]`; the plant rests at `du[0] = 0` before `t[0]`).
 /// `t` strictly increasing; the output is right-continuous (a switch at `t_i` is applied).
+#[allow(clippy::needless_range_loop)] // fixed-size state arrays indexed by row and column
 pub fn held_response(tf: &Tf, theta: f64, t: &[f64], du: &[f64]) -> Result<Vec<f64>> {
     let ss = realize(tf)?;
     let n = ss.order();
-    let (c, d) = (
-        (0..n).map(|i| ss.c[(0, i)]).collect::<Vec<_>>(),
-        ss.d[(0, 0)],
-    );
+    if n > MAX_ORDER {
+        return Err(Error::new(
+            "plant",
+            format!("order {n} above {MAX_ORDER} is not supported here"),
+        ));
+    }
+    let mut c = [0.0; MAX_ORDER];
+    for (i, ci) in c.iter_mut().enumerate().take(n) {
+        *ci = ss.c[(0, i)];
+    }
+    let d = ss.d[(0, 0)];
     let mut cache: Vec<Step> = Vec::new();
     let mut slot = 0usize;
     let mut last = 0usize;
-    let mut x = vec![0.0; n];
-    let mut tmp = vec![0.0; n];
+    let mut x = [0.0; MAX_ORDER];
     let mut v = 0.0;
     let mut tc = t[0];
     let mut out = Vec::with_capacity(t.len());
     // the next input change (index into du) that has not yet reached the plant
     let mut j = 1;
-    let mut advance = |x: &mut Vec<f64>, h: f64, v: f64| -> Result<()> {
+    // advances the state by h with the input v held
+    let mut advance = |x: &mut [f64; MAX_ORDER], h: f64, v: f64| -> Result<()> {
         if h <= 0.0 || n == 0 {
             return Ok(());
         }
-        let near = |s: &Step| (s.h - h).abs() <= 1e-13 * h.max(s.h);
-        let hit = if cache.get(last).is_some_and(near) {
-            Some(last)
-        } else {
-            cache.iter().position(near)
+        // a cached length within 1e-13 relative (plain comparisons: f64::max is a libm call
+        // in wasm)
+        let near = |s: &Step| {
+            let big = if h > s.h { h } else { s.h };
+            (s.h - h).abs() <= 1e-13 * big
         };
-        let k = match hit {
-            Some(k) => k,
-            None => {
-                let st = zoh(&ss.a, &ss.b, h)?;
-                if cache.len() < CACHE {
-                    cache.push(st);
-                    cache.len() - 1
-                } else {
-                    slot = (slot + 1) % CACHE;
-                    cache[slot] = st;
-                    slot
-                }
+        let k = if last < cache.len() && near(&cache[last]) {
+            last
+        } else if let Some(k) = cache.iter().position(near) {
+            k
+        } else {
+            let st = zoh(&ss.a, &ss.b, h)?;
+            if cache.len() < CACHE {
+                cache.push(st);
+                cache.len() - 1
+            } else {
+                slot = (slot + 1) % CACHE;
+                cache[slot] = st;
+                slot
             }
         };
         last = k;
         let s = &cache[k];
-        for (r, out) in tmp.iter_mut().enumerate() {
-            let row = &s.f[r * n..(r + 1) * n];
-            *out = s.g[r] * v + row.iter().zip(x.iter()).map(|(a, b)| a * b).sum::<f64>();
+        let mut nx = [0.0; MAX_ORDER];
+        for r in 0..n {
+            let mut acc = s.g[r] * v;
+            for q in 0..n {
+                acc += s.f[r * n + q] * x[q];
+            }
+            nx[r] = acc;
         }
-        x.copy_from_slice(&tmp);
+        *x = nx;
         Ok(())
     };
     for &ti in t {
@@ -119,11 +136,18 @@ fn zoh(a: &DMatrix<f64>, b: &DMatrix<f64>, h: f64) -> Result<Step> {
             "the model's matrix exponential overflowed",
         ));
     }
-    Ok(Step {
+    let mut st = Step {
         h,
-        f: (0..n * n).map(|k| e[(k / n) * m + k % n]).collect(),
-        g: (0..n).map(|i| e[i * m + n]).collect(),
-    })
+        f: [0.0; MAX_ORDER * MAX_ORDER],
+        g: [0.0; MAX_ORDER],
+    };
+    for k in 0..n * n {
+        st.f[k] = e[(k / n) * m + k % n];
+    }
+    for i in 0..n {
+        st.g[i] = e[i * m + n];
+    }
+    Ok(st)
 }
 
 /// `e^X` of a small dense matrix (row-major m×m) by scaling and squaring of the Taylor series:
