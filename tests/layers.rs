@@ -2,7 +2,8 @@
 //! `src/` names must point to its own layer or a layer below it, and no two modules may import
 //! each other, directly or through others (no cycle between the modules of `src/`).
 //!
-//! Layers, lowest first: `error`, `numerics`, `model`, `sim`, `analysis`, `rules`, `api`,
+//! Layers, lowest first: `error`, `numerics`, `model`, `sim`, `analysis` with `identify`
+//! (one level: fitting a plant to test data), `rules`, `api`,
 //! `plot`, `wasm`. (`plot` draws from a spec and knows nothing of rules; `wasm` is the only
 //! `#[wasm_bindgen]` file and sits on top.)
 
