@@ -470,6 +470,12 @@ pub fn fit(d: &Data, id: &str, max_iter: usize) -> Result<Fit> {
             p.tau_z_at(p.lo),
             p.tau_z_at(p.hi)
         ));
+        if p.open {
+            warnings.push(format!(
+                "theta: the profile interval was cut after {MAX_PIECES} sampling intervals on a side: \
+                 θ is at least that uncertain"
+            ));
+        }
     }
     // bounds reached and a test too short for the time constant
     for (j, name) in kind.names().iter().enumerate() {
@@ -569,7 +575,13 @@ struct Piece {
     tau: f64,
     /// `(1 + τ_z/τ)e^{θ/τ}`: what the samples after the jump fix.
     a: f64,
+    /// The profile walk stopped at [`MAX_PIECES`] pieces: the interval is at least this wide.
+    open: bool,
 }
+
+/// Most sampling pieces the jump search visits in each walk (a bounded run on long records
+/// whose jump is lost in the noise).
+const MAX_PIECES: usize = 40;
 
 impl Piece {
     /// τ_z that keeps the fit when θ moves inside the piece.
@@ -654,7 +666,7 @@ fn jump_piece(
         }
     };
     let mut dir: Option<bool> = None;
-    for _ in 0..d.t.len() {
+    for _ in 0..MAX_PIECES {
         let dirs: Vec<bool> = dir.map_or(vec![false, true], |u| vec![u]);
         let mut moved = false;
         for up in dirs {
@@ -689,14 +701,22 @@ fn jump_piece(
     // that separates the pieces, so a small jump in noise leaves several of them
     let n = d.t.len() as f64;
     let limit = cur.cost * (1.0 + 3.84 / (n - 5.0).max(1.0));
+    let mut open = false;
     let mut lo_p = piece;
+    let mut steps = 0;
     while let Some(np) = neighbour(lo_p, false) {
         if np == lo_p || at(&cur.x, np)?.cost > limit {
             break;
         }
         lo_p = np;
+        steps += 1;
+        if steps >= MAX_PIECES {
+            open = true;
+            break;
+        }
     }
     let mut hi_p = piece;
+    let mut steps = 0;
     while let Some(np) = neighbour(hi_p, true) {
         if np == hi_p {
             break;
@@ -706,6 +726,11 @@ fn jump_piece(
             break;
         }
         hi_p = np;
+        steps += 1;
+        if steps >= MAX_PIECES {
+            open = true;
+            break;
+        }
         if r.x[1] <= 0.0 {
             // τ_z reached 0: the smooth FOPDT end of the family (no jump, θ continuous, the
             // cost rising past the best θ of this piece); the whole piece is kept, so the
@@ -718,6 +743,7 @@ fn jump_piece(
         hi: if hi_p == piece { hi } else { hi_p.1 },
         tau,
         a,
+        open,
     };
     let theta = 0.5 * (piece.0 + hi);
     let mut x = cur.x.clone();
