@@ -41,17 +41,22 @@ const ipdt = t.map((x) => ramp(x - 1 - 0.1) - ramp(x - 21 - 0.1) + 0.1 * g());
 function bench(name, input) {
   const r = pidlab.identify(input); // warm-up, and the result
   const ms = [];
+  const cpu = [];
   for (let i = 0; i < RUNS; i++) {
+    const c0 = process.cpuUsage();
     const t0 = process.hrtime.bigint();
     pidlab.identify(input);
     ms.push(Number(process.hrtime.bigint() - t0) / 1e6);
+    const c = process.cpuUsage(c0);
+    cpu.push((c.user + c.system) / 1e3);
   }
   ms.sort((a, b) => a - b);
+  cpu.sort((a, b) => a - b);
   const p = Object.entries(r.plant).filter(([k]) => k !== 'family').map(([k, v]) => `${k} ${v.toPrecision(4)}`).join(', ');
-  console.log(`${name.padEnd(34)} median ${ms[Math.floor(RUNS / 2)].toFixed(1)} ms  min ${ms[0].toFixed(1)} ms  -> ${r.plant.family}: ${p}`);
+  console.log(`${name.padEnd(34)} median ${ms[Math.floor(RUNS / 2)].toFixed(1)} ms  min ${ms[0].toFixed(1)} ms  CPU median ${cpu[Math.floor(RUNS / 2)].toFixed(1)} ms  -> ${r.plant.family}: ${p}`);
 }
 
-console.log(`identify, ${N} samples, ${RUNS} runs (wall time per call)`);
+console.log(`identify, ${N} samples, ${RUNS} runs (wall time per call; process CPU time, which other jobs on the machine inflate less)`);
 bench('fopdt_ir (step, 1 % noise)', { t, u, y: fopdt, family: 'fopdt_ir' });
 bench('ipdt_ir (pulse, 1 % noise)', { t, u: up, y: ipdt, family: 'ipdt_ir' });
 bench('auto, six families (step data)', { t, u, y: fopdt, family: 'auto' });
