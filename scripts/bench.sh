@@ -18,3 +18,6 @@ echo "## wasm in Node (pkg-node)"
 wasm-pack --quiet build --release --target nodejs --out-dir pkg-node >/dev/null 2>&1 \
   || wasm-pack build --release --target nodejs --out-dir pkg-node
 node bench/bench-node.mjs "$RUNS"
+echo
+echo "## identify in Node (pkg-node): 2,000 samples"
+node bench/identify-node.mjs

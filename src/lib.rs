@@ -34,6 +34,7 @@ pub mod analysis;
 pub mod api;
 pub mod error;
 pub mod export;
+pub mod identify;
 pub mod model;
 pub mod numerics;
 pub mod plot;

@@ -17,6 +17,7 @@ import { showBanners, showReadouts } from './readouts.js';
 import { showMetrics } from './table.js';
 import { showController } from './design.js';
 import { buildExport } from './export.js';
+import * as Id from './identify.js';
 
 /** Builds every control from the state. */
 function buildAll() {
@@ -148,6 +149,8 @@ async function main() {
   buildExport(store.exportTargets);
   P.refreshPins();
   wire();
+  // The identification panel: "Use this model" makes the fitted plant the page's plant.
+  Id.setup({ onUse: (plant) => { store.state.plant = S.cleanPlant(plant) || plant; store.state.preset = ''; buildAll(); changed(); } });
   // What the tests and the benchmark read (the module itself, the state, the timings).
   window.__pidlab = {
     get wasm() { return E.glue(); },

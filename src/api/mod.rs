@@ -15,8 +15,10 @@ use crate::sim::Scenario;
 use serde_json::{json, Map, Value};
 
 pub mod export;
+pub mod identify;
 pub mod input;
 
+pub use identify::identify;
 pub use input::MAX_COEFFS;
 use input::{from_json, AnalyzeIn, ReduceIn, SimulateIn, TuneIn};
 
