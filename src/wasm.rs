@@ -171,6 +171,8 @@ pub fn export_code(input: JsValue) -> Result<JsValue, JsError> {
     }
     let out = api::export(&v).map_err(err)?;
     to_js(&out)
+}
+
 /// `identify({t, u, y, family, options?})`: a plant family fitted to an open-loop test
 /// (`family: "auto"` ranks several by AICc).
 #[wasm_bindgen]
