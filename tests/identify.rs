@@ -23,7 +23,7 @@ fn step_response(f: &Family, s: f64) -> f64 {
         Family::IfoptdZero { k, tau, z, .. } => k * (s - (tau - z) * (1.0 - (-s / tau).exp())),
         Family::Piptd { k, .. } => k * s,
         Family::Diptd { k, .. } => k * s * s / 2.0,
-        Family::IfoptdZeroUnstable { .. } => unreachable!("not fitted"),
+        Family::IfoptdZeroUnstable { .. } | Family::Sopdt { .. } => unreachable!("not fitted"),
     }
 }
 

@@ -49,6 +49,14 @@ pub enum Family {
         z: f64,
         theta: f64,
     },
+    /// `k e^{−θs}/((τ₁ s + 1)(τ₂ s + 1))`: second order plus dead time (the classic
+    /// baselines' self-regulating model with two lags; τ₁ ≥ τ₂ by convention, not required).
+    Sopdt {
+        k: f64,
+        tau1: f64,
+        tau2: f64,
+        theta: f64,
+    },
 }
 
 impl Family {
@@ -62,11 +70,12 @@ impl Family {
             Family::Ifoptd { .. } => "ifoptd",
             Family::IfoptdZero { .. } => "ifoptd_zero",
             Family::IfoptdZeroUnstable { .. } => "ifoptd_zero_unstable",
+            Family::Sopdt { .. } => "sopdt",
         }
     }
 
     /// All family ids.
-    pub const IDS: [&'static str; 7] = [
+    pub const IDS: [&'static str; 8] = [
         "ipdt_ir",
         "fopdt_ir",
         "piptd",
@@ -74,6 +83,7 @@ impl Family {
         "ifoptd",
         "ifoptd_zero",
         "ifoptd_zero_unstable",
+        "sopdt",
     ];
 
     /// Parameter names of a family id, in order.
@@ -83,6 +93,7 @@ impl Family {
             "piptd" | "diptd" => &["k", "theta"],
             "ifoptd" => &["k", "tau", "theta"],
             "ifoptd_zero" | "ifoptd_zero_unstable" => &["k", "tau", "z", "theta"],
+            "sopdt" => &["k", "tau1", "tau2", "theta"],
             _ => return None,
         })
     }
@@ -135,10 +146,16 @@ impl Family {
                 z: v[2],
                 theta: v[3],
             },
-            _ => Family::IfoptdZeroUnstable {
+            "ifoptd_zero_unstable" => Family::IfoptdZeroUnstable {
                 k: v[0],
                 tau: v[1],
                 z: v[2],
+                theta: v[3],
+            },
+            _ => Family::Sopdt {
+                k: v[0],
+                tau1: v[1],
+                tau2: v[2],
                 theta: v[3],
             },
         };
@@ -167,6 +184,12 @@ impl Family {
             Family::Ifoptd { k, tau, theta } => vec![k, tau, theta],
             Family::IfoptdZero { k, tau, z, theta }
             | Family::IfoptdZeroUnstable { k, tau, z, theta } => vec![k, tau, z, theta],
+            Family::Sopdt {
+                k,
+                tau1,
+                tau2,
+                theta,
+            } => vec![k, tau1, tau2, theta],
         }
     }
 
@@ -179,8 +202,8 @@ impl Family {
             }
             match *n {
                 "k" if x == 0.0 => return Err(Error::new("k", "must be non-zero")),
-                "tau" => {
-                    positive("tau", x)?;
+                "tau" | "tau1" | "tau2" => {
+                    positive(n, x)?;
                 }
                 "theta" => {
                     non_negative("theta", x)?;
@@ -221,6 +244,10 @@ impl Family {
             Family::IfoptdZeroUnstable { k, tau, z, .. } => {
                 (Poly::linear(k * z, k), s.mul(&Poly::linear(tau, -1.0)))
             }
+            Family::Sopdt { k, tau1, tau2, .. } => (
+                Poly::constant(k),
+                Poly::linear(tau1, 1.0).mul(&Poly::linear(tau2, 1.0)),
+            ),
         };
         Tf { num, den }
     }
@@ -281,6 +308,8 @@ fn family_param(family: &str, name: &'static str, unit_k: &'static str) -> Famil
         "tau" if unstable => ("Unstable time constant τ", TIME, 5.0, 0.01, 20.0),
         "tau" => ("Time constant τ", TIME, 1.0, 0.01, 20.0),
         "tau_z" => ("Inverse-response zero τ_z", TIME, 0.5, 0.0, 10.0),
+        "tau1" => ("Time constant τ₁", TIME, 2.0, 0.01, 20.0),
+        "tau2" => ("Time constant τ₂", TIME, 0.5, 0.01, 20.0),
         // The rule for this family needs z > 0 (Eq. 29 places a pole at −1/z).
         "z" if unstable => ("Zero z (> 0)", TIME, 2.0, 0.01, 10.0),
         "z" => ("Zero z (z < 0: inverse response)", TIME, -0.5, -10.0, 10.0),
@@ -328,6 +357,11 @@ pub fn family_infos() -> Vec<FamilyInfo> {
                     "Integrator + lag + zero with dead time",
                     "P(s) = k(1 + z s)e^(−θs) / (s(τs + 1)),  z < 0: inverse response",
                     1,
+                ),
+                "sopdt" => (
+                    "Second order plus dead time (SOPDT)",
+                    "P(s) = k e^(−θs) / ((τ₁s + 1)(τ₂s + 1))",
+                    0,
                 ),
                 _ => (
                     "Integrator + unstable pole + zero with dead time",

@@ -16,6 +16,10 @@
 //!   ZN step use the step response's asymptote `k(t − L)`, which for these plants is exact:
 //!   `K_v = k`, `L = θ + τ_z + τ₂`.
 //!
+//! - `sopdt` `k e^{−θs}/((τ₁s + 1)(τ₂s + 1))`: SIMC's PID uses it as it is (series,
+//!   `K_c = τ₁/(k(τ_c + θ))`, `τ_I = min(τ₁, 4(τ_c + θ))`, `τ_D = τ₂`); every other rule, and
+//!   SIMC's PI, use Skogestad's half rule `τ = τ₁ + τ₂/2`, `θ_eff = θ + τ₂/2` (a warning says so).
+//!
 //! The ultimate point of `zn_ultimate` is computed exactly with the real dead time (no
 //! Padé): the lowest ω where the (continuous) phase of `P(jω)` is −180°, bracketed and
 //! refined with [`crate::numerics::brent`]; `K_u = 1/|P(jω_u)|`, `T_u = 2π/ω_u`.
@@ -70,6 +74,18 @@ pub enum Model {
         /// θ + τ_z.
         theta_eff: f64,
     },
+    /// `k e^{−θs}/((τ₁s + 1)(τ₂s + 1))` (`sopdt`): SIMC's PID uses it as it is (series,
+    /// τ_D = τ₂); every other rule and SIMC's PI use its half-rule FOPDT ([`Model::half_rule`]).
+    SecondOrder {
+        /// Gain k.
+        k: f64,
+        /// Larger time constant τ₁.
+        tau1: f64,
+        /// Smaller time constant τ₂.
+        tau2: f64,
+        /// Dead time θ.
+        theta: f64,
+    },
     /// `k e^{−θ_eff s}/(s(τ₂s + 1))`.
     Integrating {
         /// Velocity gain k (K_v).
@@ -101,6 +117,18 @@ impl Model {
                 lag: 0.0,
                 theta_eff: theta,
             },
+            Some(Family::Sopdt {
+                k,
+                tau1,
+                tau2,
+                theta,
+            }) => Model::SecondOrder {
+                k,
+                // The larger time constant is τ₁ whatever order the user gave them in.
+                tau1: tau1.max(tau2),
+                tau2: tau1.min(tau2),
+                theta,
+            },
             Some(Family::Ifoptd { k, tau, theta }) => Model::Integrating {
                 k,
                 lag: tau,
@@ -124,6 +152,33 @@ impl Model {
             return Err(wrong(f));
         }
         Ok(m)
+    }
+
+    /// Skogestad's half rule (2003, Sec. 2.1): a second-order model becomes
+    /// `k e^{−(θ + τ₂/2)s}/((τ₁ + τ₂/2)s + 1)` (half of the smaller lag to the time constant,
+    /// half to the delay), with a warning saying so; other models are returned unchanged.
+    pub fn half_rule(self, warnings: &mut Vec<String>) -> Model {
+        match self {
+            Model::SecondOrder {
+                k,
+                tau1,
+                tau2,
+                theta,
+            } => {
+                warnings.push(format!(
+                    "second-order model reduced by the half rule: τ = τ₁ + τ₂/2 = {}, \
+                     θ_eff = θ + τ₂/2 = {}",
+                    tau1 + tau2 / 2.0,
+                    theta + tau2 / 2.0
+                ));
+                Model::SelfRegulating {
+                    k,
+                    tau: tau1 + tau2 / 2.0,
+                    theta_eff: theta + tau2 / 2.0,
+                }
+            }
+            m => m,
+        }
     }
 }
 
@@ -180,6 +235,17 @@ pub fn simc_fopdt_pi(k: f64, tau1: f64, theta: f64, tau_c: f64) -> Settings {
         ti: tau1.min(4.0 * (tau_c + theta)),
         td: 0.0,
         form: Form::Ideal,
+    }
+}
+
+/// SIMC, Skogestad 2003 (SIMC settings table), second order `k e^{−θs}/((τ₁s + 1)(τ₂s + 1))`,
+/// series PID: `K_c = τ₁/(k(τ_c + θ))`, `τ_I = min(τ₁, 4(τ_c + θ))`, `τ_D = τ₂`.
+pub fn simc_sopdt_pid(k: f64, tau1: f64, theta: f64, tau_c: f64, tau2: f64) -> Settings {
+    Settings {
+        kc: tau1 / (k * (tau_c + theta)),
+        ti: tau1.min(4.0 * (tau_c + theta)),
+        td: tau2,
+        form: Form::Series,
     }
 }
 
@@ -332,6 +398,24 @@ pub fn ultimate_point(plant: &Plant) -> Result<(f64, f64)> {
                 k,
             )
         }
+        Some(Family::Sopdt {
+            k,
+            tau1,
+            tau2,
+            theta,
+        }) => {
+            if theta == 0.0 {
+                return Err(Error::new(
+                    "plant.theta",
+                    "θ = 0: the phase of k/((τ₁s + 1)(τ₂s + 1)) never reaches −180°, there is \
+                     no ultimate point",
+                ));
+            }
+            (
+                Box::new(move |w: f64| -(w * tau1).atan() - (w * tau2).atan() - w * theta),
+                k,
+            )
+        }
         Some(Family::Piptd { k, theta }) => (Box::new(move |w: f64| -FRAC_PI_2 - w * theta), k),
         Some(Family::Ifoptd { k, tau, theta }) => (
             Box::new(move |w: f64| -FRAC_PI_2 - (w * tau).atan() - w * theta),
@@ -477,7 +561,7 @@ impl Method {
 
     /// Families it applies to.
     pub fn families(self) -> Vec<&'static str> {
-        let mut v = vec!["fopdt_ir"];
+        let mut v = vec!["fopdt_ir", "sopdt"];
         v.extend(INTEGRATING);
         v
     }
@@ -592,6 +676,11 @@ pub fn tune(method: Method, plant: &Plant, params: &Params) -> Result<Tuning> {
             ));
         }
     }
+    // Only SIMC's PID has a second-order form; everywhere else the half rule's FOPDT.
+    let model = match model {
+        Model::SecondOrder { .. } if method == Method::Simc && pid => model,
+        m => m.half_rule(&mut warnings),
+    };
     let d = match (method, model) {
         (Method::Simc | Method::ImcLambda, _) => {
             direct_synthesis(method, model, params, pid, &mut warnings)?
@@ -760,6 +849,9 @@ fn direct_synthesis(
     };
     let (theta_u, tau_u, td) = match model {
         Model::SelfRegulating { tau, theta_eff, .. } => (theta_eff, Some(tau), 0.0),
+        Model::SecondOrder {
+            tau1, tau2, theta, ..
+        } => (theta, Some(tau1), tau2),
         Model::Integrating { lag, theta_eff, .. } if pid => (theta_eff, None, lag),
         Model::Integrating { lag, theta_eff, .. } => {
             if lag > 0.0 {
@@ -799,6 +891,15 @@ fn direct_synthesis(
                 "SIMC PI: K_c = τ₁/(k(τ_c + θ)), τ_I = min(τ₁, 4(τ_c + θ))",
             )
         }
+        (Method::Simc, Model::SecondOrder { k, tau1, .. }) => (
+            simc_sopdt_pid(k, tau1, theta_u, tc, td),
+            "SIMC second order: K_c = τ₁/(k(τ_c + θ)), τ_I = min(τ₁, 4(τ_c + θ)), τ_D = τ₂ \
+             (series)",
+        ),
+        // Only SIMC's PID has a second-order form (tune() reduces the rest first).
+        (_, Model::SecondOrder { .. }) => {
+            return direct_synthesis(method, model.half_rule(warnings), params, pid, warnings)
+        }
         (Method::Simc, Model::Integrating { k, .. }) => (
             simc_integrating(k, theta_u, tc, td),
             "SIMC integrating: K_c = 1/(k'(τ_c + θ)), τ_I = 4(τ_c + θ), τ_D = τ₂ \
@@ -828,6 +929,7 @@ fn direct_synthesis(
 /// AMIGO on the self-regulating or the integrating model.
 fn amigo(model: Model, pid: bool, warnings: &mut Vec<String>) -> Result<Designed> {
     Ok(Designed::new(match model {
+        Model::SecondOrder { .. } => return amigo(model.half_rule(warnings), pid, warnings),
         Model::SelfRegulating { k, tau, theta_eff } => {
             positive_theta(theta_eff, "plant.theta", "AMIGO needs L > 0")?;
             let s = if pid {
@@ -879,6 +981,9 @@ fn amigo(model: Model, pid: bool, warnings: &mut Vec<String>) -> Result<Designed
 fn zn_step_design(model: Model, structure: &str) -> Result<Designed> {
     Ok(Designed::new({
         let (a, l, t) = match model {
+            Model::SecondOrder { .. } => {
+                return zn_step_design(model.half_rule(&mut Vec::new()), structure)
+            }
             Model::SelfRegulating { k, tau, theta_eff } => {
                 (k * theta_eff / tau, theta_eff, Some(tau))
             }

@@ -24,3 +24,9 @@ pub const ZN_ULT: [(f64, f64, f64); 3] = [(0.5, 0.0, 0.0), (0.45, 1.2, 0.0), (0.
 pub const SKOGESTAD_E1_MODEL: (f64, f64, f64) = (1.0, 2.5, 1.47);
 /// The printed SIMC PI settings of Example E1.
 pub const SKOGESTAD_E1_PI: (f64, f64) = (0.85, 2.5);
+/// Skogestad (2003), Example E1, as printed: the half-rule second-order model
+/// `(k, τ₁, τ₂, θ)` of the same plant (τ₂ = 1 + 0.4/2, θ = 0.4/2 + 0.3 + (0.2 − 0.08) + 3·0.05).
+pub const SKOGESTAD_E1_SOPDT_MODEL: (f64, f64, f64, f64) = (1.0, 2.0, 1.2, 0.77);
+/// The printed SIMC PID settings of Example E1 on the second-order model, τ_c = θ, series
+/// form `(K_c, τ_I, τ_D)`.
+pub const SKOGESTAD_E1_PID: (f64, f64, f64) = (1.30, 2.0, 1.2);
