@@ -6,6 +6,8 @@ use pidlab::rules::praveen_kumar_narayana::studies::{self, RunMetrics};
 use pidlab::rules::praveen_kumar_narayana::{self as pk, tables};
 use std::fmt::Write;
 
+use crate::ledger;
+
 fn g(x: f64) -> String {
     if !x.is_finite() {
         "—".into()
@@ -47,6 +49,10 @@ pub fn report() -> String {
 }
 
 /// Table 1: ours, printed, Eqs. (13)-(14) and the printed Eq. (17) for β.
+const PAPER: &str = "praveen_kumar_narayana";
+
+const COLUMNS: [&str; 6] = ["IAE", "ISE", "ITAE", "M_p", "t_s", "TV"];
+
 fn table1(s: &mut String) {
     let _ = writeln!(s, "### Table 1: controller parameters\n");
     let _ = writeln!(s, "| example | λ | | k_p | k_i | k_d | α | β |");
@@ -66,6 +72,23 @@ fn table1(s: &mut String) {
                     d.beta
                 );
                 let q = tables::TABLE1_PROPOSED[i];
+                for (col, ours, printed) in [
+                    ("k_p", d.kp, q.kp),
+                    ("k_i", d.ki, q.ki),
+                    ("k_d", d.kd, q.kd),
+                    ("α", d.alpha, q.alpha),
+                    ("β", d.beta, q.beta),
+                ] {
+                    ledger::record(
+                        PAPER,
+                        "Table 1",
+                        &format!("Example {}, proposed λ = {l}", i + 1),
+                        col,
+                        &ledger::num(printed),
+                        Some(ours),
+                        "",
+                    );
+                }
                 let _ = writeln!(
                     s,
                     "| | | printed | {} | {} | {} | {} | {} |",
@@ -113,6 +136,26 @@ fn ms_section(s: &mut String) {
                     ex1_ms = d.ms().unwrap_or(f64::NAN);
                 }
                 let w = d.w_ms();
+                let row = format!("Example {}", i + 1);
+                let q = tables::MS_QUOTES[i];
+                ledger::record(
+                    PAPER,
+                    "text (Fig. 2)",
+                    &row,
+                    "λ for Ms = 2",
+                    &ledger::num(q.lambda_ms2),
+                    Some(st.lambda_ms2),
+                    "",
+                );
+                ledger::record(
+                    PAPER,
+                    "text",
+                    &row,
+                    &format!("Ms at λ = {}", pk::LAMBDA_PAPER[i]),
+                    &ledger::num(q.ms),
+                    d.ms(),
+                    "",
+                );
                 let _ =
                     writeln!(
                     s,
@@ -206,6 +249,17 @@ fn tables_2_to_5(s: &mut String) {
                         [("servo", sv), ("regulatory", rg)].into_iter().enumerate()
                     {
                         let (p, row) = (pr[2 * mi + ri], row(&m));
+                        for (k, col) in COLUMNS.iter().enumerate() {
+                            ledger::record(
+                                PAPER,
+                                table.title,
+                                &format!("{mname}, {rname}"),
+                                col,
+                                &ledger::num(p[k]),
+                                Some(row[k]),
+                                "",
+                            );
+                        }
                         let _ = writeln!(
                             s,
                             "| {mname} | {rname} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {} |",
@@ -214,6 +268,19 @@ fn tables_2_to_5(s: &mut String) {
                     }
                 }
                 Err(e) => {
+                    for (ri, rname) in ["servo", "regulatory"].into_iter().enumerate() {
+                        for (k, col) in COLUMNS.iter().enumerate() {
+                            ledger::record(
+                                PAPER,
+                                table.title,
+                                &format!("{mname}, {rname}"),
+                                col,
+                                &ledger::num(pr[2 * mi + ri][k]),
+                                None,
+                                "",
+                            );
+                        }
+                    }
                     let _ = writeln!(s, "| {mname} | error: {e} | | | | | | | |");
                 }
             }

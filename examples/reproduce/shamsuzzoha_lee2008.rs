@@ -11,6 +11,8 @@ use pidlab::rules::shamsuzzoha_lee2008::studies::{
 use pidlab::rules::shamsuzzoha_lee2008::{design, studies, weighting_filter, DIP_ALPHA};
 use std::fmt::Write;
 
+use crate::ledger;
+
 fn cell(ours: f64, printed: f64) -> String {
     format!("{ours:.3} ({printed})")
 }
@@ -77,6 +79,21 @@ fn parameters(o: &mut String) {
                 } else {
                     format!("({:.4}s + 1)/({:.4}s + 1)", f.num.coef(1), f.den.coef(1))
                 };
+                for (col, ours, printed) in [
+                    ("K_c", d.pid.kc, pp[0]),
+                    ("τ_I", d.pid.ti, pp[1]),
+                    ("τ_D", d.pid.td, pp[2]),
+                ] {
+                    ledger::record(
+                        PAPER,
+                        &format!("Table {}", st.table),
+                        row.label,
+                        col,
+                        &ledger::num(printed),
+                        Some(ours),
+                        "",
+                    );
+                }
                 let _ = writeln!(
                     o,
                     "| {} (Table {}) | {l}, {z}, {g} | {:.4} ({}) | {:.4} ({}) | {:.4} ({}) | {fr} | {} |",
@@ -160,6 +177,18 @@ fn simulations(o: &mut String) {
         for r in &st.rows {
             let (p, pr) = (&r.printed, r.printed.columns());
             let Some(c) = &r.controller else {
+                let liu = if r.key == "liu" {
+                    ssl::liu_load_response(50.0, 0.1, 100.0, 0.001).ok()
+                } else {
+                    None
+                };
+                let mut ours = [None; 10];
+                if let Some((iae, peak, tv)) = liu {
+                    ours[5] = Some(iae);
+                    ours[6] = Some(peak);
+                    ours[7] = Some(tv + sc.disturbance.size);
+                }
+                record_row(&st, r, ours);
                 let _ = writeln!(
                     o,
                     "| {} (not simulated: no (Cr, Cy) form, see below) | — | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) |",
@@ -170,6 +199,26 @@ fn simulations(o: &mut String) {
             let res = simulate_row(&st, c);
             let ms = res.ms.map_or("—".into(), |m| format!("{m:.3}"));
             let (n, m) = (res.nominal, res.mismatch);
+            record_row(
+                &st,
+                r,
+                match (&n, &m) {
+                    (Some(n), Some(m)) => [
+                        n.sp_iae,
+                        n.sp_overshoot,
+                        n.sp_tv,
+                        m.sp_iae,
+                        m.sp_overshoot,
+                        n.ld_iae,
+                        n.ld_peak,
+                        n.ld_tv,
+                        m.ld_iae,
+                        m.ld_peak,
+                    ]
+                    .map(Some),
+                    _ => [None; 10],
+                },
+            );
             match (n, m) {
                 (Some(n), Some(m)) => {
                     let _ = writeln!(
@@ -225,6 +274,61 @@ fn simulations(o: &mut String) {
         );
     }
     differences(o);
+}
+
+const PAPER: &str = "shamsuzzoha_lee2008";
+
+const SIM_COLUMNS: [&str; 10] = [
+    "SP IAE",
+    "SP overshoot",
+    "SP TV",
+    "SP IAE mism.",
+    "SP overshoot mism.",
+    "LD IAE",
+    "LD peak",
+    "LD TV",
+    "LD IAE mism.",
+    "LD peak mism.",
+];
+
+/// Records the ten printed cells of a simulation row (ours in the table's column order; the
+/// swapped printed columns of Table 1's Zhang et al. row are compared crosswise).
+fn record_row(st: &ssl::studies::Study, r: &ssl::studies::StudyRow, ours: [Option<f64>; 10]) {
+    let printed = r.printed.columns();
+    for (k, col) in SIM_COLUMNS.iter().enumerate() {
+        let (mut o, mut cause) = (ours[k], cause(st.id, r.key, k));
+        if (st.id, r.key) == ("ex1", "zhang") && (k == 6 || k == 7) {
+            o = ours[13 - k];
+            cause = "printed columns swapped (1.72 is the TV, 0.48 the peak): compared crosswise";
+        }
+        ledger::record(
+            PAPER,
+            &format!("Table {}", st.table),
+            r.label,
+            col,
+            &ledger::num(printed[k]),
+            o,
+            cause,
+        );
+    }
+}
+
+/// The cause of a known difference (example, row key, column index).
+fn cause(ex: &str, key: &str, k: usize) -> &'static str {
+    match (ex, key, k) {
+        ("ex2", "liu", 5 | 6) => "Liu et al.'s load response from F₀ alone (exact)",
+        ("ex2", "liu", 7) => "TV of u + d (the 0.1 load step included); TV of u alone is 0.1 less",
+        ("ex2", "liu", _) => {
+            "not computable: Liu et al.'s set-point controller is not printed (no available source)"
+        }
+        ("ex4", "wang_cluett", _) => {
+            "Wang & Cluett's structure not given (the printed 3 % set-point offset is impossible for a PID with integral action)"
+        }
+        ("ex4", "rivera", 0 | 1 | 3 | 4) => {
+            "the row's set-point path is not specified (a 1DOF PID × F_t gives these)"
+        }
+        _ => "",
+    }
 }
 
 /// The weighting-type set-point filter of Eq. (27) for the comparison rows.
@@ -399,9 +503,7 @@ fn guidelines(o: &mut String) {
 }
 
 fn write_csv(name: &str, body: &str) {
-    if std::fs::create_dir_all("docs/figures").is_ok() {
-        let _ = std::fs::write(format!("docs/figures/{name}"), body);
-    }
+    let _ = crate::ledger::write_file(&format!("docs/figures/{name}"), body);
 }
 
 /// The differences from print, explained (after the tables of the simulation study).
