@@ -4,7 +4,7 @@
 use pidlab::analysis::metrics::Metrics;
 use pidlab::rules::medarametla_manimozhi2018 as mm;
 use pidlab::rules::medarametla_manimozhi2018::cstr::{CstrParams, OperatingPoint};
-use pidlab::rules::medarametla_manimozhi2018::studies;
+use pidlab::rules::medarametla_manimozhi2018::studies::{self, TvSignal};
 use pidlab::rules::medarametla_manimozhi2018::{Condition, Method};
 use std::fmt::Write;
 
@@ -43,6 +43,7 @@ fn row(
     label: &str,
     m: Option<(Option<Metrics>, Metrics)>,
     p: &[f64; 8],
+    tv_opts: &[Vec<(String, Option<f64>)>; 2],
 ) {
     let pr = |x: f64| {
         if x.is_nan() {
@@ -72,10 +73,17 @@ fn row(
                 r.peak_error,
                 r.settling_time.unwrap_or(f64::NAN),
             ];
-            for ((o, q), col) in ours.iter().zip(p).zip(T45_COLUMNS) {
-                if !q.is_nan() {
-                    ledger::record(PAPER, source, label, col, &ledger::num(*q), Some(*o), "");
+            for (k, ((o, q), col)) in ours.iter().zip(p).zip(T45_COLUMNS).enumerate() {
+                if q.is_nan() {
+                    continue;
                 }
+                let o = Some(*o).filter(|o| o.is_finite());
+                let (o, cause) = match k {
+                    1 => ledger::resolve(*q, o, "TV of u on the 0.1 s grid", &tv_opts[0]),
+                    5 => ledger::resolve(*q, o, "TV of u on the 0.1 s grid", &tv_opts[1]),
+                    _ => (o, String::new()),
+                };
+                ledger::record(PAPER, source, label, col, &ledger::num(*q), o, &cause);
             }
             let cells: Vec<String> = ours
                 .iter()
@@ -270,6 +278,41 @@ fn servo_section() -> String {
     o
 }
 
+/// The TV the paper may have logged, as study options (servo, regulatory): the plant input
+/// u + d instead of u, and fixed grids of 0.05 and 0.01 s instead of the paper's 0.1 s sample
+/// period, from one run with 0.01 s output samples.
+fn tv_options(
+    e: &mm::Example,
+    method: Method,
+    condition: Condition,
+) -> [Vec<(String, Option<f64>)>; 2] {
+    let Some((plant, c, servo)) = studies::row_loop(e, method, condition) else {
+        return [vec![], vec![]];
+    };
+    let sim = studies::performance_sim(&plant, &c, e, servo, 0.01);
+    let mut out = [vec![], vec![]];
+    for (grid, signal) in [
+        (0.1, TvSignal::PlantInput),
+        (0.05, TvSignal::U),
+        (0.05, TvSignal::PlantInput),
+        (0.01, TvSignal::U),
+        (0.01, TvSignal::PlantInput),
+    ] {
+        let what = match signal {
+            TvSignal::U => "u",
+            TvSignal::PlantInput => "u + d",
+        };
+        let label = format!("TV of {what} on a {grid} s grid");
+        let tv = |a: f64, b: f64| {
+            sim.as_ref()
+                .map(|r| studies::tv_on_grid(r, a, b, grid, signal))
+        };
+        out[0].push((label.clone(), if servo { tv(0.0, e.d_time) } else { None }));
+        out[1].push((label, tv(e.d_time, 2.0 * e.d_time)));
+    }
+    out
+}
+
 /// Tables 4-5: nominal and perturbed performance, ours (printed).
 fn tables45_section() -> String {
     let mut o = String::new();
@@ -312,7 +355,8 @@ fn tables45_section() -> String {
                 Method::AjmeriAli => format!("{} Ajmeri & Ali (PCS)", e.id),
             };
             let m = r.run.map(|run| (run.servo, run.regulatory));
-            row(&mut o, source, &label, m, &r.printed);
+            let opts = tv_options(&r.example, r.method, condition);
+            row(&mut o, source, &label, m, &r.printed, &opts);
         }
         let _ = writeln!(o);
     }

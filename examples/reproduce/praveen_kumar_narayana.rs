@@ -7,6 +7,8 @@ use pidlab::rules::praveen_kumar_narayana::{self as pk, tables};
 use std::fmt::Write;
 
 use crate::ledger;
+// The fixed-grid TV of a run (a study option computed from the engine's samples).
+use pidlab::rules::medarametla_manimozhi2018::studies::{tv_on_grid, TvSignal};
 
 fn g(x: f64) -> String {
     if !x.is_finite() {
@@ -52,6 +54,46 @@ pub fn report() -> String {
 const PAPER: &str = "praveen_kumar_narayana";
 
 const COLUMNS: [&str; 6] = ["IAE", "ISE", "ITAE", "M_p", "t_s", "TV"];
+
+/// The TV the paper may have logged, as study options: fixed grids of 0.02, 0.05, 0.1 and 0.2
+/// instead of the 0.01 output samples (the neutral loop's u jumps every θ, so the grid
+/// matters), and for the load run the plant input u + d.
+fn tv_options(
+    c: &pidlab::model::controller::Controller,
+    example: usize,
+    delay_plus_40: bool,
+    load: bool,
+) -> Vec<(String, Option<f64>)> {
+    let plant = studies::simulated_plant(example, delay_plus_40);
+    let t_end = if example == 1 { 100.0 } else { 600.0 };
+    let (sp, d) = if load { (0.0, 0.2) } else { (0.2, 0.0) };
+    let sc = pidlab::sim::Scenario::steps(t_end, 0.01, 0.0, sp, 0.0, d);
+    let Ok(r) = pidlab::analysis::simulate(&plant, c, &sc) else {
+        return vec![];
+    };
+    if r.diverged {
+        return vec![];
+    }
+    let mut out = vec![];
+    let signals: &[TvSignal] = if load {
+        &[TvSignal::U, TvSignal::PlantInput]
+    } else {
+        &[TvSignal::U]
+    };
+    for &signal in signals {
+        for grid in [0.01, 0.02, 0.05, 0.1, 0.2] {
+            if signal == TvSignal::U && grid == 0.01 {
+                continue;
+            }
+            let what = if signal == TvSignal::U { "u" } else { "u + d" };
+            out.push((
+                format!("TV of {what} on a {grid} grid"),
+                Some(tv_on_grid(&r, 0.0, t_end, grid, signal)),
+            ));
+        }
+    }
+    out
+}
 
 fn table1(s: &mut String) {
     let _ = writeln!(s, "### Table 1: controller parameters\n");
@@ -249,15 +291,35 @@ fn tables_2_to_5(s: &mut String) {
                         [("servo", sv), ("regulatory", rg)].into_iter().enumerate()
                     {
                         let (p, row) = (pr[2 * mi + ri], row(&m));
+                        let ctrl = if mi == 0 {
+                            let q = tables::TABLE1_PAI2010[table.example - 1];
+                            pk::pai2010_controller(q.kc, q.ti, q.td)
+                        } else {
+                            studies::proposed_controller(table.example)
+                        };
+                        let opts = ctrl
+                            .ok()
+                            .map(|c| tv_options(&c, table.example, table.delay_plus_40, ri == 1))
+                            .unwrap_or_default();
                         for (k, col) in COLUMNS.iter().enumerate() {
+                            let (o, cause) = if k == 5 {
+                                ledger::resolve(
+                                    p[k],
+                                    Some(row[k]),
+                                    "TV of u on the 0.01 output samples",
+                                    &opts,
+                                )
+                            } else {
+                                (Some(row[k]), String::new())
+                            };
                             ledger::record(
                                 PAPER,
                                 table.title,
                                 &format!("{mname}, {rname}"),
                                 col,
                                 &ledger::num(p[k]),
-                                Some(row[k]),
-                                "",
+                                o,
+                                &cause,
                             );
                         }
                         let _ = writeln!(

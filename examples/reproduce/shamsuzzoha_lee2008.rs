@@ -12,6 +12,8 @@ use pidlab::rules::shamsuzzoha_lee2008::{design, studies, weighting_filter, DIP_
 use std::fmt::Write;
 
 use crate::ledger;
+// The fixed-grid TV of a run (a study option computed from the engine's samples).
+use pidlab::rules::medarametla_manimozhi2018::studies::{tv_on_grid, TvSignal};
 
 fn cell(ours: f64, printed: f64) -> String {
     format!("{ours:.3} ({printed})")
@@ -188,7 +190,7 @@ fn simulations(o: &mut String) {
                     ours[6] = Some(peak);
                     ours[7] = Some(tv + sc.disturbance.size);
                 }
-                record_row(&st, r, ours);
+                record_row(&st, r, ours, &[vec![], vec![]]);
                 let _ = writeln!(
                     o,
                     "| {} (not simulated: no (Cr, Cy) form, see below) | — | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) |",
@@ -199,6 +201,7 @@ fn simulations(o: &mut String) {
             let res = simulate_row(&st, c);
             let ms = res.ms.map_or("—".into(), |m| format!("{m:.3}"));
             let (n, m) = (res.nominal, res.mismatch);
+            let opts = tv_options(&st, c);
             record_row(
                 &st,
                 r,
@@ -218,6 +221,7 @@ fn simulations(o: &mut String) {
                     .map(Some),
                     _ => [None; 10],
                 },
+                &opts,
             );
             match (n, m) {
                 (Some(n), Some(m)) => {
@@ -293,13 +297,26 @@ const SIM_COLUMNS: [&str; 10] = [
 
 /// Records the ten printed cells of a simulation row (ours in the table's column order; the
 /// swapped printed columns of Table 1's Zhang et al. row are compared crosswise).
-fn record_row(st: &ssl::studies::Study, r: &ssl::studies::StudyRow, ours: [Option<f64>; 10]) {
+fn record_row(
+    st: &ssl::studies::Study,
+    r: &ssl::studies::StudyRow,
+    ours: [Option<f64>; 10],
+    tv_opts: &[Vec<(String, Option<f64>)>; 2],
+) {
     let printed = r.printed.columns();
     for (k, col) in SIM_COLUMNS.iter().enumerate() {
-        let (mut o, mut cause) = (ours[k], cause(st.id, r.key, k));
+        let (mut o, mut cause) = (ours[k], cause(st.id, r.key, k).to_string());
+        let default = format!("TV of u on the {} s output samples", st.scenario.dt);
+        if k == 2 && cause.is_empty() {
+            (o, cause) = ledger::resolve(printed[k], o, &default, &tv_opts[0]);
+        }
+        if k == 7 && cause.is_empty() && (st.id, r.key) != ("ex1", "zhang") {
+            (o, cause) = ledger::resolve(printed[k], o, &default, &tv_opts[1]);
+        }
         if (st.id, r.key) == ("ex1", "zhang") && (k == 6 || k == 7) {
             o = ours[13 - k];
-            cause = "printed columns swapped (1.72 is the TV, 0.48 the peak): compared crosswise";
+            cause = "printed columns swapped (1.72 is the TV, 0.48 the peak): compared crosswise"
+                .into();
         }
         ledger::record(
             PAPER,
@@ -308,9 +325,54 @@ fn record_row(st: &ssl::studies::Study, r: &ssl::studies::StudyRow, ours: [Optio
             col,
             &ledger::num(printed[k]),
             o,
-            cause,
+            &cause,
         );
     }
+}
+
+/// The set-point and load TV the paper may have logged, as study options (nominal plant):
+/// fixed grids of 0.05 and 0.1 instead of the table's output step, the plant input u + d
+/// instead of u, and the set-point TV without the move of u at the step itself.
+fn tv_options(
+    st: &ssl::studies::Study,
+    c: &pidlab::model::controller::Controller,
+) -> [Vec<(String, Option<f64>)>; 2] {
+    let mut sc = st.scenario.clone();
+    sc.dt = 0.01;
+    let Ok(r) = simulate(&st.plant.plant(), c, &sc) else {
+        return [vec![], vec![]];
+    };
+    if r.diverged {
+        return [vec![], vec![]];
+    }
+    let (t0, td, te) = (sc.setpoint.time, sc.disturbance.time, sc.t_end);
+    let mut out = [vec![], vec![]];
+    for (grid, signal) in [
+        (0.05, TvSignal::U),
+        (0.1, TvSignal::U),
+        (0.01, TvSignal::PlantInput),
+        (0.05, TvSignal::PlantInput),
+        (0.1, TvSignal::PlantInput),
+    ] {
+        let what = match signal {
+            TvSignal::U => "u",
+            TvSignal::PlantInput => "u + d",
+        };
+        let label = format!("TV of {what} on a {grid} grid");
+        if signal == TvSignal::U {
+            out[0].push((label.clone(), Some(tv_on_grid(&r, t0, td, grid, signal))));
+        }
+        out[1].push((label, Some(tv_on_grid(&r, td, te, grid, signal))));
+    }
+    // Without the jump of u at the set-point step (u(0+) − u(0−), a biproper Cr).
+    let jump = r.u.first().copied().unwrap_or(0.0).abs();
+    for grid in [0.01, 0.05, 0.1] {
+        out[0].push((
+            format!("TV of u on a {grid} grid without the jump at the step"),
+            Some(tv_on_grid(&r, t0, td, grid, TvSignal::U) - jump),
+        ));
+    }
+    out
 }
 
 /// The cause of a known difference (example, row key, column index).
