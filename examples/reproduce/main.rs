@@ -37,6 +37,11 @@ fn main() {
         doc.push_str(&s);
         doc.push('\n');
     }
+    if !only.is_empty() {
+        // Sections only: the rows they record, for inspection (the committed files untouched).
+        let cells = ledger::take();
+        eprint!("{}", ledger::csv(&cells));
+    }
     if only.is_empty() {
         let cells = ledger::take();
         doc.push_str(&ledger::summary(&cells));
