@@ -148,3 +148,39 @@ fn csv_is_current_and_consistent() {
         assert_eq!(status, expected, "{line}");
     }
 }
+
+/// Markdown text with every heading one level deeper (how docs/ERRATA.md nests its sources).
+fn demote(t: &str) -> String {
+    t.lines()
+        .map(|l| {
+            if l.starts_with('#') {
+                format!("#{l}")
+            } else {
+                l.to_string()
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+        .trim()
+        .to_string()
+}
+
+/// docs/ERRATA.md carries the addenda verbatim, and the shared errata and clarifications when
+/// the shared folder is present (a clone of the repository alone has no ../shared).
+#[test]
+fn errata_collects_every_source() {
+    let errata = std::fs::read_to_string("docs/ERRATA.md").expect("docs/ERRATA.md");
+    let mut sources = vec!["docs/ERRATA-ADDENDA.md"];
+    for shared in ["../shared/ERRATA.md", "../shared/CLARIFICATIONS.md"] {
+        if std::path::Path::new(shared).exists() {
+            sources.push(shared);
+        }
+    }
+    for src in sources {
+        let text = std::fs::read_to_string(src).expect("readable");
+        assert!(
+            errata.contains(&demote(&text)),
+            "docs/ERRATA.md is missing the current text of {src}"
+        );
+    }
+}
