@@ -278,3 +278,52 @@ pub fn resolve(
         format!("not reproduced; tried: {}", tried.join("; ")),
     )
 }
+
+/// Row-level version of [`resolve`] for a simulation detail that changes a whole run (a plant
+/// model, a controller structure): an option is taken for the whole row only when it reproduces
+/// more of the row's cells within 2 % than the default; every cell off by more than 2 % after
+/// that gets a cause listing the options tried with their values.
+pub fn resolve_row(
+    printed: &[f64],
+    default: &[Option<f64>],
+    options: &[(String, Vec<Option<f64>>)],
+) -> (Vec<Option<f64>>, Vec<String>) {
+    let score = |vals: &[Option<f64>]| {
+        vals.iter()
+            .zip(printed)
+            .filter(|(v, p)| v.is_some_and(|v| within2(**p, v)))
+            .count()
+    };
+    let base = score(default);
+    let best = options
+        .iter()
+        .map(|(l, v)| (score(v), l, v))
+        // An option must reproduce more cells than the default and at least half the row.
+        .filter(|(s, _, _)| *s > base && 2 * *s >= printed.len())
+        .max_by_key(|(s, _, _)| *s);
+    let (vals, chosen): (Vec<Option<f64>>, Option<&String>) = match best {
+        Some((_, l, v)) => (v.clone(), Some(l)),
+        None => (default.to_vec(), None),
+    };
+    let causes = vals
+        .iter()
+        .enumerate()
+        .map(|(k, v)| {
+            let ok = v.is_some_and(|v| within2(printed[k], v));
+            let d = default[k].map_or("—".into(), |d| format!("{d:.4}"));
+            let mut c = chosen.map_or(String::new(), |l| format!("{l} (default: {d})"));
+            if !ok && !options.is_empty() {
+                let tried: Vec<String> = options
+                    .iter()
+                    .map(|(l, o)| format!("{l} {}", o[k].map_or("—".into(), |v| format!("{v:.4}"))))
+                    .collect();
+                if !c.is_empty() {
+                    c.push_str("; ");
+                }
+                c.push_str(&format!("not reproduced; tried: {}", tried.join("; ")));
+            }
+            c
+        })
+        .collect();
+    (vals, causes)
+}

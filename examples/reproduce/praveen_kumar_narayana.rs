@@ -120,6 +120,100 @@ fn pai_stable_alternative(load: bool) -> Option<([f64; 6], String)> {
     ))
 }
 
+/// Whole-run study options for a row of Tables 2-5 (IAE, ISE, ITAE, M_p, t_s): the dead time
+/// as a first- or second-order Padé approximant in the simulated plant (the paper's own
+/// simulation may have used one), and for Pai et al. 2010 the other PID structures their three
+/// printed numbers could mean.
+fn run_options(
+    pai: bool,
+    example: usize,
+    delay_plus_40: bool,
+    load: bool,
+) -> Vec<(String, Vec<Option<f64>>)> {
+    use pidlab::model::controller::Pid;
+    use pidlab::model::plant::Plant;
+    use pidlab::model::tf::Tf;
+    let plant = studies::simulated_plant(example, delay_plus_40);
+    let t_end = if example == 1 { 100.0 } else { 600.0 };
+    let pade = |n: usize| -> Option<Plant> {
+        let t = plant.delay;
+        let f = if n == 1 {
+            Tf::parse_desc(&[-t / 2.0, 1.0], &[t / 2.0, 1.0])
+        } else {
+            Tf::parse_desc(
+                &[t * t / 12.0, -t / 2.0, 1.0],
+                &[t * t / 12.0, t / 2.0, 1.0],
+            )
+        }
+        .ok()?;
+        Some(Plant {
+            tf: plant.tf.mul(&f),
+            delay: 0.0,
+            family: None,
+        })
+    };
+    let q = tables::TABLE1_PAI2010[example - 1];
+    let default_c = if pai {
+        pk::pai2010_controller(q.kc, q.ti, q.td)
+    } else {
+        studies::proposed_controller(example)
+    };
+    let mut cases: Vec<(
+        String,
+        Option<Plant>,
+        Option<pidlab::model::controller::Controller>,
+    )> = vec![
+        (
+            "1st-order Padé delay in the plant".into(),
+            pade(1),
+            default_c.clone().ok(),
+        ),
+        (
+            "2nd-order Padé delay in the plant".into(),
+            pade(2),
+            default_c.ok(),
+        ),
+    ];
+    if pai {
+        for (name, pid) in [
+            (
+                "ideal PID, N = 10, on the error",
+                Pid::ideal(q.kc, q.ti, q.td).filter_n(10.0),
+            ),
+            (
+                "ideal PID, N = 10, derivative on y",
+                Pid::ideal(q.kc, q.ti, q.td)
+                    .filter_n(10.0)
+                    .weights(1.0, 0.0),
+            ),
+            (
+                "series PID, N = 10, derivative on y",
+                Pid::series_form(q.kc, q.ti, q.td)
+                    .filter_n(10.0)
+                    .weights(1.0, 0.0),
+            ),
+        ] {
+            cases.push((name.into(), Some(plant.clone()), pid.to_controller().ok()));
+        }
+    }
+    cases
+        .into_iter()
+        .map(|(name, p, c)| {
+            let m = p
+                .zip(c)
+                .and_then(|(p, c)| studies::servo_and_regulatory(&p, &c, t_end).ok());
+            let vals = m.map_or(vec![None; 5], |(sv, rg)| {
+                let m = if load { rg } else { sv };
+                [m.iae, m.ise, m.itae, m.mp, m.ts]
+                    .iter()
+                    .map(|v| Some(*v).filter(|v| v.is_finite()))
+                    .collect()
+            });
+            (name, vals)
+        })
+        .collect()
+}
+
 fn table1(s: &mut String) {
     let _ = writeln!(s, "### Table 1: controller parameters\n");
     let _ = writeln!(s, "| example | λ | | k_p | k_i | k_d | α | β |");
@@ -348,6 +442,16 @@ fn tables_2_to_5(s: &mut String) {
                             );
                             continue;
                         }
+                        let run_opts =
+                            run_options(mi == 0, table.example, table.delay_plus_40, ri == 1);
+                        let (row_vals, row_causes) = ledger::resolve_row(
+                            &p[..5],
+                            &row[..5]
+                                .iter()
+                                .map(|v| Some(*v).filter(|v| v.is_finite()))
+                                .collect::<Vec<_>>(),
+                            &run_opts,
+                        );
                         for (k, col) in COLUMNS.iter().enumerate() {
                             let (o, cause) = if k == 5 {
                                 ledger::resolve(
@@ -357,7 +461,7 @@ fn tables_2_to_5(s: &mut String) {
                                     &opts,
                                 )
                             } else {
-                                (Some(row[k]), String::new())
+                                (row_vals[k], row_causes[k].clone())
                             };
                             ledger::record(
                                 PAPER,

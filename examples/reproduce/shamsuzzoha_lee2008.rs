@@ -304,8 +304,26 @@ fn record_row(
     tv_opts: &[Vec<(String, Option<f64>)>; 2],
 ) {
     let printed = r.printed.columns();
+    // Whole-run options for the IAE/overshoot/peak columns (not TV, not the explained cells).
+    let plain: Vec<usize> = (0..10)
+        .filter(|&k| k != 2 && k != 7 && cause(st.id, r.key, k).is_empty())
+        .filter(|_| r.controller.is_some() && (st.id, r.key) != ("ex1", "zhang"))
+        .collect();
+    let run_opts = r.controller.as_ref().map_or(vec![], |c| run_options(st, c));
+    let pick = |v: &[Option<f64>]| plain.iter().map(|&k| v[k]).collect::<Vec<_>>();
+    let (row_vals, row_causes) = ledger::resolve_row(
+        &plain.iter().map(|&k| printed[k]).collect::<Vec<_>>(),
+        &pick(&ours),
+        &run_opts
+            .iter()
+            .map(|(l, v)| (l.clone(), pick(v)))
+            .collect::<Vec<_>>(),
+    );
     for (k, col) in SIM_COLUMNS.iter().enumerate() {
         let (mut o, mut cause) = (ours[k], cause(st.id, r.key, k).to_string());
+        if let Some(i) = plain.iter().position(|&j| j == k) {
+            (o, cause) = (row_vals[i], row_causes[i].clone());
+        }
         let default = format!("TV of u on the {} s output samples", st.scenario.dt);
         if k == 2 && cause.is_empty() {
             (o, cause) = ledger::resolve(printed[k], o, &default, &tv_opts[0]);
@@ -328,6 +346,64 @@ fn record_row(
             &cause,
         );
     }
+}
+
+/// Whole-run study options (the ten columns, nominal and mismatch): the dead time as a first-
+/// or second-order Padé approximant in the simulated plants, and the derivative filtered with
+/// N = 10 (the paper's PID is ideal; a simulation may have filtered it) — as a lag τ_D/10 on the
+/// controller's both paths.
+fn run_options(
+    st: &ssl::studies::Study,
+    c: &pidlab::model::controller::Controller,
+) -> Vec<(String, Vec<Option<f64>>)> {
+    use pidlab::model::plant::Plant;
+    use pidlab::model::tf::Tf;
+    let pade = |p: &Plant, n: usize| -> Option<Plant> {
+        let t = p.delay;
+        let f = if n == 1 {
+            Tf::parse_desc(&[-t / 2.0, 1.0], &[t / 2.0, 1.0])
+        } else {
+            Tf::parse_desc(
+                &[t * t / 12.0, -t / 2.0, 1.0],
+                &[t * t / 12.0, t / 2.0, 1.0],
+            )
+        }
+        .ok()?;
+        Some(Plant {
+            tf: p.tf.mul(&f),
+            delay: 0.0,
+            family: None,
+        })
+    };
+    let nominal = st.plant.plant();
+    let mut out = vec![];
+    for n in [1, 2] {
+        let (Some(pn), Some(pm)) = (pade(&nominal, n), pade(&st.mismatch, n)) else {
+            continue;
+        };
+        let a = ssl::studies::perf(&pn, c, &st.scenario);
+        let b = ssl::studies::perf(&pm, c, &st.scenario);
+        let v = match (a, b) {
+            (Some(a), Some(b)) => [
+                a.sp_iae,
+                a.sp_overshoot,
+                a.sp_tv,
+                b.sp_iae,
+                b.sp_overshoot,
+                a.ld_iae,
+                a.ld_peak,
+                a.ld_tv,
+                b.ld_iae,
+                b.ld_peak,
+            ]
+            .map(Some)
+            .to_vec(),
+            _ => vec![None; 10],
+        };
+        let order = if n == 1 { "1st" } else { "2nd" };
+        out.push((format!("{order}-order Padé delay in the plants"), v));
+    }
+    out
 }
 
 /// The set-point and load TV the paper may have logged, as study options (nominal plant):
