@@ -269,6 +269,19 @@ pub fn resolve(
         let d = default.map_or("—".into(), |d| format!("{d:.4}"));
         return (Some(*v), format!("{label} (default, {default_label}: {d})"));
     }
+    if default.is_none() {
+        // Nothing of ours otherwise: the closest option fills the cell, named.
+        let closest = options
+            .iter()
+            .filter_map(|(l, v)| v.map(|v| (l, v)))
+            .min_by(|a, b| (a.1 - printed).abs().total_cmp(&(b.1 - printed).abs()));
+        if let Some((label, v)) = closest {
+            return (
+                Some(v),
+                format!("{label} (default: — ); the closest option tried, not within 2 %"),
+            );
+        }
+    }
     let tried: Vec<String> = options
         .iter()
         .map(|(l, v)| format!("{l} {}", v.map_or("—".into(), |v| format!("{v:.4}"))))

@@ -456,6 +456,9 @@ fn cause(ex: &str, key: &str, k: usize) -> &'static str {
     match (ex, key, k) {
         ("ex2", "liu", 5 | 6) => "Liu et al.'s load response from F₀ alone (exact)",
         ("ex2", "liu", 7) => "TV of u + d (the 0.1 load step included); TV of u alone is 0.1 less",
+        ("ex2", "liu", 8 | 9) => {
+            "not computable: with model mismatch the load response depends on where R(s) sits in Liu et al.'s scheme, which is not printed"
+        }
         ("ex2", "liu", _) => {
             "not computable: Liu et al.'s set-point controller is not printed (no available source)"
         }
