@@ -103,7 +103,7 @@ fn figure_csv(name: &str, rows: &[Row], u: bool) -> String {
         csv.push('\n');
     }
     let path = format!("docs/figures/{name}");
-    match std::fs::create_dir_all("docs/figures").and_then(|_| std::fs::write(&path, csv)) {
+    match crate::ledger::write_file(&path, &csv) {
         Ok(()) => format!("Curves ({}): `{path}`.\n", if u { "u" } else { "y" }),
         Err(e) => format!("(could not write {path}: {e})\n"),
     }
@@ -192,6 +192,29 @@ fn settings_section(w: &mut String) {
     let _ = writeln!(w, "| example | criterion | θ/T | T₀/T | K_c ours / printed | T_i ours / printed | T_d ours / printed |\n|---|---|---|---|---|---|---|");
     for c in studies::printed_settings().unwrap() {
         let (s, pr) = (&c.ours, &c.printed);
+        let crit = pr.criterion.id().to_uppercase();
+        for (col, ours, printed) in [
+            ("K_c", s.kc, pr.kc),
+            ("T_i", s.ti, pr.ti),
+            ("T_d", s.td, pr.td),
+        ] {
+            // Table I's ISTE column is used with its erratum (a₂, d₃; below): it changes T_i
+            // and T_d of the Table I (θ/T ≤ 1) examples.
+            let cause = if crit == "ISTE" && col != "K_c" && pr.example <= 2 {
+                "Table I ISTE column read with its erratum (a₂ = 0.434, d₃ = −0.01494)"
+            } else {
+                ""
+            };
+            crate::ledger::record(
+                "kaya2020",
+                pr.table,
+                &format!("Example {}, {crit}", pr.example),
+                col,
+                &format!("{printed:.3}"),
+                Some(ours),
+                cause,
+            );
+        }
         let _ = writeln!(
             w,
             "| {} | {} | {:.3} | {:.3} | {:.4} / {:.3} | {:.4} / {:.3} | {:.4} / {:.3} |",

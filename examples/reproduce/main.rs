@@ -5,6 +5,7 @@
 mod arvanitis2012;
 mod engine;
 mod kaya2020;
+mod ledger;
 mod medarametla_manimozhi2018;
 mod praveen_kumar_narayana;
 mod shamsuzzoha_lee2008;
@@ -36,8 +37,21 @@ fn main() {
         doc.push_str(&s);
         doc.push('\n');
     }
+    if !only.is_empty() {
+        // Sections only: the rows they record, for inspection (the committed files untouched).
+        let cells = ledger::take();
+        eprint!("{}", ledger::csv(&cells));
+    }
     if only.is_empty() {
+        let cells = ledger::take();
+        doc.push_str(&ledger::summary(&cells));
         std::fs::create_dir_all("docs").expect("create docs/");
+        std::fs::write("docs/reproduction.csv", ledger::csv(&cells))
+            .expect("write docs/reproduction.csv");
+        eprintln!(
+            "wrote docs/reproduction.csv ({} printed numbers)",
+            cells.len()
+        );
         std::fs::write("docs/reproduction.md", doc).expect("write docs/reproduction.md");
         eprintln!("wrote docs/reproduction.md");
     }

@@ -6,6 +6,10 @@ use pidlab::rules::praveen_kumar_narayana::studies::{self, RunMetrics};
 use pidlab::rules::praveen_kumar_narayana::{self as pk, tables};
 use std::fmt::Write;
 
+use crate::ledger;
+// The fixed-grid TV of a run (a study option computed from the engine's samples).
+use pidlab::rules::medarametla_manimozhi2018::studies::{tv_on_grid, TvSignal};
+
 fn g(x: f64) -> String {
     if !x.is_finite() {
         "—".into()
@@ -47,6 +51,169 @@ pub fn report() -> String {
 }
 
 /// Table 1: ours, printed, Eqs. (13)-(14) and the printed Eq. (17) for β.
+const PAPER: &str = "praveen_kumar_narayana";
+
+const COLUMNS: [&str; 6] = ["IAE", "ISE", "ITAE", "M_p", "t_s", "TV"];
+
+/// The TV the paper may have logged, as study options: fixed grids of 0.02, 0.05, 0.1 and 0.2
+/// instead of the 0.01 output samples (the neutral loop's u jumps every θ, so the grid
+/// matters), and for the load run the plant input u + d.
+fn tv_options(
+    c: &pidlab::model::controller::Controller,
+    example: usize,
+    delay_plus_40: bool,
+    load: bool,
+) -> Vec<(String, Option<f64>)> {
+    let plant = studies::simulated_plant(example, delay_plus_40);
+    let t_end = if example == 1 { 100.0 } else { 600.0 };
+    let (sp, d) = if load { (0.0, 0.2) } else { (0.2, 0.0) };
+    let sc = pidlab::sim::Scenario::steps(t_end, 0.01, 0.0, sp, 0.0, d);
+    let Ok(r) = pidlab::analysis::simulate(&plant, c, &sc) else {
+        return vec![];
+    };
+    if r.diverged {
+        return vec![];
+    }
+    let mut out = vec![];
+    let signals: &[TvSignal] = if load {
+        &[TvSignal::U, TvSignal::PlantInput]
+    } else {
+        &[TvSignal::U]
+    };
+    for &signal in signals {
+        for grid in [0.01, 0.02, 0.05, 0.1, 0.2] {
+            if signal == TvSignal::U && grid == 0.01 {
+                continue;
+            }
+            let what = if signal == TvSignal::U { "u" } else { "u + d" };
+            out.push((
+                format!("TV of {what} on a {grid} grid"),
+                Some(tv_on_grid(&r, 0.0, t_end, grid, signal)),
+            ));
+        }
+    }
+    out
+}
+
+/// Pai et al. 2010, Example 2 with +40 % dead time: our series mapping (which reproduces
+/// Example 1's regulatory rows) is unstable there, the printed response settles (barely, in
+/// 257 s). The structures tried for a stable loop (all from the printed K_c, τ_I, τ_D):
+/// series PID with derivative lag 0.1τ_D on the error (unstable) or with the derivative on y
+/// (unstable), ideal PID with N = 10 on the error (stable), with the derivative on y (stable),
+/// ideal derivative on y (stable). The first stable one, the ideal PID with N = 10 on the
+/// error, fills the rows (servo or regulatory run, the paper's columns).
+fn pai_stable_alternative(load: bool) -> Option<([f64; 6], String)> {
+    let q = tables::TABLE1_PAI2010[1];
+    let plant = studies::simulated_plant(2, true);
+    let c = pidlab::model::controller::Pid::ideal(q.kc, q.ti, q.td)
+        .filter_n(10.0)
+        .to_controller()
+        .ok()?;
+    let (sv, rg) = studies::servo_and_regulatory(&plant, &c, 600.0).ok()?;
+    let m = if load { rg } else { sv };
+    Some((
+        [m.iae, m.ise, m.itae, m.mp, m.ts, m.tv],
+        "Pai et al.'s structure not given; our series mapping (derivative lag 0.1τ_D) is unstable at +40 % delay; \
+         the ideal PID with N = 10 on the error is stable and gives these; no tried structure (series or ideal, \
+         derivative on e or y, N = 10 or ideal) reproduces the printed barely-stable response (settling in 257 s)"
+            .into(),
+    ))
+}
+
+/// Whole-run study options for a row of Tables 2-5 (IAE, ISE, ITAE, M_p, t_s): the dead time
+/// as a first- or second-order Padé approximant in the simulated plant (the paper's own
+/// simulation may have used one), and for Pai et al. 2010 the other PID structures their three
+/// printed numbers could mean.
+fn run_options(
+    pai: bool,
+    example: usize,
+    delay_plus_40: bool,
+    load: bool,
+) -> Vec<(String, Vec<Option<f64>>)> {
+    use pidlab::model::controller::Pid;
+    use pidlab::model::plant::Plant;
+    use pidlab::model::tf::Tf;
+    let plant = studies::simulated_plant(example, delay_plus_40);
+    let t_end = if example == 1 { 100.0 } else { 600.0 };
+    let pade = |n: usize| -> Option<Plant> {
+        let t = plant.delay;
+        let f = if n == 1 {
+            Tf::parse_desc(&[-t / 2.0, 1.0], &[t / 2.0, 1.0])
+        } else {
+            Tf::parse_desc(
+                &[t * t / 12.0, -t / 2.0, 1.0],
+                &[t * t / 12.0, t / 2.0, 1.0],
+            )
+        }
+        .ok()?;
+        Some(Plant {
+            tf: plant.tf.mul(&f),
+            delay: 0.0,
+            family: None,
+        })
+    };
+    let q = tables::TABLE1_PAI2010[example - 1];
+    let default_c = if pai {
+        pk::pai2010_controller(q.kc, q.ti, q.td)
+    } else {
+        studies::proposed_controller(example)
+    };
+    let mut cases: Vec<(
+        String,
+        Option<Plant>,
+        Option<pidlab::model::controller::Controller>,
+    )> = vec![
+        (
+            "1st-order Padé delay in the plant".into(),
+            pade(1),
+            default_c.clone().ok(),
+        ),
+        (
+            "2nd-order Padé delay in the plant".into(),
+            pade(2),
+            default_c.ok(),
+        ),
+    ];
+    if pai {
+        for (name, pid) in [
+            (
+                "ideal PID, N = 10, on the error",
+                Pid::ideal(q.kc, q.ti, q.td).filter_n(10.0),
+            ),
+            (
+                "ideal PID, N = 10, derivative on y",
+                Pid::ideal(q.kc, q.ti, q.td)
+                    .filter_n(10.0)
+                    .weights(1.0, 0.0),
+            ),
+            (
+                "series PID, N = 10, derivative on y",
+                Pid::series_form(q.kc, q.ti, q.td)
+                    .filter_n(10.0)
+                    .weights(1.0, 0.0),
+            ),
+        ] {
+            cases.push((name.into(), Some(plant.clone()), pid.to_controller().ok()));
+        }
+    }
+    cases
+        .into_iter()
+        .map(|(name, p, c)| {
+            let m = p
+                .zip(c)
+                .and_then(|(p, c)| studies::servo_and_regulatory(&p, &c, t_end).ok());
+            let vals = m.map_or(vec![None; 5], |(sv, rg)| {
+                let m = if load { rg } else { sv };
+                [m.iae, m.ise, m.itae, m.mp, m.ts]
+                    .iter()
+                    .map(|v| Some(*v).filter(|v| v.is_finite()))
+                    .collect()
+            });
+            (name, vals)
+        })
+        .collect()
+}
+
 fn table1(s: &mut String) {
     let _ = writeln!(s, "### Table 1: controller parameters\n");
     let _ = writeln!(s, "| example | λ | | k_p | k_i | k_d | α | β |");
@@ -66,6 +233,23 @@ fn table1(s: &mut String) {
                     d.beta
                 );
                 let q = tables::TABLE1_PROPOSED[i];
+                for (col, ours, printed) in [
+                    ("k_p", d.kp, q.kp),
+                    ("k_i", d.ki, q.ki),
+                    ("k_d", d.kd, q.kd),
+                    ("α", d.alpha, q.alpha),
+                    ("β", d.beta, q.beta),
+                ] {
+                    ledger::record(
+                        PAPER,
+                        "Table 1",
+                        &format!("Example {}, proposed λ = {l}", i + 1),
+                        col,
+                        &ledger::num(printed),
+                        Some(ours),
+                        "",
+                    );
+                }
                 let _ = writeln!(
                     s,
                     "| | | printed | {} | {} | {} | {} | {} |",
@@ -113,6 +297,26 @@ fn ms_section(s: &mut String) {
                     ex1_ms = d.ms().unwrap_or(f64::NAN);
                 }
                 let w = d.w_ms();
+                let row = format!("Example {}", i + 1);
+                let q = tables::MS_QUOTES[i];
+                ledger::record(
+                    PAPER,
+                    "text (Fig. 2)",
+                    &row,
+                    "λ for Ms = 2",
+                    &ledger::num(q.lambda_ms2),
+                    Some(st.lambda_ms2),
+                    "",
+                );
+                ledger::record(
+                    PAPER,
+                    "text",
+                    &row,
+                    &format!("Ms at λ = {}", pk::LAMBDA_PAPER[i]),
+                    &ledger::num(q.ms),
+                    d.ms(),
+                    "",
+                );
                 let _ =
                     writeln!(
                     s,
@@ -206,6 +410,69 @@ fn tables_2_to_5(s: &mut String) {
                         [("servo", sv), ("regulatory", rg)].into_iter().enumerate()
                     {
                         let (p, row) = (pr[2 * mi + ri], row(&m));
+                        let ctrl = if mi == 0 {
+                            let q = tables::TABLE1_PAI2010[table.example - 1];
+                            pk::pai2010_controller(q.kc, q.ti, q.td)
+                        } else {
+                            studies::proposed_controller(table.example)
+                        };
+                        let opts = ctrl
+                            .ok()
+                            .map(|c| tv_options(&c, table.example, table.delay_plus_40, ri == 1))
+                            .unwrap_or_default();
+                        let stable_alt = (mi == 0 && table.example == 2 && table.delay_plus_40)
+                            .then(|| pai_stable_alternative(ri == 1))
+                            .flatten();
+                        if let Some((alt, cause)) = &stable_alt {
+                            for (k, col) in COLUMNS.iter().enumerate() {
+                                ledger::record(
+                                    PAPER,
+                                    table.title,
+                                    &format!("{mname}, {rname}"),
+                                    col,
+                                    &ledger::num(p[k]),
+                                    Some(alt[k]).filter(|v| v.is_finite()),
+                                    cause,
+                                );
+                            }
+                            let _ = writeln!(
+                                s,
+                                "| {mname} (ideal PID, N = 10, on the error: stable) | {rname} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | |",
+                                g(alt[0]), p[0], g(alt[1]), p[1], g(alt[2]), p[2], g(alt[3]), p[3], g(alt[4]), p[4], g(alt[5]), p[5]
+                            );
+                            continue;
+                        }
+                        let run_opts =
+                            run_options(mi == 0, table.example, table.delay_plus_40, ri == 1);
+                        let (row_vals, row_causes) = ledger::resolve_row(
+                            &p[..5],
+                            &row[..5]
+                                .iter()
+                                .map(|v| Some(*v).filter(|v| v.is_finite()))
+                                .collect::<Vec<_>>(),
+                            &run_opts,
+                        );
+                        for (k, col) in COLUMNS.iter().enumerate() {
+                            let (o, cause) = if k == 5 {
+                                ledger::resolve(
+                                    p[k],
+                                    Some(row[k]),
+                                    "TV of u on the 0.01 output samples",
+                                    &opts,
+                                )
+                            } else {
+                                (row_vals[k], row_causes[k].clone())
+                            };
+                            ledger::record(
+                                PAPER,
+                                table.title,
+                                &format!("{mname}, {rname}"),
+                                col,
+                                &ledger::num(p[k]),
+                                o,
+                                &cause,
+                            );
+                        }
                         let _ = writeln!(
                             s,
                             "| {mname} | {rname} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {} / {} | {} |",
@@ -214,6 +481,19 @@ fn tables_2_to_5(s: &mut String) {
                     }
                 }
                 Err(e) => {
+                    for (ri, rname) in ["servo", "regulatory"].into_iter().enumerate() {
+                        for (k, col) in COLUMNS.iter().enumerate() {
+                            ledger::record(
+                                PAPER,
+                                table.title,
+                                &format!("{mname}, {rname}"),
+                                col,
+                                &ledger::num(pr[2 * mi + ri][k]),
+                                None,
+                                "",
+                            );
+                        }
+                    }
                     let _ = writeln!(s, "| {mname} | error: {e} | | | | | | | |");
                 }
             }

@@ -11,6 +11,10 @@ use pidlab::rules::shamsuzzoha_lee2008::studies::{
 use pidlab::rules::shamsuzzoha_lee2008::{design, studies, weighting_filter, DIP_ALPHA};
 use std::fmt::Write;
 
+use crate::ledger;
+// The fixed-grid TV of a run (a study option computed from the engine's samples).
+use pidlab::rules::medarametla_manimozhi2018::studies::{tv_on_grid, TvSignal};
+
 fn cell(ours: f64, printed: f64) -> String {
     format!("{ours:.3} ({printed})")
 }
@@ -77,6 +81,21 @@ fn parameters(o: &mut String) {
                 } else {
                     format!("({:.4}s + 1)/({:.4}s + 1)", f.num.coef(1), f.den.coef(1))
                 };
+                for (col, ours, printed) in [
+                    ("K_c", d.pid.kc, pp[0]),
+                    ("τ_I", d.pid.ti, pp[1]),
+                    ("τ_D", d.pid.td, pp[2]),
+                ] {
+                    ledger::record(
+                        PAPER,
+                        &format!("Table {}", st.table),
+                        row.label,
+                        col,
+                        &ledger::num(printed),
+                        Some(ours),
+                        "",
+                    );
+                }
                 let _ = writeln!(
                     o,
                     "| {} (Table {}) | {l}, {z}, {g} | {:.4} ({}) | {:.4} ({}) | {:.4} ({}) | {fr} | {} |",
@@ -160,6 +179,18 @@ fn simulations(o: &mut String) {
         for r in &st.rows {
             let (p, pr) = (&r.printed, r.printed.columns());
             let Some(c) = &r.controller else {
+                let liu = if r.key == "liu" {
+                    ssl::liu_load_response(50.0, 0.1, 100.0, 0.001).ok()
+                } else {
+                    None
+                };
+                let mut ours = [None; 10];
+                if let Some((iae, peak, tv)) = liu {
+                    ours[5] = Some(iae);
+                    ours[6] = Some(peak);
+                    ours[7] = Some(tv + sc.disturbance.size);
+                }
+                record_row(&st, r, ours, &[vec![], vec![]]);
                 let _ = writeln!(
                     o,
                     "| {} (not simulated: no (Cr, Cy) form, see below) | — | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) | ({}) |",
@@ -170,6 +201,28 @@ fn simulations(o: &mut String) {
             let res = simulate_row(&st, c);
             let ms = res.ms.map_or("—".into(), |m| format!("{m:.3}"));
             let (n, m) = (res.nominal, res.mismatch);
+            let opts = tv_options(&st, c);
+            record_row(
+                &st,
+                r,
+                match (&n, &m) {
+                    (Some(n), Some(m)) => [
+                        n.sp_iae,
+                        n.sp_overshoot,
+                        n.sp_tv,
+                        m.sp_iae,
+                        m.sp_overshoot,
+                        n.ld_iae,
+                        n.ld_peak,
+                        n.ld_tv,
+                        m.ld_iae,
+                        m.ld_peak,
+                    ]
+                    .map(Some),
+                    _ => [None; 10],
+                },
+                &opts,
+            );
             match (n, m) {
                 (Some(n), Some(m)) => {
                     let _ = writeln!(
@@ -225,6 +278,198 @@ fn simulations(o: &mut String) {
         );
     }
     differences(o);
+}
+
+const PAPER: &str = "shamsuzzoha_lee2008";
+
+const SIM_COLUMNS: [&str; 10] = [
+    "SP IAE",
+    "SP overshoot",
+    "SP TV",
+    "SP IAE mism.",
+    "SP overshoot mism.",
+    "LD IAE",
+    "LD peak",
+    "LD TV",
+    "LD IAE mism.",
+    "LD peak mism.",
+];
+
+/// Records the ten printed cells of a simulation row (ours in the table's column order; the
+/// swapped printed columns of Table 1's Zhang et al. row are compared crosswise).
+fn record_row(
+    st: &ssl::studies::Study,
+    r: &ssl::studies::StudyRow,
+    ours: [Option<f64>; 10],
+    tv_opts: &[Vec<(String, Option<f64>)>; 2],
+) {
+    let printed = r.printed.columns();
+    // Whole-run options for the IAE/overshoot/peak columns (not TV, not the explained cells).
+    let plain: Vec<usize> = (0..10)
+        .filter(|&k| k != 2 && k != 7 && cause(st.id, r.key, k).is_empty())
+        .filter(|_| r.controller.is_some() && (st.id, r.key) != ("ex1", "zhang"))
+        .collect();
+    let run_opts = r.controller.as_ref().map_or(vec![], |c| run_options(st, c));
+    let pick = |v: &[Option<f64>]| plain.iter().map(|&k| v[k]).collect::<Vec<_>>();
+    let (row_vals, row_causes) = ledger::resolve_row(
+        &plain.iter().map(|&k| printed[k]).collect::<Vec<_>>(),
+        &pick(&ours),
+        &run_opts
+            .iter()
+            .map(|(l, v)| (l.clone(), pick(v)))
+            .collect::<Vec<_>>(),
+    );
+    for (k, col) in SIM_COLUMNS.iter().enumerate() {
+        let (mut o, mut cause) = (ours[k], cause(st.id, r.key, k).to_string());
+        if let Some(i) = plain.iter().position(|&j| j == k) {
+            (o, cause) = (row_vals[i], row_causes[i].clone());
+        }
+        let default = format!("TV of u on the {} s output samples", st.scenario.dt);
+        if k == 2 && cause.is_empty() {
+            (o, cause) = ledger::resolve(printed[k], o, &default, &tv_opts[0]);
+        }
+        if k == 7 && cause.is_empty() && (st.id, r.key) != ("ex1", "zhang") {
+            (o, cause) = ledger::resolve(printed[k], o, &default, &tv_opts[1]);
+        }
+        if (st.id, r.key) == ("ex1", "zhang") && (k == 6 || k == 7) {
+            o = ours[13 - k];
+            cause = "printed columns swapped (1.72 is the TV, 0.48 the peak): compared crosswise"
+                .into();
+        }
+        ledger::record(
+            PAPER,
+            &format!("Table {}", st.table),
+            r.label,
+            col,
+            &ledger::num(printed[k]),
+            o,
+            &cause,
+        );
+    }
+}
+
+/// Whole-run study options (the ten columns, nominal and mismatch): the dead time as a first-
+/// or second-order Padé approximant in the simulated plants, and the derivative filtered with
+/// N = 10 (the paper's PID is ideal; a simulation may have filtered it) — as a lag τ_D/10 on the
+/// controller's both paths.
+fn run_options(
+    st: &ssl::studies::Study,
+    c: &pidlab::model::controller::Controller,
+) -> Vec<(String, Vec<Option<f64>>)> {
+    use pidlab::model::plant::Plant;
+    use pidlab::model::tf::Tf;
+    let pade = |p: &Plant, n: usize| -> Option<Plant> {
+        let t = p.delay;
+        let f = if n == 1 {
+            Tf::parse_desc(&[-t / 2.0, 1.0], &[t / 2.0, 1.0])
+        } else {
+            Tf::parse_desc(
+                &[t * t / 12.0, -t / 2.0, 1.0],
+                &[t * t / 12.0, t / 2.0, 1.0],
+            )
+        }
+        .ok()?;
+        Some(Plant {
+            tf: p.tf.mul(&f),
+            delay: 0.0,
+            family: None,
+        })
+    };
+    let nominal = st.plant.plant();
+    let mut out = vec![];
+    for n in [1, 2] {
+        let (Some(pn), Some(pm)) = (pade(&nominal, n), pade(&st.mismatch, n)) else {
+            continue;
+        };
+        let a = ssl::studies::perf(&pn, c, &st.scenario);
+        let b = ssl::studies::perf(&pm, c, &st.scenario);
+        let v = match (a, b) {
+            (Some(a), Some(b)) => [
+                a.sp_iae,
+                a.sp_overshoot,
+                a.sp_tv,
+                b.sp_iae,
+                b.sp_overshoot,
+                a.ld_iae,
+                a.ld_peak,
+                a.ld_tv,
+                b.ld_iae,
+                b.ld_peak,
+            ]
+            .map(Some)
+            .to_vec(),
+            _ => vec![None; 10],
+        };
+        let order = if n == 1 { "1st" } else { "2nd" };
+        out.push((format!("{order}-order Padé delay in the plants"), v));
+    }
+    out
+}
+
+/// The set-point and load TV the paper may have logged, as study options (nominal plant):
+/// fixed grids of 0.05 and 0.1 instead of the table's output step, the plant input u + d
+/// instead of u, and the set-point TV without the move of u at the step itself.
+fn tv_options(
+    st: &ssl::studies::Study,
+    c: &pidlab::model::controller::Controller,
+) -> [Vec<(String, Option<f64>)>; 2] {
+    let mut sc = st.scenario.clone();
+    sc.dt = 0.01;
+    let Ok(r) = simulate(&st.plant.plant(), c, &sc) else {
+        return [vec![], vec![]];
+    };
+    if r.diverged {
+        return [vec![], vec![]];
+    }
+    let (t0, td, te) = (sc.setpoint.time, sc.disturbance.time, sc.t_end);
+    let mut out = [vec![], vec![]];
+    for (grid, signal) in [
+        (0.05, TvSignal::U),
+        (0.1, TvSignal::U),
+        (0.01, TvSignal::PlantInput),
+        (0.05, TvSignal::PlantInput),
+        (0.1, TvSignal::PlantInput),
+    ] {
+        let what = match signal {
+            TvSignal::U => "u",
+            TvSignal::PlantInput => "u + d",
+        };
+        let label = format!("TV of {what} on a {grid} grid");
+        if signal == TvSignal::U {
+            out[0].push((label.clone(), Some(tv_on_grid(&r, t0, td, grid, signal))));
+        }
+        out[1].push((label, Some(tv_on_grid(&r, td, te, grid, signal))));
+    }
+    // Without the jump of u at the set-point step (u(0+) − u(0−), a biproper Cr).
+    let jump = r.u.first().copied().unwrap_or(0.0).abs();
+    for grid in [0.01, 0.05, 0.1] {
+        out[0].push((
+            format!("TV of u on a {grid} grid without the jump at the step"),
+            Some(tv_on_grid(&r, t0, td, grid, TvSignal::U) - jump),
+        ));
+    }
+    out
+}
+
+/// The cause of a known difference (example, row key, column index).
+fn cause(ex: &str, key: &str, k: usize) -> &'static str {
+    match (ex, key, k) {
+        ("ex2", "liu", 5 | 6) => "Liu et al.'s load response from F₀ alone (exact)",
+        ("ex2", "liu", 7) => "TV of u + d (the 0.1 load step included); TV of u alone is 0.1 less",
+        ("ex2", "liu", 8 | 9) => {
+            "not computable: with model mismatch the load response depends on where R(s) sits in Liu et al.'s scheme, which is not printed"
+        }
+        ("ex2", "liu", _) => {
+            "not computable: Liu et al.'s set-point controller is not printed (no available source)"
+        }
+        ("ex4", "wang_cluett", _) => {
+            "Wang & Cluett's structure not given (the printed 3 % set-point offset is impossible for a PID with integral action)"
+        }
+        ("ex4", "rivera", 0 | 1 | 3 | 4) => {
+            "the row's set-point path is not specified (a 1DOF PID × F_t gives these)"
+        }
+        _ => "",
+    }
 }
 
 /// The weighting-type set-point filter of Eq. (27) for the comparison rows.
@@ -399,9 +644,7 @@ fn guidelines(o: &mut String) {
 }
 
 fn write_csv(name: &str, body: &str) {
-    if std::fs::create_dir_all("docs/figures").is_ok() {
-        let _ = std::fs::write(format!("docs/figures/{name}"), body);
-    }
+    let _ = crate::ledger::write_file(&format!("docs/figures/{name}"), body);
 }
 
 /// The differences from print, explained (after the tables of the simulation study).

@@ -629,3 +629,104 @@ pub fn worst_fit_errors(checks: &[FitCheck]) -> Vec<(&'static str, f64)> {
     }
     worst
 }
+
+// ---------------------------------------------------------------------------------------
+// Tables 4-5: TV as the paper may have computed it (a study option; the defaults are above)
+// ---------------------------------------------------------------------------------------
+
+/// Which signal a TV sums.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TvSignal {
+    /// The controller output u (the default everywhere in pidlab).
+    U,
+    /// The plant input u + d (a load step counts as a move of its size).
+    PlantInput,
+}
+
+/// Σ|x(t_k) − x(t_{k−1})| over a fixed grid of step `grid` on [a, b) (`≤ b` at the end of the
+/// run), with x(t_{−1}) the value at the grid point before `a` (0 before the run), for x = u or
+/// u + d taken from the run's output samples; `grid` must be a multiple of the run's dt. This is
+/// the TV a fixed-step simulation of that step logs; with `grid` = the run's dt it is pidlab's
+/// own TV of the window (for `TvSignal::U`).
+pub fn tv_on_grid(
+    r: &crate::analysis::SimResult,
+    a: f64,
+    b: f64,
+    grid: f64,
+    signal: TvSignal,
+) -> f64 {
+    let dt = if r.t.len() > 1 { r.t[1] - r.t[0] } else { grid };
+    let stride = ((grid / dt).round() as usize).max(1);
+    let t_end = r.t.last().copied().unwrap_or(0.0);
+    let tol = 1e-9 * dt.max(1e-300);
+    let x = |k: usize| match signal {
+        TvSignal::U => r.u[k],
+        TvSignal::PlantInput => r.u[k] + r.d[k],
+    };
+    let mut tv = 0.0;
+    let mut prev: Option<f64> = None;
+    for k in (0..r.t.len()).step_by(stride) {
+        let t = r.t[k];
+        let inside = t >= a - tol && (t < b - tol || (b >= t_end - tol && t <= b + tol));
+        if inside {
+            let p = prev.unwrap_or(0.0);
+            tv += (x(k) - p).abs();
+        }
+        prev = Some(x(k));
+    }
+    tv
+}
+
+/// The loop of a Tables 4-5 row as [`tables_4_5`] simulates it: (plant, controller, whether
+/// the set-point step is applied).
+pub fn row_loop(
+    e: &Example,
+    method: Method,
+    condition: Condition,
+) -> Option<(Plant, Controller, bool)> {
+    let mut plant = process(e);
+    if condition == Condition::Perturbed {
+        plant = plant.with_gain_delay(1.2, 1.2);
+    }
+    let (c, servo) = match method {
+        Method::Proposed => (
+            design(&e.family, e.lambda)
+                .and_then(|d| d.controller_order(e.p, e.p_order))
+                .ok()?,
+            true,
+        ),
+        Method::AnilPadmaSree => {
+            let c = comparisons()
+                .into_iter()
+                .find(|c| c.example == e.id)?
+                .controller()
+                .ok()?;
+            let servo = c.cr.relative_degree() >= 0;
+            (c, servo)
+        }
+        Method::AjmeriAli => (
+            ajmeri_ali()
+                .into_iter()
+                .find(|a| a.example == e.id)?
+                .controller(&e.family.plant())
+                .ok()?,
+            true,
+        ),
+    };
+    Some((plant, c, servo))
+}
+
+/// A Tables 4-5 run as [`performance_run`] makes it, but with output step `dt` (for
+/// [`tv_on_grid`] on grids finer than the paper's 0.1 s); `None` when it fails or diverges.
+pub fn performance_sim(
+    plant: &Plant,
+    c: &Controller,
+    e: &Example,
+    servo: bool,
+    dt: f64,
+) -> Option<crate::analysis::SimResult> {
+    let sp = if servo { e.sp_size } else { 0.0 };
+    let sc = Scenario::steps(2.0 * e.d_time, dt, 0.0, sp, e.d_time, e.d_size);
+    let r = simulate(plant, c, &sc).ok()?;
+    (!r.diverged).then_some(r)
+}
