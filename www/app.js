@@ -16,6 +16,9 @@ import { drawPlots, watchSizes } from './plots.js';
 import { showBanners, showReadouts } from './readouts.js';
 import { showMetrics } from './table.js';
 import { showController } from './design.js';
+import { drawBode } from './bode.js';
+import * as I from './instructor.js';
+import { updateSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeoff.js';
 
 /** Builds every control from the state. */
 function buildAll() {
@@ -26,6 +29,7 @@ function buildAll() {
   Pr.showPresetInfo();
   Sh.buildEmbedChoices();
   Sh.applyEmbed();
+  I.apply();
 }
 
 /** The banners of calls that crashed the module (a trap) since the last render. */
@@ -36,6 +40,20 @@ function crashBanners() {
     title: 'The computation module crashed',
     text: c.message + '. Its results are missing here; the next change computes again. (A Rust panic\'s file and line are in the browser console.)',
   }));
+}
+
+/** The frequency-response and trade-off panels (issue 16): failures there are banners too. */
+function drawClassroom(r) {
+  try {
+    drawBode(r);
+    const env = $('envelope-summary');
+    env.hidden = !r.envelope;
+    if (r.envelope) env.textContent = 'Nyquist plot: the orange band is L for every plant in the box ±(the perturbation sliders); its closest approach to −1 gives a worst-case Ms of ' + (Number.isFinite(r.envelope.worstMs) ? S.fmt(r.envelope.worstMs, 3) : '∞ (it reaches −1: some plant in the box is unstable or at the limit)') + '.';
+    updateSweep();
+    drawTradeoff(r);
+  } catch (e) {
+    showBanners([...r.banners, { kind: 'warn', title: 'Frequency panels', text: errText(e) }]);
+  }
 }
 
 /** Computes the state and shows the results. */
@@ -50,6 +68,7 @@ function render() {
     const t1 = performance.now();
     drawPlots(r);
     const t2 = lap('plots', t1);
+    drawClassroom(r);
     showMetrics(r);
     showController(r);
     lap('tables', t2);
@@ -134,14 +153,21 @@ async function main() {
     return;
   }
   connect({ render, rebuild: () => { buildAll(); changed(); } });
+  onSweepProgress(() => { if (store.last) drawTradeoff(store.last); });
   // A restart that had to wait: say so; the next change computes (not the input that trapped).
   E.onRestart(() => showBanners([{ kind: 'warn', title: 'The computation module has been restarted', text: 'Change any input to compute again.' }]));
   const q = new URLSearchParams(location.search);
   const dec = U.decodeHash(location.hash);
+  const ins = I.init(location.hash);
   store.embed = dec.embed || q.has('embed');
   if (dec.state) store.state = dec.state;
   $('loading').hidden = true;
   Pr.buildPresets();
+  // instructor mode: start from a preset when the hash carries no state
+  if (!dec.state && ins.preset && store.presets.some((p) => p.id === ins.preset)) {
+    $('preset').value = ins.preset;
+    $('preset').dispatchEvent(new Event('change'));
+  }
   buildAll();
   P.refreshPins();
   wire();
@@ -152,6 +178,7 @@ async function main() {
     inputs: () => (store.last && store.last.ctl ? { plant: store.state.plant, controller: S.controllerOf(store.last.ctl) } : null),
     perf,
     fmt: S.fmt,
+    sweep: sweepState,
     ready: true,
   };
   // The browser tests' hooks, with #test=1 only: make the live instance trap like a dead one.
