@@ -18,6 +18,7 @@ import { showMetrics } from './table.js';
 import { showController } from './design.js';
 import { drawBode } from './bode.js';
 import * as I from './instructor.js';
+import * as Api from './embed-api.js';
 import { updateSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeoff.js';
 
 /** Builds every control from the state. */
@@ -51,6 +52,7 @@ function drawClassroom(r) {
     if (r.envelope) env.textContent = 'Nyquist plot: the orange band is L for every plant in the box ±(the perturbation sliders); its closest approach to −1 gives a worst-case Ms of ' + (Number.isFinite(r.envelope.worstMs) ? S.fmt(r.envelope.worstMs, 3) : '∞ (it reaches −1: some plant in the box is unstable or at the limit)') + '.';
     updateSweep();
     drawTradeoff(r);
+    Api.notify();
   } catch (e) {
     showBanners([...r.banners, { kind: 'warn', title: 'Frequency panels', text: errText(e) }]);
   }
@@ -179,11 +181,13 @@ async function main() {
     perf,
     fmt: S.fmt,
     sweep: sweepState,
+    api: Api.stats,
     ready: true,
   };
   // The browser tests' hooks, with #test=1 only: make the live instance trap like a dead one.
   if (dec.test) window.__pidlabTest = { forceTrap: E.forceTrap, generation: E.generation, spareReady: E.spareReady };
   render();
+  Api.start(ins.api);
   document.body.setAttribute('data-ready', '1');
 }
 

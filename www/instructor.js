@@ -36,7 +36,7 @@ export function parse(hash) {
   if (origin === '*') api = '*';
   else { try { const u = new URL(origin); if (/^https?:$/.test(u.protocol)) api = u.origin; } catch { api = ''; } }
   return {
-    panels: q.has('panels') ? panels : null,
+    panels: panels.length ? panels : null,
     lock: list(q, 'lock', (s) => /^[a-z]{2}-[A-Za-z0-9_]{1,40}$/.test(s)),
     hide: list(q, 'hide', (s) => s in HIDE),
     lang: STRINGS[q.get('lang')] ? q.get('lang') : '',

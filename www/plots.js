@@ -135,6 +135,7 @@ const boundary = { asObject: false };
 const drawn = new Map();
 function plot(spec) {
   const c = $(spec.canvas);
+  if (c && c.closest('[hidden]')) return; // a panel the instructor mode hides (issue 16)
   try {
     const t0 = performance.now();
     const text = specText(spec);
