@@ -73,6 +73,7 @@ function render() {
     drawClassroom(r);
     showMetrics(r);
     showController(r);
+    I.afterRender();
     lap('tables', t2);
     const crashed = crashBanners();
     if (crashed.length) showBanners([...crashed, ...r.banners]);

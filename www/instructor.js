@@ -111,3 +111,12 @@ function conceal() {
 
 /** The numbers still hidden (the embed API does not hand them out either). */
 export const hiddenNumbers = () => stillHidden();
+
+/** After a render: the labels other modules rewrite each render must not speak a hidden
+ *  number either (the Nyquist plot's label carries Ms). */
+export function afterRender() {
+  if (!stillHidden().includes('ms')) return;
+  const ny = $('plot-nyquist');
+  const label = ny && ny.getAttribute('aria-label');
+  if (label && /Ms [^,;]*[0-9]/.test(label)) ny.setAttribute('aria-label', label.replace(/Ms [−\-0-9.e∞]+/g, 'Ms (hidden)'));
+}

@@ -44,6 +44,9 @@ test('instructor parameters: panels, locked control, hidden numbers with Reveal,
   assert.equal(await vis('bode-mt'), 'hidden');
   assert.equal(await vis('bode-summary'), 'hidden');
   assert.equal(await vis('ro-gm'), 'visible');
+  // nor is Ms spoken by the Nyquist plot's text alternative
+  assert.match(await page.getAttribute('#plot-nyquist', 'aria-label'), /Ms \(hidden\)/);
+  assert.doesNotMatch(await page.getAttribute('#plot-nyquist', 'aria-label'), /Ms [0-9]/);
   await page.click('#reveal-ms-ro-ms');
   assert.equal(await vis('ro-ms'), 'visible');
   assert.equal(await vis('bode-ms'), 'visible');
