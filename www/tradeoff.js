@@ -21,7 +21,7 @@ const MS_MAX = 6; // points beyond this Ms are off the chart (unusable designs)
 const BAND = [1.4, 2.0];
 const C = { servo: '#0072B2', load: '#D55E00', cur: '#000000' };
 
-/** The sweep in progress or done: { key, param, values, points, done, error, t0, ms }. */
+/** The sweep in progress or done: { method, baseKey, refined, param, values, points, done, error, t0, ms }. */
 let job = null;
 let onProgress = () => {};
 
@@ -90,7 +90,7 @@ const baseKey = (inp, param) => {
 };
 
 const MS_GAP = 0.1;
-const EXTRA_MAX = 40;
+const EXTRA_MAX = 20; // the refinement stays within half the grid's time (≤ 1 s for the whole sweep)
 
 /** Values between neighbours of the first pass whose Ms differ by more than MS_GAP (up to 3 per
  *  gap, log-spaced when the grid is, EXTRA_MAX in all), the largest gaps first. */
