@@ -171,6 +171,8 @@ async function main() {
     $('preset').value = ins.preset;
     $('preset').dispatchEvent(new Event('change'));
   }
+  // instructor mode: the values of `lock=key:value`, checked like a URL's state
+  if (Object.keys(ins.values).length) store.state = S.cleanState(I.lockValues(store.state));
   buildAll();
   P.refreshPins();
   wire();

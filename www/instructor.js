@@ -1,7 +1,9 @@
 // Instructor mode for embedded classroom pages: URL hash parameters beside `s=` and `embed=1`
 // (README, "Instructor mode"), read once at load and kept in every link and embed code:
 //   panels=servo,load,u,nyquist,bode,tradeoff,metrics,controller  the panels shown (default all)
-//   lock=mp-lambda,fp-theta   control rows (their data-key) shown but disabled at their value
+//   lock=mp-lambda,fp-theta   control rows (their data-key) shown but disabled at their value;
+//                             `lock=mp-lambda:0.8` also sets the value (mp- rule parameter,
+//                             fp- plant parameter, pt- perturbation in %)
 //   hide=ms,mt,bw,gm,pm       numbers concealed until the student presses "Reveal"
 //   lang=de                   the labels' language (a table of i18n.js)
 //   preset=<id>               the paper preset to start from when the hash has no state
@@ -22,7 +24,7 @@ export const HIDE = {
 // Texts that repeat the hidden numbers: concealed while any number is hidden.
 const SUMMARIES = ['bode-summary', 'announce', 'tradeoff-status', 'envelope-summary', 'metrics-box'];
 
-const cfg = { panels: null, lock: [], hide: [], lang: '', preset: '', api: '' };
+const cfg = { panels: null, lock: [], values: {}, hide: [], lang: '', preset: '', api: '' };
 const revealed = new Set();
 
 const list = (q, name, ok) => (q.get(name) || '').split(',').map((s) => s.trim()).filter((s) => s && ok(s));
@@ -35,9 +37,16 @@ export function parse(hash) {
   let api = '';
   if (origin === '*') api = '*';
   else { try { const u = new URL(origin); if (/^https?:$/.test(u.protocol)) api = u.origin; } catch { api = ''; } }
+  const locks = list(q, 'lock', (s) => /^[a-z]{2}-[A-Za-z0-9_]{1,40}(:-?[0-9.]+(e-?[0-9]+)?)?$/.test(s));
+  const values = {};
+  for (const l of locks) {
+    const [k, v] = l.split(':');
+    if (v !== undefined && Number.isFinite(Number(v))) values[k] = Number(v);
+  }
   return {
     panels: panels.length ? panels : null,
-    lock: list(q, 'lock', (s) => /^[a-z]{2}-[A-Za-z0-9_]{1,40}$/.test(s)),
+    lock: locks.map((l) => l.split(':')[0]),
+    values,
     hide: list(q, 'hide', (s) => s in HIDE),
     lang: STRINGS[q.get('lang')] ? q.get('lang') : '',
     preset: /^[A-Za-z0-9_./:-]{1,120}$/.test(q.get('preset') || '') ? q.get('preset') : '',
@@ -58,13 +67,24 @@ export const config = () => structuredClone(cfg);
 export function hashSuffix(c = cfg) {
   const q = new URLSearchParams();
   if (c.panels) q.set('panels', c.panels.join(','));
-  if (c.lock.length) q.set('lock', c.lock.join(','));
+  if (c.lock.length) q.set('lock', c.lock.map((k) => (k in c.values ? k + ':' + c.values[k] : k)).join(','));
   if (c.hide.length) q.set('hide', c.hide.join(','));
   if (c.lang) q.set('lang', c.lang);
   if (c.preset) q.set('preset', c.preset);
   if (c.api) q.set('api', c.api);
   const s = q.toString();
   return s ? '&' + s : '';
+}
+
+/** Sets the values `lock=key:value` names on a state (before it is rendered); returns it. */
+export function lockValues(state) {
+  for (const [key, v] of Object.entries(cfg.values)) {
+    const [kind, name] = [key.slice(0, 2), key.slice(3)];
+    if (kind === 'mp') state.params[name] = v;
+    else if (kind === 'fp' && state.plant && name in state.plant) state.plant[name] = v;
+    else if (kind === 'pt' && name in state.pert) state.pert[name] = Math.max(-50, Math.min(50, v));
+  }
+  return state;
 }
 
 function panelNode(id) {

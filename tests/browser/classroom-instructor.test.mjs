@@ -67,6 +67,19 @@ test('instructor parameters: panels, locked control, hidden numbers with Reveal,
   await page.close();
 });
 
+test('instructor parameters: lock=key:value sets the value and locks the control', async () => {
+  const { page, log } = await H.open(browser.ctx, U.encodeHash(st(), true) + '&lock=mp-lambda:0.9,fp-theta:0.7');
+  const s = await page.evaluate(() => window.__pidlab.state());
+  assert.equal(s.params.lambda, 0.9);
+  assert.equal(s.plant.theta, 0.7);
+  assert.equal(await page.$eval('#fp-theta-n', (n) => n.disabled && Number(n.value)), 0.7);
+  const an = await page.evaluate(() => window.__pidlab.wasm.analyze(window.__pidlab.inputs()));
+  assert.equal((await page.textContent('#bode-ms')).trim(), S.fmt(an.ms, 3));
+  await page.waitForFunction(() => /lock=mp-lambda%3A0\.9%2Cfp-theta%3A0\.7/.test(location.hash), null, { timeout: 3000 });
+  assert.deepEqual(log.errors, []);
+  await page.close();
+});
+
 test('instructor parameters: start preset; malformed values are ignored', async () => {
   const { page: p0 } = await H.open(browser.ctx);
   const id = await p0.evaluate(() => window.__pidlab.wasm.presets().presets.find((p) => p.tune && p.tune.method && !p.tune.plant).id);
