@@ -8,6 +8,7 @@ import * as E from './engine.js';
 import { $, setText, errText } from './dom.js';
 import { store } from './store.js';
 import { drawSpec, log10, db } from './drawspec.js';
+import * as P from './pins.js';
 
 const C = { s: '#0072B2', t: '#D55E00', cs: '#009E73', ps: '#CC79A7', ref: '#000000', mark: '#E69F00' };
 let memo = { key: '', fr: null, err: null };
@@ -23,6 +24,20 @@ export function currentResponse(r) {
   }
   if (memo.err) throw memo.err;
   return memo.fr;
+}
+
+// freqresp of the pinned designs, by input (a pin's loop does not change while it is pinned)
+const pinMemo = new Map();
+function pinResponse(pin) {
+  const input = { plant: pin.plant, controller: pin.controller };
+  const key = JSON.stringify(input);
+  if (!pinMemo.has(key)) {
+    let fr = null;
+    try { fr = E.call('freqresp', input); } catch { fr = null; }
+    if (pinMemo.size > 12) pinMemo.clear();
+    pinMemo.set(key, fr);
+  }
+  return pinMemo.get(key);
 }
 
 const fmt = (x, d = 3) => (Number.isFinite(x) ? S.fmt(x, d) : '–');
@@ -62,6 +77,12 @@ export function drawBode(r) {
     { label: '|CyS| noise→u', x, y: fr.cs.map(db), color: C.cs, dash: 'dot' },
     { label: '|PS| load→y', x, y: fr.ps.map(db), color: C.ps },
   ];
+  // pinned designs: their |S| faint, in their colours
+  store.state.pins.forEach((pin, i) => {
+    const pr = pinResponse(pin);
+    const run = P.pinned()[i];
+    if (pr && run) gang.push({ label: '|S| ' + run.label, x: pr.w.map(log10), y: pr.s.map(db), color: run.color, faint: true, width: 1.5 });
+  });
   drawSpec({
     canvas: 'plot-bode-gang', kind: 'time', title: 'Gang of four (dB)', xlabel: 'log10 ω', ylabel: 'dB',
     series: gang,

@@ -61,6 +61,12 @@ test('the Bode panel shows exactly the module\'s Ms, Mt and bandwidth, and draws
   assert.match(summary, new RegExp('Mt = ' + fmt(ref.an.mt).replace('.', '\\.')));
   assert.match(summary, /PM = /);
   for (const id of ['plot-bode-gang', 'plot-bode-mag', 'plot-bode-phase']) assert.ok((await coloured(page, id)) > 30, id + ' draws no curve');
+  // a pinned design adds its |S| to the gang of four (its curve and legend entry change the image)
+  const pixels = () => page.evaluate(() => document.getElementById('plot-bode-gang').toDataURL());
+  const before = await pixels();
+  await page.click('#pin');
+  await H.frames(page);
+  assert.notEqual(await pixels(), before, 'the pinned design is drawn in the gang of four');
   // the text alternative follows the design: a faster λ raises Ms and the summary says so
   await page.evaluate(() => { location.hash = ''; });
   await page.goto(H.pageUrl + U.encodeHash(ifoptd(0.3)));
