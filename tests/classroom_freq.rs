@@ -233,10 +233,11 @@ fn freqresp_curves_are_their_definitions_and_the_marks_lie_on_them() {
             l.arg()
         );
     }
-    // continuous phase: steps of at most 5° of the rational part plus ωθ·Δ of the delay
+    // continuous phase: steps of at most 30° of the rational part (the grid's turn limit) plus
+    // ωθ·Δ of the delay
     for k in 1..r.w.len() {
         let dd = (r.w[k] - r.w[k - 1]) * p.delay;
-        assert!((r.l_phase[k] - r.l_phase[k - 1]).abs() <= 5.0 + dd.to_degrees() + 1e-9);
+        assert!((r.l_phase[k] - r.l_phase[k - 1]).abs() <= 30.0 + dd.to_degrees() + 1e-9);
     }
     // low-frequency branch of an integrating loop with a PI-type controller: two integrators
     assert!((r.l_phase[0] + 180.0).abs() < 10.0, "{}", r.l_phase[0]);
@@ -268,8 +269,9 @@ fn freqresp_is_dense_at_a_resonance_and_finds_its_peak() {
             pp.norm() / (1.0 + c.cy.eval_jw(w) * pp).norm()
         })
         .fold(0.0, f64::max);
-    // the adaptive grid keeps neighbours within 0.02 decade (4.7 %) of each other in every
-    // magnitude, so the sampled peak is within that of the true one
+    // the adaptive grid keeps every midpoint within 0.005 decade of its neighbours' chord in
+    // every magnitude, which bounds curvature·spacing²; near a quadratic peak the best sample
+    // then misses the top by about that much, well inside the 0.02 decade (4.7 %) allowed
     assert!(
         peak <= dense * (1.0 + 1e-9) && peak >= dense / 10f64.powf(0.02),
         "{peak} {dense}"

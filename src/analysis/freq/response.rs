@@ -2,14 +2,15 @@
 //! measurement noise → u, `|PS|`: load at the plant input → y) and `L(jω)` in magnitude and
 //! unwrapped phase, all with the exact `e^{−jωθ}` (no Padé), on an adaptive grid.
 //!
-//! The grid starts at 20 points per decade and is refined breadth-first (every interval that
-//! fails is halved in log ω, pass after pass, so a point cap thins the whole curve evenly rather
-//! than cutting it off) until, between neighbours, no magnitude changes by more than 0.02
-//! decade (≈ 4.7 %), the phase of the rational part of `L` by more than 5°, and `L` moves by
-//! no more than a tenth of its distance to −1 (the criterion of the Ms sweep: it resolves the
-//! peaks of |S| and |T|). Resonances of the plant or the controller are found by the first two,
-//! the closed-loop peaks by the third. The frequencies where [`super::analyze`] reads Ms, Mt,
-//! the margins and the bandwidth are inserted into the grid, so the marks lie on the curves.
+//! The grid starts at 20 points per decade and is refined breadth-first (every interval whose
+//! midpoint in log ω is needed is halved, pass after pass, so a point cap thins the whole curve
+//! evenly rather than cutting it off). A midpoint is needed where a curve bends: a magnitude
+//! more than 0.005 decade off the straight line between the neighbours in the log-log plot, the
+//! phase of `L`'s rational part more than 1° off its line (or turning by more than 30° across
+//! the interval), or `L` moving by more than a tenth of its distance to −1 (the criterion of
+//! the Ms sweep). So the points gather at peaks and resonances and stay sparse along the
+//! asymptotes. The frequencies where [`super::analyze`] reads Ms, Mt, the margins and the
+//! bandwidth are inserted into the grid, so the marks lie on the curves.
 
 use super::sweep::char_freqs;
 use super::{analyze, Analysis, LoopTf};
@@ -88,32 +89,38 @@ fn point(lt: &LoopTf, plant: &Plant, c: &Controller, w: f64) -> Point {
     }
 }
 
-/// True when the interval between `a` and `b` needs a point between them.
-fn too_coarse(a: &Point, b: &Point) -> bool {
-    let dlog = |x: f64, y: f64| {
-        if x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite() {
-            (x / y).log10().abs()
-        } else {
-            0.0
-        }
-    };
+/// True when the midpoint `m` (in log ω) of the interval from `a` to `b` is needed: a curve
+/// bends there (a magnitude is more than 0.005 decade, ≈ 1.2 %, off the straight line between
+/// its neighbours in the log-log plot, or the phase of `L`'s rational part more than 1° off its
+/// straight line, or turns by more than 30° across the interval), or `L` moves by more than a
+/// tenth of its distance to −1 (the criterion of the Ms sweep, which resolves the peaks of |S|
+/// and |T|). Straight stretches (asymptotes) therefore stay sparse.
+fn needs_mid(a: &Point, m: &Point, b: &Point) -> bool {
+    let lg = |x: f64| (x > 0.0 && x.is_finite()).then(|| x.log10());
     let mags = [
-        (a.s, b.s),
-        (a.t, b.t),
-        (a.cs, b.cs),
-        (a.ps, b.ps),
-        (a.l.norm(), b.l.norm()),
+        (a.s, m.s, b.s),
+        (a.t, m.t, b.t),
+        (a.cs, m.cs, b.cs),
+        (a.ps, m.ps, b.ps),
+        (a.l.norm(), m.l.norm(), b.l.norm()),
     ];
-    if mags.iter().any(|&(x, y)| dlog(x, y) > 0.02) {
-        return true;
+    for (x, y, z) in mags {
+        if let (Some(x), Some(y), Some(z)) = (lg(x), lg(y), lg(z)) {
+            if (y - 0.5 * (x + z)).abs() > 0.005 {
+                return true;
+            }
+        }
     }
-    let dphase = (b.lrat / a.lrat).arg().abs();
-    if dphase.is_finite() && dphase > 5f64.to_radians() {
+    let (d1, d2) = ((m.lrat / a.lrat).arg(), (b.lrat / m.lrat).arg());
+    if d1.is_finite()
+        && d2.is_finite()
+        && (0.5 * (d1 - d2).abs() > 1f64.to_radians() || (d1 + d2).abs() > 30f64.to_radians())
+    {
         return true;
     }
     let d = (b.l - a.l).norm();
-    let m = (1.0 + a.l).norm().min((1.0 + b.l).norm());
-    d.is_finite() && d > 0.1 * m.max(1e-9)
+    let dist = (1.0 + a.l).norm().min((1.0 + b.l).norm());
+    d.is_finite() && d > 0.1 * dist.max(1e-9)
 }
 
 /// The gang of four and `L(jω)` on an adaptive grid (see the module docs), with the analysis
@@ -163,17 +170,16 @@ pub fn freqresp(plant: &Plant, c: &Controller, opt: FreqOptions) -> Result<FreqR
         let budget = cap.saturating_sub(pts.len());
         let mut it = pts.into_iter().peekable();
         while let Some(a) = it.next() {
-            let split = match it.peek() {
-                Some(b) => added < budget && too_coarse(&a, b),
-                None => false,
+            let mid = match it.peek() {
+                Some(b) if added < budget => {
+                    let m = point(&lt, plant, c, (a.w * b.w).sqrt());
+                    needs_mid(&a, &m, b).then_some(m)
+                }
+                _ => None,
             };
-            let mid = split.then(|| {
-                let b = it.peek().map(|b| b.w).unwrap_or(a.w);
-                (a.w * b).sqrt()
-            });
             out.push(a);
-            if let Some(wm) = mid {
-                out.push(point(&lt, plant, c, wm));
+            if let Some(m) = mid {
+                out.push(m);
                 added += 1;
             }
         }
