@@ -53,6 +53,15 @@ export function summary(m) {
   return (m.stable ? 'Stable loop. ' : 'Unstable loop. ') + parts.join('; ') + '.';
 }
 
+/** The dB range of the gang of four: from 60 dB below its highest point (the peaks are what
+ *  matter; the asymptotes fall without bound) to 6 dB above it. */
+function gangRange(series) {
+  let hi = -Infinity;
+  for (const sr of series) for (const v of sr.y) if (v !== null && v > hi) hi = v;
+  if (!Number.isFinite(hi)) return null;
+  return [hi - 60, hi + 6];
+}
+
 /** Draws the panel for a render's results. */
 export function drawBode(r) {
   const box = $('bode');
@@ -86,7 +95,8 @@ export function drawBode(r) {
   drawSpec({
     canvas: 'plot-bode-gang', kind: 'time', title: 'Gang of four (dB)', xlabel: 'log10 ω', ylabel: 'dB',
     series: gang,
-    points: [...pt(m.w_ms, m.ms, 'Ms ' + fmt(m.ms), C.s), ...pt(m.w_mt, m.mt, 'Mt ' + fmt(m.mt), C.t)],
+    points: [...pt(m.w_ms, m.ms, 'Ms', C.s), ...pt(m.w_mt, m.mt, 'Mt', C.t)],
+    yrange: gangRange(gang),
     vlines: Number.isFinite(m.bandwidth) ? [{ x: Math.log10(m.bandwidth), label: 'ω_bw', color: '#999999' }] : [],
   });
   const lmag = fr.l_mag.map(db);
