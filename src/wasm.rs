@@ -179,3 +179,21 @@ pub fn export_code(input: JsValue) -> Result<JsValue, JsError> {
 pub fn identify(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::identify)
 }
+
+/// `freqresp({plant, controller, w_min?, w_max?, max_points?})`: gang of four and L(jω).
+#[wasm_bindgen]
+pub fn freqresp(input: JsValue) -> Result<JsValue, JsError> {
+    call(input, api::freqresp)
+}
+
+/// `sweep({method, plant, params?, param?, points?, range?, values?, scenario})`.
+#[wasm_bindgen]
+pub fn sweep(input: JsValue) -> Result<JsValue, JsError> {
+    call(input, api::sweep)
+}
+
+/// `sweep_grid({method, plant, param?, points?, range?})`: the values `sweep` steps through.
+#[wasm_bindgen]
+pub fn sweep_grid(input: JsValue) -> Result<JsValue, JsError> {
+    call(input, api::sweep_grid)
+}

@@ -18,6 +18,10 @@ import { showMetrics } from './table.js';
 import { showController } from './design.js';
 import { buildExport } from './export.js';
 import * as Id from './identify.js';
+import { drawBode } from './bode.js';
+import * as I from './instructor.js';
+import * as Api from './embed-api.js';
+import { updateSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeoff.js';
 
 /** Builds every control from the state. */
 function buildAll() {
@@ -28,6 +32,7 @@ function buildAll() {
   Pr.showPresetInfo();
   Sh.buildEmbedChoices();
   Sh.applyEmbed();
+  I.apply();
 }
 
 /** The banners of calls that crashed the module (a trap) since the last render. */
@@ -38,6 +43,21 @@ function crashBanners() {
     title: 'The computation module crashed',
     text: c.message + '. Its results are missing here; the next change computes again. (A Rust panic\'s file and line are in the browser console.)',
   }));
+}
+
+/** The frequency-response and trade-off panels (issue 16): failures there are banners too. */
+function drawClassroom(r) {
+  try {
+    drawBode(r);
+    const env = $('envelope-summary');
+    env.hidden = !r.envelope;
+    if (r.envelope) env.textContent = 'Nyquist plot: the orange band is L for every plant in the box ±(the perturbation sliders); its closest approach to −1 gives a worst-case Ms of ' + (Number.isFinite(r.envelope.worstMs) ? S.fmt(r.envelope.worstMs, 3) : '∞ (it reaches −1: some plant in the box is unstable or at the limit)') + '.';
+    updateSweep();
+    drawTradeoff(r);
+    Api.notify();
+  } catch (e) {
+    showBanners([...r.banners, { kind: 'warn', title: 'Frequency panels', text: errText(e) }]);
+  }
 }
 
 /** Computes the state and shows the results. */
@@ -52,8 +72,10 @@ function render() {
     const t1 = performance.now();
     drawPlots(r);
     const t2 = lap('plots', t1);
+    drawClassroom(r);
     showMetrics(r);
     showController(r);
+    I.afterRender();
     lap('tables', t2);
     const crashed = crashBanners();
     if (crashed.length) showBanners([...crashed, ...r.banners]);
@@ -137,14 +159,23 @@ async function main() {
     return;
   }
   connect({ render, rebuild: () => { buildAll(); changed(); } });
+  onSweepProgress(() => { if (store.last) drawTradeoff(store.last); });
   // A restart that had to wait: say so; the next change computes (not the input that trapped).
   E.onRestart(() => showBanners([{ kind: 'warn', title: 'The computation module has been restarted', text: 'Change any input to compute again.' }]));
   const q = new URLSearchParams(location.search);
   const dec = U.decodeHash(location.hash);
+  const ins = I.init(location.hash);
   store.embed = dec.embed || q.has('embed');
   if (dec.state) store.state = dec.state;
   $('loading').hidden = true;
   Pr.buildPresets();
+  // instructor mode: start from a preset when the hash carries no state
+  if (!dec.state && ins.preset && store.presets.some((p) => p.id === ins.preset)) {
+    $('preset').value = ins.preset;
+    $('preset').dispatchEvent(new Event('change'));
+  }
+  // instructor mode: the values of `lock=key:value`, checked like a URL's state
+  if (Object.keys(ins.values).length) store.state = S.cleanState(I.lockValues(store.state));
   buildAll();
   buildExport(store.exportTargets);
   P.refreshPins();
@@ -158,11 +189,14 @@ async function main() {
     inputs: () => (store.last && store.last.ctl ? { plant: store.state.plant, controller: S.controllerOf(store.last.ctl) } : null),
     perf,
     fmt: S.fmt,
+    sweep: sweepState,
+    api: Api.stats,
     ready: true,
   };
   // The browser tests' hooks, with #test=1 only: make the live instance trap like a dead one.
   if (dec.test) window.__pidlabTest = { forceTrap: E.forceTrap, generation: E.generation, spareReady: E.spareReady };
   render();
+  Api.start(ins.api);
   document.body.setAttribute('data-ready', '1');
 }
 

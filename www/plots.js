@@ -7,6 +7,7 @@ import { store } from './store.js';
 import { lap } from './perf.js';
 import * as P from './pins.js';
 import { showBanners } from './readouts.js';
+import { envelope } from './envelope.js';
 
 const C_CUR = P.COLORS.current;
 const C_REF = P.COLORS.reference;
@@ -134,6 +135,7 @@ const boundary = { asObject: false };
 const drawn = new Map();
 function plot(spec) {
   const c = $(spec.canvas);
+  if (c && c.closest('[hidden]')) return; // a panel the instructor mode hides (issue 16)
   try {
     const t0 = performance.now();
     const text = specText(spec);
@@ -231,6 +233,9 @@ export function drawPlots(r) {
       ny.push({ label: '', x: L.re, y: L.im.map((v) => -v), color: C_CUR, dash: 'dot', faint: true, width: 1.5 });
       ny.push({ label: 'L(jω)' + (pins.length ? ' (current design)' : ''), x: L.re, y: L.im, color: C_CUR });
     }
+    const env = envelope(state.plant, r.ctl.cy, state.pert, '#E69F00'); // issue 16
+    r.envelope = env;
+    if (env) ny.unshift(env.series);
     r.L = L;
     if (r.an && Number.isFinite(r.an.ms) && r.an.ms > 0) circle = { cx: -1, cy: 0, r: 1 / r.an.ms, label: 'Ms circle, r = 1/Ms', color: '#D55E00' };
   }

@@ -4,6 +4,7 @@ import * as U from './url.js';
 import { $, el } from './dom.js';
 import { store } from './store.js';
 import * as P from './pins.js';
+import { hashSuffix } from './instructor.js';
 
 const timers = { hash: 0 };
 
@@ -11,7 +12,7 @@ const timers = { hash: 0 };
 export function saveHashSoon() {
   clearTimeout(timers.hash);
   timers.hash = setTimeout(() => {
-    const h = U.encodeHash(store.state, store.embed);
+    const h = U.encodeHash(store.state, store.embed) + hashSuffix();
     if (location.hash !== h) history.replaceState(null, '', h);
   }, 400);
 }
@@ -22,7 +23,7 @@ function baseUrl() {
 
 /** Shows the link (kind 'link') or the embed code ('embed') of the state and copies it. */
 export async function share(kind) {
-  const url = baseUrl() + U.encodeHash(store.state, kind === 'embed');
+  const url = baseUrl() + U.encodeHash(store.state, kind === 'embed') + hashSuffix();
   const text = kind === 'embed'
     ? '<iframe src="' + url.replace(/&/g, '&amp;').replace(/"/g, '&quot;') + '" title="pidlab: PID tuning" width="100%" height="760" style="border:0" loading="lazy"></iframe>'
     : url;

@@ -672,3 +672,65 @@ pub fn real_loop(
     }
     Ok(rl)
 }
+
+/// `freqresp` input (issue 16).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FreqrespIn {
+    /// Plant ([`plant`]).
+    #[serde(default)]
+    pub plant: Value,
+    /// Controller ([`controller`]).
+    #[serde(default)]
+    pub controller: Value,
+    /// Lowest frequency.
+    #[serde(default)]
+    pub w_min: Option<f64>,
+    /// Highest frequency.
+    #[serde(default)]
+    pub w_max: Option<f64>,
+    /// Point cap (an integer in [50, 100000]).
+    #[serde(default)]
+    pub max_points: Option<f64>,
+}
+
+/// `sweep` and `sweep_grid` input (issue 16).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepIn {
+    /// Method id.
+    pub method: String,
+    /// Plant ([`plant`]).
+    #[serde(default)]
+    pub plant: Value,
+    /// The other parameters (the swept one, if given here, is replaced).
+    #[serde(default)]
+    pub params: Option<BTreeMap<String, ParamIn>>,
+    /// The parameter to step (default: the rule's first numeric one).
+    #[serde(default)]
+    pub param: Option<String>,
+    /// Number of values (default 40), when `values` is absent.
+    #[serde(default)]
+    pub points: Option<f64>,
+    /// The interval to step over, inside the declared one (default: the admissible interval).
+    #[serde(default)]
+    pub range: Option<[f64; 2]>,
+    /// Explicit values (instead of `points`/`range`).
+    #[serde(default)]
+    pub values: Option<Vec<f64>>,
+    /// Scenario (`sweep` only; [`scenario`]).
+    #[serde(default)]
+    pub scenario: Value,
+}
+
+/// A count given as a JSON number: an integer in `[lo, hi]`; errors name `path`.
+pub fn count(x: f64, path: &str, lo: usize, hi: usize) -> Result<usize> {
+    if x.is_finite() && x.fract() == 0.0 && x >= lo as f64 && x <= hi as f64 {
+        Ok(x as usize)
+    } else {
+        Err(Error::new(
+            path,
+            format!("must be an integer in [{lo}, {hi}] (got {x})"),
+        ))
+    }
+}

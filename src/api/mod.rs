@@ -151,6 +151,8 @@ pub fn analysis_json(a: &Analysis) -> Value {
         "stable": a.stable, "verdict": a.verdict,
         "rhp_closed_loop": a.rhp_closed_loop, "rhp_open_loop": a.rhp_open_loop,
         "ms": num_or_null(a.ms), "w_ms": num_or_null(a.w_ms), "ms_at_infinity": a.ms_at_infinity,
+        "mt": num_or_null(a.mt), "w_mt": num_or_null(a.w_mt), "mt_at_infinity": a.mt_at_infinity,
+        "bandwidth": num_or_null(a.bandwidth),
         "l_inf": if a.l_inf.is_finite() { json!(a.l_inf) } else { Value::Null },
         "ill_posed": !a.l_inf.is_finite(),
         "gm": num_or_null(a.gm), "w_pc": num_or_null(a.w_pc),
@@ -352,4 +354,111 @@ pub fn analyze(input: &Value) -> Result<Value> {
 /// API.md: `{text, filename}` (see [`export::export`]).
 pub fn export(input: &Value) -> Result<Value> {
     export::export(input)
+}
+
+// ------------------------------------------------------------------------------------------
+// Issue 16: the frequency response for the Bode panel, and trade-off sweeps.
+
+/// `freqresp({plant, controller, w_min?, w_max?, max_points?})`: the gang of four and `L(jω)`
+/// on an adaptive grid with the exact delay, and where the analysis reads its numbers
+/// (docs/API.md).
+pub fn freqresp(input: &Value) -> Result<Value> {
+    use crate::analysis::freq::{freqresp as fr, FreqOptions};
+    let inp: input::FreqrespIn = from_json(input, "")?;
+    let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
+    let c = input::controller(
+        input::required(&inp.controller, "controller")?,
+        "controller",
+    )?;
+    let mut opt = FreqOptions::default();
+    for (v, name) in [(inp.w_min, "w_min"), (inp.w_max, "w_max")] {
+        if let Some(x) = v {
+            if !(x.is_finite() && x > 0.0) {
+                return Err(Error::new(
+                    name,
+                    format!("must be finite and > 0 (got {x})"),
+                ));
+            }
+        }
+    }
+    opt.w_min = inp.w_min;
+    opt.w_max = inp.w_max;
+    if let Some(n) = inp.max_points {
+        opt.max_points = input::count(n, "max_points", 50, 100_000)?;
+    }
+    let r = fr(&plant, &c, opt).map_err(|e| {
+        // FreqOptions errors name `options.w_*`; the JSON fields are top-level
+        Error::new(e.path.trim_start_matches("options."), e.message)
+    })?;
+    let a = &r.analysis;
+    Ok(json!({
+        "w": r.w, "s": r.s, "t": r.t, "cs": r.cs, "ps": r.ps,
+        "l_mag": r.l_mag, "l_phase": r.l_phase,
+        "marks": {
+            "stable": a.stable,
+            "ms": num_or_null(a.ms), "w_ms": num_or_null(a.w_ms),
+            "mt": num_or_null(a.mt), "w_mt": num_or_null(a.w_mt),
+            "gm": num_or_null(a.gm), "w_pc": num_or_null(a.w_pc),
+            "pm": num_or_null(a.pm), "w_gc": num_or_null(a.w_gc),
+            "bandwidth": num_or_null(a.bandwidth),
+        },
+    }))
+}
+
+/// The sweep's method, plant, parameter and values from a [`input::SweepIn`].
+fn sweep_setup(inp: &input::SweepIn) -> Result<(Plant, String, Vec<f64>)> {
+    let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
+    if inp.values.is_some() && (inp.points.is_some() || inp.range.is_some()) {
+        return Err(Error::new(
+            "values",
+            "give either values or points/range, not both",
+        ));
+    }
+    if let Some(v) = &inp.values {
+        let (name, _) =
+            rules::sweep::sweep_grid(&inp.method, &plant, inp.param.as_deref(), None, 1)?;
+        return Ok((plant, name, v.clone()));
+    }
+    let n = match inp.points {
+        Some(x) => input::count(x, "points", 1, rules::sweep::MAX_POINTS)?,
+        None => 40,
+    };
+    let range = inp.range.map(|[a, b]| (a, b));
+    let (name, values) =
+        rules::sweep::sweep_grid(&inp.method, &plant, inp.param.as_deref(), range, n)?;
+    Ok((plant, name, values))
+}
+
+/// `sweep_grid({method, plant, param?, points?, range?})` → `{param, values}`: the values a
+/// `sweep` takes (for a page that runs the sweep in slices).
+pub fn sweep_grid(input: &Value) -> Result<Value> {
+    let inp: input::SweepIn = from_json(input, "")?;
+    if !inp.scenario.is_null() {
+        return Err(Error::new("scenario", "belongs to sweep, not sweep_grid"));
+    }
+    let (_, param, values) = sweep_setup(&inp)?;
+    Ok(json!({ "param": param, "values": values }))
+}
+
+/// `sweep({method, plant, params?, param?, points?|range?|values?, scenario})`: the rule's
+/// parameter stepped, each point tuned, simulated and analyzed (docs/API.md).
+pub fn sweep(input: &Value) -> Result<Value> {
+    let inp: input::SweepIn = from_json(input, "")?;
+    let (plant, param, values) = sweep_setup(&inp)?;
+    let sc = input::scenario(input::required(&inp.scenario, "scenario")?, "scenario")?;
+    let base = input::params(&inp.params);
+    let r = rules::sweep::sweep(&inp.method, &plant, &base, Some(&param), &values, &sc)?;
+    let pts: Vec<Value> = r
+        .points
+        .iter()
+        .map(|p| {
+            json!({
+                "value": p.value, "error": p.error, "stable": p.stable,
+                "ms": num_or_null(p.ms), "mt": num_or_null(p.mt),
+                "iae_servo": num_or_null(p.iae_servo), "iae_load": num_or_null(p.iae_load),
+                "tv_servo": num_or_null(p.tv_servo), "tv_load": num_or_null(p.tv_load),
+            })
+        })
+        .collect();
+    Ok(json!({ "method": inp.method, "param": r.param, "points": pts }))
 }

@@ -26,6 +26,7 @@ pub mod kaya2020;
 pub mod medarametla_manimozhi2018;
 pub mod praveen_kumar_narayana;
 pub mod shamsuzzoha_lee2008;
+pub mod sweep;
 
 /// What `methods()` lists for one rule (API.md `MethodInfo`).
 #[derive(Debug, Clone, Serialize, PartialEq)]

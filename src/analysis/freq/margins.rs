@@ -21,7 +21,7 @@ pub(super) fn ms_supremum(l: &LoopTf, sweep: &Sweep, lim: &MsLimits) -> MsSup {
     let s_mag = |w: f64| 1.0 / (1.0 + l.at(w)).norm();
     let mut best = (lim.zero, None::<f64>);
     for samples in [&sweep.samples, &sweep.tail_samples] {
-        raise_to_peaks(&s_mag, samples, &mut best);
+        raise_to_peaks(&s_mag, &|z: C64| 1.0 / (1.0 + z).norm(), samples, &mut best);
     }
     let mut at_infinity = false;
     if lim.inf >= best.0 {
@@ -40,18 +40,17 @@ pub(super) fn ms_supremum(l: &LoopTf, sweep: &Sweep, lim: &MsLimits) -> MsSup {
     }
 }
 
-/// Raises `best` (|S|, ω) to the largest of the eight highest local maxima of `|S|` on
+/// Raises `best` (value, ω) to the largest of the eight highest local maxima of a closed-loop
+/// magnitude (`s_mag` of ω, `of_l` the same as a function of `L`; |S| for Ms, |T| for Mt) on
 /// `samples`, each refined by golden-section search between its neighbours, and the largest
 /// sample itself.
-fn raise_to_peaks(
+pub(super) fn raise_to_peaks(
     s_mag: &impl Fn(f64) -> f64,
+    of_l: &impl Fn(C64) -> f64,
     samples: &[(f64, C64)],
     best: &mut (f64, Option<f64>),
 ) {
-    let mags: Vec<f64> = samples
-        .iter()
-        .map(|(_, z)| 1.0 / (1.0 + z).norm())
-        .collect();
+    let mags: Vec<f64> = samples.iter().map(|(_, z)| of_l(*z)).collect();
     let mut cands: Vec<usize> = (1..mags.len().saturating_sub(1))
         .filter(|&i| mags[i] >= mags[i - 1] && mags[i] >= mags[i + 1])
         .collect();

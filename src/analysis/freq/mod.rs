@@ -28,12 +28,16 @@ use crate::model::plant::Plant;
 use crate::model::poly::C64;
 use crate::model::tf::Tf;
 
+mod closed;
 mod margins;
+mod response;
 mod solve;
 mod stability;
 mod sweep;
 
+use closed::{bandwidth, mt_supremum};
 use margins::{margins, ms_supremum};
+pub use response::{freqresp, FreqOptions, FreqResponse};
 pub use solve::solve_for_ms;
 use stability::stability;
 use sweep::{Band, Sweep};
@@ -57,6 +61,16 @@ pub struct Analysis {
     pub ms_at_infinity: bool,
     /// |L(j∞)| (0 for strictly proper loops; infinite for improper ones).
     pub l_inf: f64,
+    /// Peak of the complementary sensitivity, sup over ω of `|T(jω)| = |L/(1 + L)|` including
+    /// the ω → 0 and ω → ∞ limits (None when the loop is ill-posed or neutral-unstable).
+    pub mt: Option<f64>,
+    /// Frequency of Mt; None when it is a limit (ω → 0 or ω → ∞).
+    pub w_mt: Option<f64>,
+    /// True when Mt is the high-frequency limit.
+    pub mt_at_infinity: bool,
+    /// Sensitivity bandwidth: the first ω where `|S(jω)|` rises through 1/√2 (None when it
+    /// never does, or the loop is ill-posed).
+    pub bandwidth: Option<f64>,
     /// Upper gain margin (factor), None if the gain can grow without bound.
     pub gm: Option<f64>,
     /// Phase-crossover frequency of `gm` (None if it is the ω → ∞ limit).
@@ -156,6 +170,7 @@ fn analyze_feedback(plant: &Plant, c: &Controller) -> Result<Analysis> {
     }
     let sweep = Sweep::run(&l, &band, &hf, &lim);
     let ms = ms_supremum(&l, &sweep, &lim);
+    let mt = mt_supremum(&l, &sweep, &hf);
     let m = margins(&l, &sweep, &band, &hf);
     let st = stability(&l, c, &band, &hf, sweep.truncated);
     Ok(Analysis {
@@ -167,6 +182,10 @@ fn analyze_feedback(plant: &Plant, c: &Controller) -> Result<Analysis> {
         w_ms: ms.w_ms,
         ms_at_infinity: ms.at_infinity,
         l_inf: hf.l_inf,
+        mt: mt.mt,
+        w_mt: mt.w_mt,
+        mt_at_infinity: mt.at_infinity,
+        bandwidth: bandwidth(&l, &sweep),
         gm: m.gm,
         w_pc: m.w_pc,
         gm_lower: m.gm_lower,
@@ -193,6 +212,10 @@ impl Analysis {
             w_ms: None,
             ms_at_infinity: false,
             l_inf: 0.0,
+            mt: None,
+            w_mt: None,
+            mt_at_infinity: false,
+            bandwidth: None,
             gm: None,
             w_pc: None,
             gm_lower: None,
@@ -219,6 +242,7 @@ fn no_feedback(plant: &Plant) -> Analysis {
             "stable (no feedback)".into()
         },
         ms: Some(1.0),
+        mt: Some(0.0),
         l_inf: 0.0,
         ..Analysis::blank()
     }

@@ -5,7 +5,7 @@ use super::{HighFreq, LoopTf, MsLimits};
 use crate::model::poly::C64;
 
 /// Characteristic frequencies: magnitudes of the non-zero poles and zeros of L and 1/θ.
-fn char_freqs(l: &LoopTf) -> (f64, f64) {
+pub(super) fn char_freqs(l: &LoopTf) -> (f64, f64) {
     let mut f: Vec<f64> =
         l.lr.num
             .roots()

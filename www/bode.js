@@ -1,0 +1,128 @@
+// The frequency-domain panel: the gang of four |S|, |T|, |CyS| (noise → u), |PS| (load → y)
+// with Ms and Mt marked, and L(jω) in magnitude and phase with the gain and phase margins
+// marked where they are read, all from the module's freqresp() (exact delay, adaptive grid).
+// The x axis is log10 ω (the plot module's axes are linear); magnitudes are in dB. A text
+// summary of the same numbers (#bode-summary, aria-live) is the plots' text alternative.
+import * as S from './state.js';
+import * as E from './engine.js';
+import { $, setText, errText } from './dom.js';
+import { store } from './store.js';
+import { drawSpec, log10, db } from './drawspec.js';
+import * as P from './pins.js';
+
+const C = { s: '#0072B2', t: '#D55E00', cs: '#009E73', ps: '#CC79A7', ref: '#000000', mark: '#E69F00' };
+let memo = { key: '', fr: null, err: null };
+
+/** freqresp() of the current loop (memoized by input); null when there is no controller. */
+export function currentResponse(r) {
+  if (!r || !r.ctl) return null;
+  const input = { plant: store.state.plant, controller: S.controllerOf(r.ctl) };
+  const key = JSON.stringify(input);
+  if (memo.key !== key) {
+    memo = { key, fr: null, err: null };
+    try { memo.fr = E.call('freqresp', input); } catch (e) { memo.err = e; if (e instanceof E.EngineCrash) memo.key = ''; }
+  }
+  if (memo.err) throw memo.err;
+  return memo.fr;
+}
+
+// freqresp of the pinned designs, by input (a pin's loop does not change while it is pinned)
+const pinMemo = new Map();
+function pinResponse(pin) {
+  const input = { plant: pin.plant, controller: pin.controller };
+  const key = JSON.stringify(input);
+  if (!pinMemo.has(key)) {
+    let fr = null;
+    try { fr = E.call('freqresp', input); } catch { fr = null; }
+    if (pinMemo.size > 12) pinMemo.clear();
+    pinMemo.set(key, fr);
+  }
+  return pinMemo.get(key);
+}
+
+const fmt = (x, d = 3) => (Number.isFinite(x) ? S.fmt(x, d) : '–');
+
+/** One line per number the panel marks (the readout and the text alternative). */
+export function summary(m) {
+  const parts = [];
+  parts.push('Ms = ' + fmt(m.ms) + (Number.isFinite(m.w_ms) ? ' at ω = ' + fmt(m.w_ms) : m.ms ? ' (ω → ∞ or 0 limit)' : ''));
+  parts.push('Mt = ' + fmt(m.mt) + (Number.isFinite(m.w_mt) ? ' at ω = ' + fmt(m.w_mt) : ' (limit)'));
+  parts.push('bandwidth (|S| = 1/√2) = ' + fmt(m.bandwidth));
+  parts.push('GM = ' + (Number.isFinite(m.gm) ? fmt(m.gm) + ' (' + fmt(20 * Math.log10(m.gm)) + ' dB) at ω = ' + fmt(m.w_pc) : '∞'));
+  parts.push('PM = ' + (Number.isFinite(m.pm) ? fmt(m.pm) + '° at ω = ' + fmt(m.w_gc) : '–'));
+  return (m.stable ? 'Stable loop. ' : 'Unstable loop. ') + parts.join('; ') + '.';
+}
+
+/** The dB range of the gang of four: from 60 dB below its highest point (the peaks are what
+ *  matter; the asymptotes fall without bound) to 6 dB above it. */
+function gangRange(series) {
+  let hi = -Infinity;
+  for (const sr of series) for (const v of sr.y) if (v !== null && v > hi) hi = v;
+  if (!Number.isFinite(hi)) return null;
+  return [hi - 60, hi + 6];
+}
+
+/** Draws the panel for a render's results. */
+export function drawBode(r) {
+  const box = $('bode');
+  if (!box || box.hidden) return;
+  let fr;
+  try {
+    fr = currentResponse(r);
+  } catch (e) {
+    setText($('bode-summary'), 'No frequency response: ' + errText(e));
+    return;
+  }
+  if (!fr) {
+    setText($('bode-summary'), 'No controller: no frequency response.');
+    return;
+  }
+  const x = fr.w.map(log10);
+  const m = fr.marks;
+  const pt = (w, v, label, color) => (Number.isFinite(w) && Number.isFinite(v) && v > 0 ? [{ x: Math.log10(w), y: 20 * Math.log10(v), label, color }] : []);
+  const gang = [
+    { label: '|S|', x, y: fr.s.map(db), color: C.s },
+    { label: '|T|', x, y: fr.t.map(db), color: C.t, dash: 'dash' },
+    { label: '|CyS| noise→u', x, y: fr.cs.map(db), color: C.cs, dash: 'dot' },
+    { label: '|PS| load→y', x, y: fr.ps.map(db), color: C.ps },
+  ];
+  // pinned designs: their |S| faint, in their colours
+  store.state.pins.forEach((pin, i) => {
+    const pr = pinResponse(pin);
+    const run = P.pinned()[i];
+    if (pr && run) gang.push({ label: '|S| ' + run.label, x: pr.w.map(log10), y: pr.s.map(db), color: run.color, faint: true, width: 1.5 });
+  });
+  drawSpec({
+    canvas: 'plot-bode-gang', kind: 'time', title: 'Gang of four (dB)', xlabel: 'log10 ω', ylabel: 'dB',
+    series: gang,
+    points: [...pt(m.w_ms, m.ms, 'Ms', C.s), ...pt(m.w_mt, m.mt, 'Mt', C.t)],
+    yrange: gangRange(gang),
+    vlines: Number.isFinite(m.bandwidth) ? [{ x: Math.log10(m.bandwidth), label: 'ω_bw', color: '#999999' }] : [],
+  });
+  const lmag = fr.l_mag.map(db);
+  drawSpec({
+    canvas: 'plot-bode-mag', kind: 'time', title: '|L(jω)| (dB)', xlabel: 'log10 ω', ylabel: 'dB',
+    series: [
+      { label: '|L|', x, y: lmag, color: C.s },
+      { label: '0 dB', x: [x[0], x[x.length - 1]], y: [0, 0], color: C.ref, dash: 'dot', width: 1 },
+    ],
+    points: Number.isFinite(m.gm) && Number.isFinite(m.w_pc) ? [{ x: Math.log10(m.w_pc), y: -20 * Math.log10(m.gm), label: 'GM ' + fmt(20 * Math.log10(m.gm)) + ' dB', color: C.mark }] : [],
+    vlines: Number.isFinite(m.w_gc) ? [{ x: Math.log10(m.w_gc), label: 'ω_gc', color: '#999999' }] : [],
+  });
+  // the phase: clipped below −720° (a dead time keeps turning it) so the margins stay readable
+  const lo = -720;
+  const ph = fr.l_phase.map((v) => (v >= lo ? v : null));
+  const pmPt = Number.isFinite(m.pm) && Number.isFinite(m.w_gc) ? [{ x: Math.log10(m.w_gc), y: -180 + m.pm, label: 'PM ' + fmt(m.pm) + '°', color: C.mark }] : [];
+  drawSpec({
+    canvas: 'plot-bode-phase', kind: 'time', title: 'Phase of L(jω) (degrees, exact delay)', xlabel: 'log10 ω', ylabel: 'degrees',
+    series: [
+      { label: '∠L', x, y: ph, color: C.s },
+      { label: '−180°', x: [x[0], x[x.length - 1]], y: [-180, -180], color: C.ref, dash: 'dot', width: 1 },
+    ],
+    points: pmPt,
+    vlines: Number.isFinite(m.w_pc) ? [{ x: Math.log10(m.w_pc), label: 'ω_pc', color: '#999999' }] : [],
+  });
+  const text = summary(m);
+  setText($('bode-summary'), text);
+  for (const [id, v] of [['bode-ms', m.ms], ['bode-mt', m.mt], ['bode-bw', m.bandwidth]]) setText($(id), fmt(v));
+}

@@ -1,0 +1,29 @@
+// Draws one plot spec with the module's plot() on its canvas, sized to the canvas's CSS box
+// times the device pixel ratio, and skips a spec the canvas already shows (the frequency and
+// trade-off panels; plots.js does the same for the time plots).
+import * as E from './engine.js';
+import { $ } from './dom.js';
+
+export const dpr = () => Math.max(1, Math.min(3, window.devicePixelRatio || 1));
+const drawn = new Map();
+
+/** Sizes the canvas and draws `spec` (throws the module's error, e.g. "spec.series[0].y[3]: …"). */
+export function drawSpec(spec) {
+  const c = $(spec.canvas);
+  if (!c) return;
+  const k = dpr();
+  const w = Math.max(60, Math.round(c.clientWidth * k));
+  const h = Math.max(60, Math.round(c.clientHeight * k));
+  if (c.width !== w) c.width = w;
+  if (c.height !== h) c.height = h;
+  const text = JSON.stringify({ ...spec, dpr: k });
+  const key = w + 'x' + h + ' ' + text;
+  if (drawn.get(spec.canvas) === key) return;
+  E.call('plot', text);
+  drawn.set(spec.canvas, key);
+}
+
+/** Decimal logarithm, null (a gap) where undefined. */
+export const log10 = (x) => (x > 0 && Number.isFinite(x) ? Math.log10(x) : null);
+/** Decibels of a magnitude, null (a gap) where undefined. */
+export const db = (x) => (x > 0 && Number.isFinite(x) ? 20 * Math.log10(x) : null);
