@@ -16,6 +16,7 @@ import { drawPlots, watchSizes } from './plots.js';
 import { showBanners, showReadouts } from './readouts.js';
 import { showMetrics } from './table.js';
 import { showController } from './design.js';
+import * as Er from './errors.js';
 
 /** Builds every control from the state. */
 function buildAll() {
@@ -43,8 +44,11 @@ function render() {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
   try {
+    C.updateRanges();
     const r = compute();
     store.last = r;
+    // the module's errors in the user's words, beside the field they are about and in the banner
+    r.banners = Er.route(r.banners);
     showBanners(r.banners);
     showReadouts(r);
     const t1 = performance.now();

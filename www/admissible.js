@@ -1,0 +1,41 @@
+// The interval of each continuous parameter of a rule that is admissible for the plant at hand,
+// with a suggested value inside it: the module's admissible({ method, plant }) (API.md),
+// memoized by input. Where the module has no such function, or it fails for this plant, the
+// ranges methods() declares stand in (null here).
+import * as E from './engine.js';
+
+const memo = new Map(); // JSON of the input -> answer (null when unavailable)
+const MEMO_SIZE = 16;
+
+/** { <name>: { min, max, suggested, scale, minOpen, maxOpen, note } } for the method on the
+ *  plant, or null when the module cannot say. */
+export function admissible(method, plant) {
+  if (!method || method === '__literal' || !plant) return null;
+  const g = E.glue();
+  if (!g || typeof g.admissible !== 'function') return null;
+  const key = JSON.stringify({ method, plant });
+  if (memo.has(key)) return memo.get(key);
+  let out = null;
+  try {
+    const a = E.call('admissible', { method, plant });
+    out = {};
+    for (const [n, p] of Object.entries((a && a.params) || {})) {
+      if (!p || !Number.isFinite(p.min) || !Number.isFinite(p.max) || !(p.max > p.min)) continue;
+      out[n] = {
+        min: p.min,
+        max: p.max,
+        suggested: Number.isFinite(p.suggested) ? p.suggested : null,
+        scale: p.scale === 'log' ? 'log' : 'linear',
+        minOpen: !!p.min_open,
+        maxOpen: !!p.max_open,
+        note: typeof p.note === 'string' ? p.note : '',
+      };
+    }
+  } catch (e) {
+    if (e instanceof E.EngineCrash) return null; // not an answer for this input
+    out = null;
+  }
+  memo.set(key, out);
+  if (memo.size > MEMO_SIZE) memo.delete(memo.keys().next().value);
+  return out;
+}
