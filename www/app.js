@@ -17,6 +17,8 @@ import { showBanners, showReadouts } from './readouts.js';
 import { showMetrics } from './table.js';
 import { showController } from './design.js';
 import * as Er from './errors.js';
+import * as Hi from './history.js';
+import * as XD from './export-data.js';
 
 /** Builds every control from the state. */
 function buildAll() {
@@ -70,6 +72,13 @@ function render() {
   Sh.saveHashSoon();
 }
 
+/** A whole state was put in the store (Back/Forward, a typed URL, reset): show it. */
+function restored() {
+  buildAll();
+  P.refreshPins();
+  changed();
+}
+
 function wire() {
   $('custom-num').addEventListener('input', C.onCustomText);
   $('custom-den').addEventListener('input', C.onCustomText);
@@ -103,18 +112,24 @@ function wire() {
   $('pert-reset').addEventListener('click', () => { store.state.pert = { k: 0, tau: 0, zero: 0, theta: 0 }; C.buildPert(); changed(); });
   $('copy-link').addEventListener('click', () => Sh.share('link'));
   $('copy-embed').addEventListener('click', () => Sh.share('embed'));
-  $('export-csv').addEventListener('click', Sh.exportCsv);
+  $('export-csv').addEventListener('click', XD.exportCsv);
+  $('export-json').addEventListener('click', XD.exportJson);
   $('print-page').addEventListener('click', () => window.print());
-  for (const b of document.querySelectorAll('button.png')) b.addEventListener('click', () => Sh.exportPng(b.getAttribute('data-canvas')));
+  for (const b of document.querySelectorAll('button.png')) b.addEventListener('click', () => XD.exportPng(b.getAttribute('data-canvas'), Number($('png-scale').value)));
   window.addEventListener('hashchange', () => {
     const d = U.decodeHash(location.hash);
     if (d.state && U.encodeHash(d.state, d.embed) !== U.encodeHash(store.state, store.embed)) {
       store.state = d.state;
       store.embed = d.embed || store.embed;
-      buildAll();
-      P.refreshPins();
-      changed();
+      restored();
     }
+  });
+  $('undo').addEventListener('click', Hi.undo);
+  $('redo').addEventListener('click', Hi.redo);
+  $('reset-all').addEventListener('click', () => {
+    store.state = { ...S.defaultState(), pins: store.state.pins };
+    restored();
+    Hi.commit();
   });
   watchSizes(() => changed(true));
 }
@@ -149,6 +164,8 @@ async function main() {
   buildAll();
   P.refreshPins();
   wire();
+  Hi.init(restored);
+  Sh.postHeight();
   // What the tests and the benchmark read (the module itself, the state, the timings).
   window.__pidlab = {
     get wasm() { return E.glue(); },
