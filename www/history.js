@@ -40,7 +40,10 @@ export function init(onRestore) {
     h.index = st.pidlab;
     h.top = Math.max(st.pidlab, typeof st.top === 'number' ? st.top : 0);
   }
-  history.replaceState({ pidlab: h.index, top: h.top }, '', h.current);
+  // the URL stays as it is when it already holds this state (its keys may be in another order)
+  const d = U.decodeHash(location.hash);
+  const same = d.state && U.encodeHash(d.state, d.embed) === h.current;
+  history.replaceState({ pidlab: h.index, top: h.top }, '', same ? location.href : h.current);
   window.addEventListener('popstate', (e) => {
     const s = e.state;
     const d = U.decodeHash(location.hash);
