@@ -71,6 +71,20 @@ export function labelOf(input) {
   return (unit ? l.textContent.replace(unit.textContent, '') : l.textContent).trim();
 }
 
+// Paths no control owns, in words (the controller of a preset, the model loop, the plot).
+const WORDS = [
+  [/^controller\.model_loop\.plant/, 'The controller\'s internal model'],
+  [/^controller\.model_loop/, 'The set-point model loop'],
+  [/^controller\.cr/, 'The set-point path Cr of the controller'],
+  [/^controller\.cy/, 'The feedback path Cy of the controller'],
+  [/^controller/, 'The controller'],
+  [/^plant/, 'The plant'],
+  [/^scenario/, 'The scenario'],
+  [/^params/, 'The method\'s parameters'],
+  [/^spec/, 'The plot'],
+];
+const words = (path) => (WORDS.find(([re]) => re.test(path)) || [null, ''])[1];
+
 const PATH = /^([a-z_][a-z0-9_]*(?:\.[a-z0-9_]+)*): ([\s\S]*)$/i;
 
 /** Splits "params.lambda: must …" into { path, message } (path '' when there is none). */
@@ -88,8 +102,8 @@ export function humanize(text) {
     const c = controlFor(p);
     return c ? labelOf(c) : p;
   });
-  const label = input ? labelOf(input) : '';
-  return { input, label, message: msg, text: (label || (path && !input ? path : '')) ? (label || path) + ': ' + msg : msg };
+  const label = input ? labelOf(input) : path ? words(path) : '';
+  return { input, label, message: msg, text: label ? label + ': ' + msg : msg };
 }
 
 // Field messages: `local` from the page's own checks (kept until the field is edited again),
