@@ -195,6 +195,9 @@ test('a module error is shown beside its field and in the banner, in the label\'
   const id = (await page.getAttribute('#mp-lambda-n', 'aria-describedby')).split(' ').pop();
   const msg = await page.textContent('#' + id);
   assert.ok(msg.length > 10 && b[0].includes(msg.slice(0, 20)), `field: ${msg}; banner: ${b[0]}`);
+  // the banner's button takes the user to the field
+  await page.click('#banners .banner-go');
+  assert.equal(await page.evaluate(() => document.activeElement.id), 'mp-lambda-n');
   // and λ = 1e308 from a link: the banner prints the number in a few digits
   const p2 = await open(U.encodeHash(pkState(1e308)));
   const b2 = (await H.banners(p2.page)).join(' ');
