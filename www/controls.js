@@ -11,14 +11,14 @@ import { store, changed, rebuild, familyInfo, methodInfo } from './store.js';
 const ids = { next: 0 };
 
 /** Positions of a mapped slider (linear or logarithmic) across its range. */
-const POSITIONS = 1000;
+export const POSITIONS = 1000;
 
 /**
  * The ends of a mapped slider for an interval r = { min, max, minOpen, maxOpen, log }: an open
  * end is moved in by 1/POSITIONS of the span (of the logarithmic span on a log scale), so every
  * position of the slider, Home and End included, is an admissible value.
  */
-function sliderEnds(r) {
+export function sliderEnds(r) {
   const f = r.log ? Math.log10 : (x) => x;
   const a = f(r.min), b = f(r.max);
   const d = (b - a) / POSITIONS;
@@ -27,7 +27,7 @@ function sliderEnds(r) {
 
 /** The value at a position (rounded to a tenth of the step between positions there, so the
  *  number box shows a short number that stays strictly inside an open end). */
-function valueAt(r, pos) {
+export function valueAt(r, pos) {
   const { a, b } = sliderEnds(r);
   const x = a + (pos / POSITIONS) * (b - a);
   const v = r.log ? 10 ** x : x;
@@ -41,7 +41,7 @@ function valueAt(r, pos) {
 }
 
 /** The position of a value (clamped to the track: the thumb of a value outside rests at an end). */
-function positionOf(r, v) {
+export function positionOf(r, v) {
   const { a, b } = sliderEnds(r);
   const x = r.log ? Math.log10(Math.max(v, 1e-300)) : v;
   const p = Math.round(((x - a) / (b - a)) * POSITIONS);
