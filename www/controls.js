@@ -132,6 +132,8 @@ export function slider({ id, key, label, unit, min, max, step, value, onInput, d
     if (noteP && x.note !== undefined) noteP.textContent = x.note;
   };
   row.interval = () => iv;
+  // a value from a link or a preset outside the interval: kept, and said beside the field
+  if (!disabled && Number.isFinite(value) && !Er.inRange(value, iv)) Er.setLocal(num, check(value).replace(/; not applied\.$/, '; ' + label + ' = ' + Er.short(value) + ' is outside.'));
   return row;
 }
 
