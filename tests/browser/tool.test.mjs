@@ -75,6 +75,16 @@ test('sliders span the interval admissible for the plant; Home and End land on a
       assert.ok(await drawn(page), `${key}: λ = ${v}: all four plots drawn`);
     }
   }
+  if (adm) {
+    // the plant changes (dead time 0.1 → 0.3): the slider follows the new plant's interval
+    await setInput(page, '#fp-theta-n', 0.3);
+    const a2 = await page.evaluate(() => window.__pidlab.wasm.admissible({ method: 'praveen_kumar', plant: window.__pidlab.state().plant }).params.lambda);
+    const s2 = await sliderOf(page, 'mp-lambda');
+    assert.deepEqual([s2.lo, s2.hi], [a2.min, a2.max]);
+    const v = await page.evaluate(() => window.__pidlab.state().params.lambda);
+    const inside = (a2.min_open ? v > a2.min : v >= a2.min) && (a2.max_open ? v < a2.max : v <= a2.max);
+    assert.equal(await page.getAttribute('#mp-lambda-n', 'aria-invalid') === 'true', !inside, `λ = ${v} marked iff outside (${a2.min}, ${a2.max})`);
+  }
   assert.deepEqual(log.errors, []);
   await page.close();
 });
