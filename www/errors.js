@@ -85,7 +85,8 @@ const WORDS = [
 ];
 const words = (path) => (WORDS.find(([re]) => re.test(path)) || [null, ''])[1];
 
-const PATH = /^([a-z_][a-z0-9_]*(?:\.[a-z0-9_]+)*): ([\s\S]*)$/i;
+// A path begins with one of the API's top-level fields (a verdict such as "unstable: …" is not one).
+const PATH = /^((?:params|plant|scenario|controller|method|spec)(?:\.[a-z0-9_]+)*): ([\s\S]*)$/i;
 
 /** Splits "params.lambda: must …" into { path, message } (path '' when there is none). */
 export function splitPath(text) {
