@@ -47,12 +47,40 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+/// `x` for a message: at most six significant digits, scientific notation outside
+/// [1e-4, 1e6), so that no value (1e308, 1/3) prints a wall of digits.
+pub fn num(x: f64) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return format!("{x}");
+    }
+    let a = x.abs();
+    if (1e-4..1e6).contains(&a) {
+        // Six significant digits, trailing zeros dropped.
+        let decimals = (5 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{x:.decimals$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        let s = format!("{x:.5e}");
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        let m = if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            m
+        };
+        format!("{m}e{e}")
+    }
+}
+
 /// Checks that `x` is finite; the error names `path`.
 pub fn finite(path: &str, x: f64) -> Result<f64> {
     if x.is_finite() {
         Ok(x)
     } else {
-        Err(Error::new(path, format!("must be finite (got {x})")))
+        Err(Error::new(path, format!("must be finite (got {})", num(x))))
     }
 }
 
@@ -63,7 +91,7 @@ pub fn positive(path: &str, x: f64) -> Result<f64> {
     } else {
         Err(Error::new(
             path,
-            format!("must be finite and > 0 (got {x})"),
+            format!("must be finite and > 0 (got {})", num(x)),
         ))
     }
 }
@@ -75,7 +103,7 @@ pub fn non_negative(path: &str, x: f64) -> Result<f64> {
     } else {
         Err(Error::new(
             path,
-            format!("must be finite and >= 0 (got {x})"),
+            format!("must be finite and >= 0 (got {})", num(x)),
         ))
     }
 }
@@ -134,5 +162,18 @@ mod tests {
         let e = unknown_field("scenario", "disturbanse", &c);
         assert_eq!(e.path, "scenario.disturbanse");
         assert!(e.message.contains("did you mean 'disturbance'"));
+    }
+
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn numbers_in_messages_are_short() {
+        assert_eq!(num(1e308), "1e308");
+        assert_eq!(num(-1.5e-7), "-1.5e-7");
+        assert_eq!(num(1.0 / 3.0), "0.333333");
+        assert_eq!(num(1000.0), "1000");
+        assert_eq!(num(0.204375), "0.204375");
+        assert_eq!(num(123456.7), "123457");
+        assert_eq!(num(2.0), "2");
+        assert_eq!(num(0.0), "0");
+        assert_eq!(num(f64::NAN), "NaN");
     }
 }

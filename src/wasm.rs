@@ -122,6 +122,13 @@ pub fn tune(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::tune)
 }
 
+/// `admissible({method, plant, params?})`: the plant-aware interval of each continuous
+/// parameter, with a suggested value.
+#[wasm_bindgen]
+pub fn admissible(input: JsValue) -> Result<JsValue, JsError> {
+    call(input, api::admissible)
+}
+
 /// `simulate({plant, controller, scenario})`.
 #[wasm_bindgen]
 pub fn simulate(input: JsValue) -> Result<JsValue, JsError> {

@@ -212,6 +212,27 @@ pub fn tune(input: &Value) -> Result<Value> {
     }))
 }
 
+/// `admissible({method, plant, params?})`: for the plant at hand, the interval of each
+/// continuous parameter of the method (`{method, params: {<name>: {min, max, min_open,
+/// max_open, min_end, max_end, suggested, scale, ms, note}}}`; see
+/// [`rules::admissible`]). `params` holds the other parameters fixed during each scan (absent:
+/// their defaults); the same validation as `tune`.
+pub fn admissible(input: &Value) -> Result<Value> {
+    let inp: TuneIn = from_json(input, "")?;
+    let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
+    let params = input::params(&inp.params);
+    let ivs = rules::admissible::admissible(&inp.method, &plant, &params)?;
+    let mut m = Map::new();
+    for iv in ivs {
+        let mut v = serde_json::to_value(&iv).unwrap_or(Value::Null);
+        if let Value::Object(o) = &mut v {
+            o.remove("name");
+        }
+        m.insert(iv.name.clone(), v);
+    }
+    Ok(json!({ "method": inp.method, "params": Value::Object(m) }))
+}
+
 /// `reduce({plant, rule})`: Kaya 2020's model reduction of a higher-order plant with one RHP
 /// zero to FOPDT-IR (`rule`: "paper" (default), "taylor", "half_rule").
 pub fn reduce(input: &Value) -> Result<Value> {

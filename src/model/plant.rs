@@ -271,13 +271,20 @@ pub struct FamilyInfo {
 }
 
 /// The page's declaration of one family parameter (`unit_k`: the gain's unit).
-fn family_param(name: &'static str, unit_k: &'static str) -> FamilyParamInfo {
+fn family_param(family: &str, name: &'static str, unit_k: &'static str) -> FamilyParamInfo {
     const TIME: &str = "time units";
+    let unstable = family == "ifoptd_zero_unstable";
     let (label, unit, default, min, max) = match name {
         "k" => ("Gain k", unit_k, 1.0, 0.01, 10.0),
+        // The unstable pole 1/τ must be slow against the dead time for any PID to stabilise
+        // the loop (Medarametla's CSTR: τ/θ ≈ 1100); τ = 5, θ = 0.2 keeps that margin.
+        "tau" if unstable => ("Unstable time constant τ", TIME, 5.0, 0.01, 20.0),
         "tau" => ("Time constant τ", TIME, 1.0, 0.01, 20.0),
         "tau_z" => ("Inverse-response zero τ_z", TIME, 0.5, 0.0, 10.0),
+        // The rule for this family needs z > 0 (Eq. 29 places a pole at −1/z).
+        "z" if unstable => ("Zero z (> 0)", TIME, 2.0, 0.01, 10.0),
         "z" => ("Zero z (z < 0: inverse response)", TIME, -0.5, -10.0, 10.0),
+        "theta" if unstable => ("Dead time θ", TIME, 0.2, 0.0, 10.0),
         _ => ("Dead time θ", TIME, 0.5, 0.0, 10.0),
     };
     FamilyParamInfo {
@@ -339,7 +346,7 @@ pub fn family_infos() -> Vec<FamilyInfo> {
                 title,
                 formula,
                 integrators,
-                params: names.iter().map(|n| family_param(n, unit_k)).collect(),
+                params: names.iter().map(|n| family_param(id, n, unit_k)).collect(),
             }
         })
         .collect()

@@ -127,17 +127,37 @@ pub fn common_denominator(d1: &Poly, d2: &Poly) -> Poly {
     Poly::from_asc(&s_pow).mul(&rest)
 }
 
-/// Numerator of `n/d` rewritten over the common denominator `cd` (which `d` divides).
-fn over(n: &Poly, d: &Poly, cd: &Poly) -> Result<Poly> {
-    let (q, r) = cd.div_rem(d)?;
-    let scale = cd.max_abs().max(1.0);
-    if r.max_abs() > 1e-9 * scale {
-        return Err(Error::new(
-            "den",
-            "internal: common denominator is not a multiple",
-        ));
+/// The common denominator of several denominators (as [`common_denominator`] applied in
+/// turn) and, for each, the polynomial `q_i` with `cd = den_i·q_i`, built from the factors
+/// themselves: no polynomial division, which loses every digit when a denominator's leading
+/// coefficient is small (a set-point filter's 1.3e-6 s⁹ + … gave a remainder of 1e-7·scale).
+pub fn common_denominator_of(dens: &[&Poly]) -> (Poly, Vec<Poly>) {
+    let s_pow = |k: usize| {
+        let mut c = vec![0.0; k + 1];
+        c[k] = 1.0;
+        Poly::from_asc(&c)
+    };
+    let mut cd = dens[0].clone();
+    let mut qs = vec![Poly::from_asc(&[1.0])];
+    for d in &dens[1..] {
+        let (k1, k2) = (cd.zero_root_multiplicity(), d.zero_root_multiplicity());
+        let k = k1.max(k2);
+        let r1 = monic(&cd.shift_down(k1));
+        let r2 = monic(&d.shift_down(k2));
+        // cd = s^k1·r1·lead(cd), d = s^k2·r2·lead(d).
+        let (old_extra, new_extra, rest) = if approx_eq(&r1, &r2) {
+            (Poly::from_asc(&[1.0]), Poly::from_asc(&[1.0]), r1.clone())
+        } else {
+            (r2.clone(), r1.clone(), r1.mul(&r2))
+        };
+        let old_q = s_pow(k - k1).mul(&old_extra).scale(1.0 / cd.leading());
+        for q in qs.iter_mut() {
+            *q = q.mul(&old_q);
+        }
+        qs.push(s_pow(k - k2).mul(&new_extra).scale(1.0 / d.leading()));
+        cd = s_pow(k).mul(&rest);
     }
-    Ok(n.mul(&q))
+    (cd, qs)
 }
 
 impl Controller {
@@ -157,14 +177,12 @@ impl Controller {
 /// ideal-derivative coefficient split off path `i` (a path may be improper by one). Errors
 /// name `<path>.num`.
 pub fn realize_paths(paths: &[(&Tf, &str, f64)]) -> Result<(Ss, Vec<f64>)> {
-    let mut cd = paths[0].0.den.clone();
-    for (t, _, _) in &paths[1..] {
-        cd = common_denominator(&cd, &t.den);
-    }
+    let dens: Vec<&Poly> = paths.iter().map(|(t, _, _)| &t.den).collect();
+    let (cd, quotients) = common_denominator_of(&dens);
     let mut props = Vec::with_capacity(paths.len());
     let mut kds = Vec::with_capacity(paths.len());
-    for (t, path, sign) in paths {
-        let num = over(&t.num, &t.den, &cd).map_err(|e| e.within(path))?;
+    for ((t, path, sign), q) in paths.iter().zip(&quotients) {
+        let num = t.num.mul(q);
         let (q, r) = num.div_rem(&cd)?;
         if q.degree() > 1 {
             return Err(Error::new(
@@ -230,6 +248,51 @@ pub fn balance(a: &DMatrix<f64>) -> DVector<f64> {
 
 #[cfg(test)]
 mod tests {
+    /// The factor-built quotients: `den_i·q_i` equals the common denominator (which is the
+    /// pairwise `common_denominator` fold), including the ill-scaled set-point filter that
+    /// polynomial division could not handle (Medarametla on ifoptd_zero_unstable, λ = 0.2201).
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn common_denominator_quotients_are_exact() {
+        let cr_den = Poly::from_desc(&[
+            1.3373531565792462e-6,
+            1.512694170826241e-4,
+            5.5646814321796976e-3,
+            8.868177822009425e-2,
+            0.6495212123215799,
+            2.3026600308974485,
+            3.993797588139903,
+            3.4970528699051995,
+            1.0,
+            0.0,
+        ]);
+        let cy_den = Poly::from_desc(&[0.03323671851799969, 2.0166183592589646, 1.0, 0.0]);
+        let third = Poly::from_desc(&[2.0, 3.0, 1.0]);
+        let dens = [&cr_den, &cy_den, &third];
+        let (cd, qs) = common_denominator_of(&dens);
+        let fold = common_denominator(&common_denominator(&cr_den, &cy_den), &third);
+        assert!(approx_eq(&cd, &fold));
+        for (d, q) in dens.iter().zip(&qs) {
+            let prod = d.mul(q);
+            let scale = cd.max_abs();
+            for i in 0..=cd.degree() {
+                // Products of coefficients of magnitude ≤ 1e2: round-off ≤ 1e-13 of the scale.
+                assert!((prod.coef(i) - cd.coef(i)).abs() <= 1e-13 * scale, "{i}");
+            }
+        }
+        let c = Controller {
+            cr: Tf {
+                num: Poly::from_desc(&[1.0, 1.0]),
+                den: cr_den.clone(),
+            },
+            cy: Tf {
+                num: Poly::from_desc(&[1.0, 1.0, 1.0]),
+                den: cy_den.clone(),
+            },
+            model_loop: None,
+        };
+        assert!(c.realize().is_ok());
+    }
+
     use super::*;
     use crate::model::controller::Pid;
     use crate::model::poly::C64;

@@ -16,6 +16,7 @@ use crate::model::plant::Plant;
 use crate::sim::Scenario;
 use serde::Serialize;
 
+pub mod admissible;
 mod params;
 pub use params::{ParamDefault, ParamInfo, ParamValue, Params};
 
@@ -53,6 +54,17 @@ pub trait Rule: Send + Sync {
     /// Checks `params` against the declarations (names, kinds, ranges, choices).
     fn validate(&self, params: &Params, info: &MethodInfo) -> Result<()> {
         params.validate(&info.id, &info.params)
+    }
+    /// A narrower range in which to look for the parameter `name`'s admissible interval on
+    /// `plant`, when the rule knows one in closed form (see [`admissible`]); `None`: the
+    /// declared range.
+    fn scan_range(&self, _plant: &Plant, _name: &str) -> Option<(f64, f64)> {
+        None
+    }
+    /// One design takes so long (≳ 10 ms) that [`admissible`] scans this rule's parameters on
+    /// a coarser grid ([`admissible::GRID_SLOW`]).
+    fn slow_to_tune(&self) -> bool {
+        false
     }
 }
 
@@ -218,29 +230,44 @@ pub fn presets() -> Vec<Preset> {
 /// method does not support), `params.*` (unknown names, values outside the declarations), or
 /// the rule's own errors.
 pub fn tune(id: &str, plant: &Plant, params: &Params) -> Result<Tuning> {
-    let rules = registry();
-    let rule = rules.iter().find(|r| r.info().id == id).ok_or_else(|| {
-        let ids: Vec<String> = rules.iter().map(|r| r.info().id).collect();
-        let refs: Vec<&str> = ids.iter().map(String::as_str).collect();
-        let hint = crate::error::did_you_mean(id, &refs)
-            .map(|c| format!(" (did you mean '{c}'?)"))
-            .unwrap_or_default();
-        Error::new(
-            "method",
-            format!(
-                "unknown method '{id}'{hint}; implemented: {}",
-                ids.join(", ")
-            ),
-        )
-    })?;
+    let rule = find(id)?;
     let info = rule.info();
+    check_family(&info, plant)?;
+    rule.validate(params, &info)?;
+    rule.tune(plant, params)
+}
+
+/// The rule with method id `id` (error path `method`, with a did-you-mean).
+pub fn find(id: &str) -> Result<Box<dyn Rule>> {
+    let mut rules = registry();
+    let pos = rules
+        .iter()
+        .position(|r| r.info().id == id)
+        .ok_or_else(|| {
+            let ids: Vec<String> = rules.iter().map(|r| r.info().id).collect();
+            let refs: Vec<&str> = ids.iter().map(String::as_str).collect();
+            let hint = crate::error::did_you_mean(id, &refs)
+                .map(|c| format!(" (did you mean '{c}'?)"))
+                .unwrap_or_default();
+            Error::new(
+                "method",
+                format!(
+                    "unknown method '{id}'{hint}; implemented: {}",
+                    ids.join(", ")
+                ),
+            )
+        })?;
+    Ok(rules.swap_remove(pos))
+}
+
+/// Errors (path `plant.family`) unless the rule declares the plant's family.
+pub fn check_family(info: &MethodInfo, plant: &Plant) -> Result<()> {
     let fam = plant.family.map(|f| f.id()).unwrap_or("custom");
     let families: Vec<&str> = info.families.iter().map(String::as_str).collect();
     if !families.contains(&fam) {
-        return Err(wrong_family(id, &families, fam));
+        return Err(wrong_family(&info.id, &families, fam));
     }
-    rule.validate(params, &info)?;
-    rule.tune(plant, params)
+    Ok(())
 }
 
 /// The error for a plant of family `got` given to method `id`, which applies to `families`

@@ -1,7 +1,7 @@
 //! Method parameters: their declarations (name, label, unit, default, range, choices, help),
 //! which drive both validation and `methods()`, and the values a caller gives.
 
-use crate::error::{unknown_field, Error, Result};
+use crate::error::{num, unknown_field, Error, Result};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 
@@ -38,6 +38,10 @@ pub struct ParamInfo {
     /// Allowed values (choice parameters).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub choices: Vec<String>,
+    /// The only numbers accepted, when a numeric parameter is discrete (e.g. a filter order
+    /// 2 or 3): the page shows a select, validation refuses anything else.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub values: Vec<f64>,
     /// One-line help.
     #[serde(skip_serializing_if = "String::is_empty")]
     pub help: String,
@@ -58,9 +62,28 @@ impl ParamInfo {
             min: Some(min),
             max: Some(max),
             choices: vec![],
+            values: vec![],
             help: String::new(),
             required: false,
         }
+    }
+
+    /// A numeric parameter that takes only `values` (its range is theirs).
+    pub fn discrete(name: &str, label: &str, default: f64, values: &[f64]) -> ParamInfo {
+        let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        ParamInfo {
+            values: values.to_vec(),
+            ..ParamInfo::number(name, label, Some(default), lo, hi)
+        }
+    }
+
+    /// A continuous numeric parameter (a slider): numeric, neither a choice nor discrete.
+    pub fn is_continuous(&self) -> bool {
+        self.min.is_some()
+            && self.max.is_some()
+            && self.choices.is_empty()
+            && self.values.is_empty()
     }
 
     /// A choice parameter.
@@ -73,6 +96,7 @@ impl ParamInfo {
             min: None,
             max: None,
             choices: choices.iter().map(|c| c.to_string()).collect(),
+            values: vec![],
             help: String::new(),
             required: false,
         }
@@ -162,12 +186,21 @@ impl Params {
             };
             let path = format!("params.{name}");
             match (v, p.choices.is_empty()) {
+                (ParamValue::Number(x), true) if !p.values.is_empty() => {
+                    if !p.values.contains(x) {
+                        let vs: Vec<String> = p.values.iter().map(|v| num(*v)).collect();
+                        return Err(Error::new(
+                            path,
+                            format!("must be one of {} (got {})", vs.join(", "), num(*x)),
+                        ));
+                    }
+                }
                 (ParamValue::Number(x), true) => {
                     let (lo, hi) = (p.min.unwrap_or(f64::MIN), p.max.unwrap_or(f64::MAX));
                     if !(x.is_finite() && *x >= lo && *x <= hi) {
                         return Err(Error::new(
                             path,
-                            format!("must lie in [{lo}, {hi}] (got {x})"),
+                            format!("must lie in [{}, {}] (got {})", num(lo), num(hi), num(*x)),
                         ));
                     }
                 }

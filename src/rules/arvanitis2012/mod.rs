@@ -545,6 +545,10 @@ impl super::Rule for Alg3 {
         })()
         .map_err(plant_error)
     }
+    /// Each design simulates the load response for every candidate τ_D (0.1–1 s natively).
+    fn slow_to_tune(&self) -> bool {
+        true
+    }
 }
 
 impl super::Rule for M2Xi {

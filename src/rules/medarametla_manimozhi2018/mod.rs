@@ -566,7 +566,7 @@ pub fn params_info() -> Vec<ParamInfo> {
         ParamInfo::number("p", "p (set-point filter time constant)", None, 1e-3, 1e3)
             .unit("time")
             .help("default θ; the paper tunes p between 0.5θ and 3θ"),
-        ParamInfo::number("p_order", "n in F₂ = 1/(ps+1)ⁿ", Some(2.0), 2.0, 3.0)
+        ParamInfo::discrete("p_order", "n in F₂ = 1/(ps+1)ⁿ", 2.0, &[2.0, 3.0])
             .help("2 as printed (Eqs. 34-38); 3 reproduces the paper's simulated Examples 2, 3, 5"),
         ParamInfo::number(
             "target_ms",

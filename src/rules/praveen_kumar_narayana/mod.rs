@@ -131,7 +131,7 @@ impl IpdtIr {
         .plant()
     }
 
-    fn from_plant(plant: &Plant) -> Result<IpdtIr> {
+    pub fn from_plant(plant: &Plant) -> Result<IpdtIr> {
         match plant.family {
             Some(Family::IpdtIr {
                 k,
