@@ -20,7 +20,8 @@ export function admissible(method, plant) {
     const a = E.call('admissible', { method, plant });
     out = {};
     for (const [n, p] of Object.entries((a && a.params) || {})) {
-      if (!p || !Number.isFinite(p.min) || !Number.isFinite(p.max) || !(p.max > p.min)) continue;
+      // (a point interval, min = max: only that value works on this plant)
+      if (!p || !Number.isFinite(p.min) || !Number.isFinite(p.max) || !(p.max >= p.min)) continue;
       out[n] = {
         min: p.min,
         max: p.max,

@@ -225,11 +225,18 @@ function isIntegerChoice(p) {
 }
 
 // The (method, plant) the method's sliders span the admissible intervals of.
-const shownRanges = { key: '' };
+const shownRanges = { key: '', timer: 0 };
 
 /** The plant changed: the method's sliders span the intervals admissible for the new plant
- *  (values are kept; one now outside is marked beside its field). Cheap when nothing changed. */
+ *  (values are kept; one now outside is marked beside its field). admissible() scans the rule
+ *  over its range, so this runs once the plant has settled for 250 ms, not on every frame of a
+ *  drag; nothing is done when the method and plant are the ones the sliders were built for. */
 export function updateRanges() {
+  clearTimeout(shownRanges.timer);
+  shownRanges.timer = setTimeout(updateRangesNow, 250);
+}
+
+function updateRangesNow() {
   const { state } = store;
   const key = JSON.stringify([state.method, state.plant]);
   if (key === shownRanges.key) return;
@@ -321,16 +328,27 @@ export function buildMethod() {
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, options: p.choices, value: v,
         onChange: (x) => { store.state.params[p.name] = x; changed(); },
       }));
-    } else if (!(adm && adm[p.name]) && isIntegerChoice(p)) {
-      // a whole-number option (e.g. an order 2 or 3) that admissible() does not list as continuous
+    } else if (Array.isArray(p.values) && p.values.length || (!(adm && adm[p.name]) && isIntegerChoice(p))) {
+      // a discrete numeric parameter (methods() `values`, e.g. an order 2 or 3): a select
       const opts = [];
-      for (let k = p.min; k <= p.max; k++) opts.push(String(k));
-      if (typeof v !== 'number' || !opts.includes(String(v))) v = typeof p.default === 'number' ? p.default : p.min;
+      if (Array.isArray(p.values) && p.values.length) for (const k of p.values) opts.push(String(k));
+      else for (let k = p.min; k <= p.max; k++) opts.push(String(k));
+      if (typeof v !== 'number' || !opts.includes(String(v))) v = typeof p.default === 'number' ? p.default : Number(opts[0]);
       state.params[p.name] = v;
       box.append(select({
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, options: opts, value: String(v),
         onChange: (x) => { store.state.params[p.name] = Number(x); changed(); },
       }));
+    } else if (adm && adm[p.name] && adm[p.name].min === adm[p.name].max) {
+      // a point interval: only this value works on this plant (no slider over one value)
+      const a = adm[p.name];
+      state.params[p.name] = a.min;
+      const id = 'mp-' + p.name + '-n';
+      Er.forget(id);
+      box.append(el('div', { class: 'row', 'data-key': 'mp-' + p.name, 'data-label': p.label },
+        el('label', { for: id, text: p.label }),
+        el('input', { type: 'number', id, value: String(a.min), readonly: true }),
+        el('p', { class: 'help adm-note', text: 'Only ' + p.label.split(' ')[0] + ' = ' + Er.short(a.min) + ' works on this plant' + (a.note ? ': ' + a.note : '.') })));
     } else {
       // the interval admissible for this plant, else the range methods() declares
       const a = adm ? adm[p.name] : null;
