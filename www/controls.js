@@ -5,7 +5,7 @@ import * as S from './state.js';
 import * as E from './engine.js';
 import { $, el } from './dom.js';
 import * as Er from './errors.js';
-import { admissible } from './admissible.js';
+import { admissible, cheap } from './admissible.js';
 import { store, changed, rebuild, familyInfo, methodInfo } from './store.js';
 
 const ids = { next: 0 };
@@ -239,7 +239,7 @@ export function updateRanges() {
 function updateRangesNow() {
   const { state } = store;
   const key = JSON.stringify([state.method, state.plant]);
-  if (key === shownRanges.key) return;
+  if (key === shownRanges.key || !cheap(state.method)) return;
   shownRanges.key = key;
   const adm = admissible(state.method, state.plant);
   if (!adm) return;
