@@ -195,7 +195,9 @@ function setFamily(id) {
     state.plant = { num: tf.num, den: tf.den, delay: tf.delay };
   } else {
     const p = { family: id };
-    for (const { name: n, default: def } of familyInfo(id).params) p[n] = old[n] !== undefined && Number.isFinite(old[n]) ? old[n] : def;
+    // a value carries over to the new family only where that family accepts it (z < 0 is an
+    // inverse-response zero of ifoptd_zero, not admissible for ifoptd_zero_unstable)
+    for (const { name: n, default: def, min, max } of familyInfo(id).params) p[n] = Number.isFinite(old[n]) && !(old[n] < min) && !(old[n] > max) ? old[n] : def;
     if (old.delay !== undefined && 'theta' in p) p.theta = old.delay;
     state.plant = p;
   }

@@ -152,7 +152,7 @@ test('every method × every family it claims: its defaults and its slider ends d
         const text = b.join(' | ');
         const specific = b.length > 0 && b.every((x) => x.length > 30 && !/\b(params|plant|scenario)\.[a-z_]/.test(x) && !/\d{12,}/.test(x));
         if (!specific) blank.push(`${m.id} on ${fam}, ${what}: drawn ${ok}, Ms finite ${finite}, banners "${text}"`);
-        else explained++;
+        else { explained++; console.log(`  explained: ${m.id} on ${fam}, ${what}: ${text.slice(0, 160)}`); }
       }
       combos++;
     }
