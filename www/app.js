@@ -22,6 +22,9 @@ import { drawBode } from './bode.js';
 import * as I from './instructor.js';
 import * as Api from './embed-api.js';
 import { updateSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeoff.js';
+import * as Er from './errors.js';
+import * as Hi from './history.js';
+import * as XD from './export-data.js';
 
 /** Builds every control from the state. */
 function buildAll() {
@@ -65,8 +68,11 @@ function render() {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
   try {
+    C.updateRanges();
     const r = compute();
     store.last = r;
+    // the module's errors in the user's words, beside the field they are about and in the banner
+    r.banners = Er.route(r.banners);
     showBanners(r.banners);
     showReadouts(r);
     const t1 = performance.now();
@@ -88,6 +94,13 @@ function render() {
   perf.works.push(dt);
   if (perf.works.length > 1000) perf.works.shift();
   Sh.saveHashSoon();
+}
+
+/** A whole state was put in the store (Back/Forward, a typed URL, reset): show it. */
+function restored() {
+  buildAll();
+  P.refreshPins();
+  changed();
 }
 
 function wire() {
@@ -123,18 +136,24 @@ function wire() {
   $('pert-reset').addEventListener('click', () => { store.state.pert = { k: 0, tau: 0, zero: 0, theta: 0 }; C.buildPert(); changed(); });
   $('copy-link').addEventListener('click', () => Sh.share('link'));
   $('copy-embed').addEventListener('click', () => Sh.share('embed'));
-  $('export-csv').addEventListener('click', Sh.exportCsv);
+  $('export-csv').addEventListener('click', XD.exportCsv);
+  $('export-json').addEventListener('click', XD.exportJson);
   $('print-page').addEventListener('click', () => window.print());
-  for (const b of document.querySelectorAll('button.png')) b.addEventListener('click', () => Sh.exportPng(b.getAttribute('data-canvas')));
+  for (const b of document.querySelectorAll('button.png')) b.addEventListener('click', () => XD.exportPng(b.getAttribute('data-canvas'), Number($('png-scale').value)));
   window.addEventListener('hashchange', () => {
     const d = U.decodeHash(location.hash);
     if (d.state && U.encodeHash(d.state, d.embed) !== U.encodeHash(store.state, store.embed)) {
       store.state = d.state;
       store.embed = d.embed || store.embed;
-      buildAll();
-      P.refreshPins();
-      changed();
+      restored();
     }
+  });
+  $('undo').addEventListener('click', Hi.undo);
+  $('redo').addEventListener('click', Hi.redo);
+  $('reset-all').addEventListener('click', () => {
+    store.state = { ...S.defaultState(), pins: store.state.pins };
+    restored();
+    Hi.commit();
   });
   watchSizes(() => changed(true));
 }
@@ -182,6 +201,8 @@ async function main() {
   wire();
   // The identification panel: "Use this model" makes the fitted plant the page's plant.
   Id.setup({ onUse: (plant) => { store.state.plant = S.cleanPlant(plant) || plant; store.state.preset = ''; buildAll(); changed(); } });
+  Hi.init(restored);
+  Sh.postHeight();
   // What the tests and the benchmark read (the module itself, the state, the timings).
   window.__pidlab = {
     get wasm() { return E.glue(); },

@@ -4,78 +4,137 @@
 import * as S from './state.js';
 import * as E from './engine.js';
 import { $, el } from './dom.js';
+import * as Er from './errors.js';
+import { admissible, cheap } from './admissible.js';
 import { store, changed, rebuild, familyInfo, methodInfo } from './store.js';
 
 const ids = { next: 0 };
 
-/** Positions of a logarithmic slider across its range. */
-const LOG_POSITIONS = 1000;
+/** Positions of a mapped slider (linear or logarithmic) across its range. */
+export const POSITIONS = 1000;
 
-/** A range input over [lo, hi] on a logarithmic scale (for a parameter whose accepted range
- *  covers decades, e.g. λ ∈ [1e-6, 1e6]): its position runs over 0..LOG_POSITIONS, and its
- *  `value` property reads and writes the parameter itself (so every caller, the page's own
- *  listeners and the tests alike, sees the parameter, never the position). */
-function logRange(rid, lo, hi, value, disabled) {
-  const range = el('input', { type: 'range', id: rid, min: 0, max: LOG_POSITIONS, step: 1, disabled, 'data-scale': 'log', 'data-lo': lo, 'data-hi': hi });
+/**
+ * The ends of a mapped slider for an interval r = { min, max, minOpen, maxOpen, log }: an open
+ * end is moved in by 1/POSITIONS of the span (of the logarithmic span on a log scale), so every
+ * position of the slider, Home and End included, is an admissible value.
+ */
+export function sliderEnds(r) {
+  const f = r.log ? Math.log10 : (x) => x;
+  const a = f(r.min), b = f(r.max);
+  const d = (b - a) / POSITIONS;
+  return { a: r.minOpen ? a + d : a, b: r.maxOpen ? b - d : b };
+}
+
+/** The value at a position (rounded to a tenth of the step between positions there, so the
+ *  number box shows a short number that stays strictly inside an open end). */
+export function valueAt(r, pos) {
+  const { a, b } = sliderEnds(r);
+  const x = a + (pos / POSITIONS) * (b - a);
+  const v = r.log ? 10 ** x : x;
+  const step = r.log ? v * Math.LN10 * ((b - a) / POSITIONS) : (b - a) / POSITIONS;
+  const q = 10 ** Math.floor(Math.log10(step / 10));
+  let out = Number((Math.round(v / q) * q).toPrecision(12));
+  // the rounding must not carry the value past the slider's own ends
+  const lo = r.log ? 10 ** a : a, hi = r.log ? 10 ** b : b;
+  if (!(out >= Math.min(lo, hi)) || !(out <= Math.max(lo, hi))) out = v;
+  return out;
+}
+
+/** The position of a value (clamped to the track: the thumb of a value outside rests at an end). */
+export function positionOf(r, v) {
+  const { a, b } = sliderEnds(r);
+  const x = r.log ? Math.log10(Math.max(v, 1e-300)) : v;
+  const p = Math.round(((x - a) / (b - a)) * POSITIONS);
+  return Math.max(0, Math.min(POSITIONS, Number.isFinite(p) ? p : 0));
+}
+
+/** A range input over the interval r on a linear or logarithmic scale: its position runs over
+ *  0..POSITIONS, and its `value` property reads and writes the parameter itself (so every
+ *  caller, the page's own listeners and the tests alike, sees the parameter, never the
+ *  position). `range.interval` is r; setting it (a new plant) moves the ends. */
+function mappedRange(rid, r, value, disabled) {
+  const range = el('input', { type: 'range', id: rid, min: 0, max: POSITIONS, step: 1, disabled });
   const native = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value');
-  const l0 = Math.log10(lo);
-  const l1 = Math.log10(hi);
-  const toPos = (v) => Math.round(((Math.log10(Math.min(hi, Math.max(lo, v))) - l0) / (l1 - l0)) * LOG_POSITIONS);
-  // 4 significant digits: a position step is 10^((l1 - l0)/1000), under 3 % for 12 decades
-  const fromPos = (p) => Number((10 ** (l0 + (p / LOG_POSITIONS) * (l1 - l0))).toPrecision(4));
+  let iv = r;
+  const mark = () => {
+    range.dataset.scale = iv.log ? 'log' : 'linear';
+    range.dataset.lo = String(iv.min);
+    range.dataset.hi = String(iv.max);
+    range.dataset.minOpen = String(!!iv.minOpen);
+    range.dataset.maxOpen = String(!!iv.maxOpen);
+  };
   Object.defineProperty(range, 'value', {
-    get() { return String(fromPos(Number(native.get.call(this)))); },
-    set(v) { native.set.call(this, String(toPos(Number(v)))); },
+    get() { return String(valueAt(iv, Number(native.get.call(this)))); },
+    set(v) { native.set.call(this, String(positionOf(iv, Number(v)))); },
   });
+  Object.defineProperty(range, 'interval', {
+    get() { return iv; },
+    set(x) { iv = x; mark(); },
+  });
+  mark();
   range.value = String(value);
   return range;
 }
 
-/** A labelled slider with a number box; `key` identifies it for embed mode. A range that
- *  covers three decades or more (min > 0) is logarithmic. */
-export function slider({ id, key, label, unit, min, max, step, value, onInput, disabled }) {
+/**
+ * A labelled slider with a number box; `key` identifies it for embed mode.
+ * `step` given: a native range with that step over [min, max]. Otherwise the slider spans the
+ * interval (an open end kept strictly inside, see sliderEnds) in POSITIONS steps, on a
+ * logarithmic scale when `scale` is 'log' or the interval covers two decades or more (min > 0).
+ * A typed value outside the interval is rejected beside the field (not clamped, not applied),
+ * and the slider's range never stretches.
+ */
+export function slider({ id, key, label, unit, min, max, step, value, onInput, disabled, minOpen = false, maxOpen = false, scale, note }) {
   const rid = id || 'sl' + ids.next++;
-  const log = !step && min > 0 && max / min >= 1e3;
-  if (!log && value < min) min = value;
-  if (!log && value > max) max = Math.abs(value) * 2 || max;
-  const st = step || niceStep(min, max);
-  // Align the range's origin to the step so round values (λ = 2.7) are reachable exactly.
-  if (!step && !log) min = Math.floor(min / Number(st)) * Number(st);
-  const range = log ? logRange(rid, min, max, value, disabled) : el('input', { type: 'range', id: rid, min, max, step: st, value, disabled });
+  Er.forget(rid + '-n');
+  const makeIv = (x) => ({ min: x.min, max: x.max, minOpen: !!x.minOpen, maxOpen: !!x.maxOpen, log: x.min > 0 && (x.scale === 'log' || x.max / x.min >= 100) });
+  let iv = makeIv({ min, max, minOpen, maxOpen, scale });
+  const range = step
+    ? el('input', { type: 'range', id: rid, min, max, step, value, disabled, 'data-scale': 'linear', 'data-lo': min, 'data-hi': max })
+    : mappedRange(rid, iv, value, disabled);
   const num = el('input', { type: 'number', id: rid + '-n', step: 'any', value: String(value), disabled, 'aria-label': label + (unit ? ' (' + unit + ')' : '') + ', exact value' });
   const lab = el('label', { for: rid }, label, unit ? el('span', { class: 'unit', text: ' [' + unit + ']' }) : null);
+  const check = (v) => (Er.inRange(v, iv) ? '' : Er.rangeMessage(label, iv, unit === '%' ? '%' : ''));
   range.addEventListener('input', () => {
     const v = Number(range.value);
     num.value = String(v);
+    Er.setLocal(num, '');
     onInput(v);
   });
   num.addEventListener('input', () => {
     const v = Number(num.value);
-    if (num.value.trim() === '' || !Number.isFinite(v)) return;
-    if (!log && v > Number(range.max)) range.max = String(Math.abs(v) * 2 || 1);
-    if (!log && v < Number(range.min)) range.min = String(v);
+    if (num.value.trim() === '' || !Number.isFinite(v)) { Er.setLocal(num, label + ': type a number.'); return; }
+    const bad = check(v);
+    Er.setLocal(num, bad);
+    if (bad) return;
     range.value = String(v);
     onInput(v);
   });
-  num.addEventListener('change', () => {
-    if (!Number.isFinite(Number(num.value)) || num.value.trim() === '') num.value = range.value;
-  });
-  const row = el('div', { class: 'row', 'data-key': key || rid }, lab, el('div', { class: 'pair' }, range, num));
+  const noteP = note ? el('p', { class: 'help adm-note', text: note }) : null;
+  const row = el('div', { class: 'row', 'data-key': key || rid, 'data-label': label }, lab, el('div', { class: 'pair' }, range, num), noteP);
   row.setValue = (v) => {
-    if (!log && v > Number(range.max)) range.max = String(Math.abs(v) * 2 || 1);
-    if (!log && v < Number(range.min)) range.min = String(v);
     range.value = String(v);
     num.value = String(Number(v.toPrecision(6)));
   };
   row.setDisabled = (d) => { range.disabled = d; num.disabled = d; };
+  /** New ends (the plant changed): the slider spans them; a value now outside is marked. */
+  row.setRange = (x) => {
+    const n = makeIv(x);
+    if (step || (n.min === iv.min && n.max === iv.max && n.minOpen === iv.minOpen && n.maxOpen === iv.maxOpen && n.log === iv.log)) return;
+    iv = n;
+    range.interval = iv;
+    const v = Number(num.value);
+    range.value = String(v);
+    if (Number.isFinite(v) && !num.disabled) {
+      const bad = check(v);
+      Er.setLocal(num, bad ? bad.replace(/; not applied\.$/, ' for this plant; ' + label + ' = ' + Er.short(v) + ' is outside.') : '');
+    }
+    if (noteP && x.note !== undefined) noteP.textContent = x.note;
+  };
+  row.interval = () => iv;
+  // a value from a link or a preset outside the interval: kept, and said beside the field
+  if (!disabled && Number.isFinite(value) && !Er.inRange(value, iv)) Er.setLocal(num, check(value).replace(/; not applied\.$/, '; ' + label + ' = ' + Er.short(value) + ' is outside.'));
   return row;
-}
-
-function niceStep(min, max) {
-  const span = Math.abs(max - min) || 1;
-  const raw = span / 500;
-  const p = Math.pow(10, Math.floor(Math.log10(raw)));
-  return String(Number((Math.ceil(raw / p) * p).toPrecision(2)));
 }
 
 function select({ id, key, label, options, value, onChange }) {
@@ -106,7 +165,9 @@ export function buildFamily() {
     for (const m of f.params) {
       const n = m.name;
       box.append(slider({
-        id: 'fp-' + n, key: 'fp-' + n, label: m.label, unit: m.unit, min: m.min, max: m.max, value: p[n],
+        // the declared range, widened at build only to hold a value the plant already has (a
+        // paper's plant): typing outside it is refused
+        id: 'fp-' + n, key: 'fp-' + n, label: m.label, unit: m.unit, min: Math.min(m.min, p[n]), max: Math.max(m.max, p[n]), value: p[n],
         onInput: (v) => { store.state.plant[n] = v; changed(); },
       }));
     }
@@ -116,7 +177,7 @@ export function buildFamily() {
     $('custom-den').value = p.den.join(', ');
     const row = $('custom-delay-row');
     row.replaceChildren(slider({
-      id: 'fp-delay', key: 'fp-delay', label: 'Dead time θ', unit: 'time units', min: 0, max: 10, value: p.delay,
+      id: 'fp-delay', key: 'fp-delay', label: 'Dead time θ', unit: 'time units', min: 0, max: Math.max(10, p.delay), value: p.delay,
       onInput: (v) => { store.state.plant.delay = v; changed(); },
     }));
   }
@@ -134,10 +195,14 @@ function setFamily(id) {
     state.plant = { num: tf.num, den: tf.den, delay: tf.delay };
   } else {
     const p = { family: id };
-    for (const { name: n, default: def } of familyInfo(id).params) p[n] = old[n] !== undefined && Number.isFinite(old[n]) ? old[n] : def;
+    // a value carries over to the new family only where that family accepts it (z < 0 is an
+    // inverse-response zero of ifoptd_zero, not admissible for ifoptd_zero_unstable)
+    for (const { name: n, default: def, min, max } of familyInfo(id).params) p[n] = Number.isFinite(old[n]) && !(old[n] < min) && !(old[n] > max) ? old[n] : def;
     if (old.delay !== undefined && 'theta' in p) p.theta = old.delay;
     state.plant = p;
   }
+  // a new plant: every parameter starts from the value suggested for it (admissible())
+  state.params = {};
   state.preset = '';
   rebuild();
 }
@@ -152,6 +217,37 @@ export function onCustomText() {
     store.state.plant = { num, den, delay: store.state.plant.delay };
     store.state.preset = '';
     changed();
+  }
+}
+
+/** A numeric parameter that only takes whole values over a short declared range (e.g. an order
+ *  2 or 3): offered as a select. */
+function isIntegerChoice(p) {
+  return Number.isInteger(p.min) && Number.isInteger(p.max) && p.max > p.min && p.max - p.min <= 6 && (p.default === null || p.default === undefined || Number.isInteger(p.default)) && /order|^n_/.test(p.name);
+}
+
+// The (method, plant) the method's sliders span the admissible intervals of.
+const shownRanges = { key: '', timer: 0 };
+
+/** The plant changed: the method's sliders span the intervals admissible for the new plant
+ *  (values are kept; one now outside is marked beside its field). admissible() scans the rule
+ *  over its range, so this runs once the plant has settled for 250 ms, not on every frame of a
+ *  drag; nothing is done when the method and plant are the ones the sliders were built for. */
+export function updateRanges() {
+  clearTimeout(shownRanges.timer);
+  shownRanges.timer = setTimeout(updateRangesNow, 250);
+}
+
+function updateRangesNow() {
+  const { state } = store;
+  const key = JSON.stringify([state.method, state.plant]);
+  if (key === shownRanges.key || !cheap(state.method)) return;
+  shownRanges.key = key;
+  const adm = admissible(state.method, state.plant);
+  if (!adm) return;
+  for (const [n, a] of Object.entries(adm)) {
+    const row = document.querySelector('#method-params [data-key="mp-' + n + '"]');
+    if (row && row.setRange) row.setRange(a);
   }
 }
 
@@ -194,10 +290,13 @@ export function buildMethod() {
   const hasTarget = names.includes('target_ms');
   tr.hidden = !hasTarget;
   if (!info) return;
+  // the admissible interval and suggested value of each continuous parameter for this plant
+  const adm = admissible(info.id, state.plant);
+  shownRanges.key = JSON.stringify([info.id, state.plant]);
   // λ without a default: start from the λ that gives Ms = 1.6 (solved once), then let the
   // user move λ directly (re-solving on every frame would be slow).
   const lam = info.params.find((p) => p.name === 'lambda');
-  if (lam && (lam.default === null || lam.default === undefined) && typeof state.params.lambda !== 'number' && state.target === null) {
+  if (!(adm && adm.lambda && adm.lambda.suggested !== null) && lam && (lam.default === null || lam.default === undefined) && typeof state.params.lambda !== 'number' && state.target === null) {
     try {
       const fixed = {};
       for (const p of info.params) if (typeof p.default === 'number' || typeof p.default === 'string') fixed[p.name] = p.default;
@@ -214,7 +313,8 @@ export function buildMethod() {
   $('target-on').checked = state.target !== null;
   // the target-Ms slider spans the rule's declaration of target_ms (methods())
   const tm = info.params.find((p) => p.name === 'target_ms');
-  const [tmMin, tmMax] = tm ? [tm.min, tm.max] : [1.05, 4];
+  const tma = adm && adm.target_ms;
+  const [tmMin, tmMax] = tma ? [tma.min, tma.max] : tm ? [tm.min, tm.max] : [1.05, 4];
   $('target-slider').replaceChildren(slider({
     id: 'mp-target_ms', key: 'mp-target_ms', label: 'Target Ms', min: tmMin, max: tmMax, step: '0.01', value: state.target ?? 1.6,
     disabled: state.target === null,
@@ -230,19 +330,43 @@ export function buildMethod() {
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, options: p.choices, value: v,
         onChange: (x) => { store.state.params[p.name] = x; changed(); },
       }));
+    } else if (Array.isArray(p.values) && p.values.length || (!(adm && adm[p.name]) && isIntegerChoice(p))) {
+      // a discrete numeric parameter (methods() `values`, e.g. an order 2 or 3): a select
+      const opts = [];
+      if (Array.isArray(p.values) && p.values.length) for (const k of p.values) opts.push(String(k));
+      else for (let k = p.min; k <= p.max; k++) opts.push(String(k));
+      if (typeof v !== 'number' || !opts.includes(String(v))) v = typeof p.default === 'number' ? p.default : Number(opts[0]);
+      state.params[p.name] = v;
+      box.append(select({
+        id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, options: opts, value: String(v),
+        onChange: (x) => { store.state.params[p.name] = Number(x); changed(); },
+      }));
+    } else if (adm && adm[p.name] && adm[p.name].min === adm[p.name].max) {
+      // a point interval: only this value works on this plant (no slider over one value)
+      const a = adm[p.name];
+      state.params[p.name] = a.min;
+      const id = 'mp-' + p.name + '-n';
+      Er.forget(id);
+      box.append(el('div', { class: 'row', 'data-key': 'mp-' + p.name, 'data-label': p.label },
+        el('label', { for: id, text: p.label }),
+        el('input', { type: 'number', id, value: String(a.min), readonly: true }),
+        el('p', { class: 'help adm-note', text: 'Only ' + p.label.split(' ')[0] + ' = ' + Er.short(a.min) + ' works on this plant' + (a.note ? ': ' + a.note : '.') })));
     } else {
-      const min = Number.isFinite(p.min) ? p.min : 0;
-      const max = Number.isFinite(p.max) ? p.max : 10;
-      const fallback = () => presetValue(info.id, p.name) ?? Number(((min + max) / 2).toPrecision(3));
+      // the interval admissible for this plant, else the range methods() declares
+      const a = adm ? adm[p.name] : null;
+      const iv = a || { min: Number.isFinite(p.min) ? p.min : 0, max: Number.isFinite(p.max) ? p.max : 10 };
+      const { min, max } = iv;
+      const fallback = () => (a && a.suggested !== null ? a.suggested : presetValue(info.id, p.name)) ?? Number(((min + max) / 2).toPrecision(3));
       // A parameter without a default that the rule does not require (methods() declares
       // `required`) is the rule's own choice unless set: "auto" omits it from params; the
       // slider then shows the value the rule reports.
       const autoable = (p.default === null || p.default === undefined) && !p.required;
       const auto = autoable && typeof v !== 'number';
-      if (typeof v !== 'number') v = typeof p.default === 'number' ? p.default : fallback();
+      if (typeof v !== 'number') v = a && a.suggested !== null && Er.inRange(a.suggested, a) ? a.suggested : typeof p.default === 'number' ? p.default : fallback();
       if (!auto && (p.name !== 'lambda' || state.target === null)) state.params[p.name] = v;
       const row = slider({
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, min, max, value: v,
+        minOpen: iv.minOpen, maxOpen: iv.maxOpen, scale: iv.scale, note: a && a.note ? a.note : undefined,
         disabled: (p.name === 'lambda' && state.target !== null) || auto,
         onInput: (x) => { store.state.params[p.name] = x; changed(); },
       });
@@ -278,20 +402,27 @@ export function buildScenario() {
   const box = $('scenario-params');
   box.replaceChildren();
   const sc = store.state.scenario;
-  const num = (id, label, get, set, min) => {
+  // `check(v)`: '' when v is allowed, else what is allowed (the value is then not applied and
+  // the message stays beside the field until it is edited)
+  const num = (id, label, get, set, check) => {
+    Er.forget(id);
     const inp = el('input', { type: 'number', id, step: 'any', value: String(get()) });
     inp.addEventListener('input', () => {
       const v = Number(inp.value);
-      if (inp.value.trim() !== '' && Number.isFinite(v) && (min === undefined || v >= min)) { set(v); changed(); }
+      const bad = inp.value.trim() === '' || !Number.isFinite(v) ? 'type a number' : check ? check(v) : '';
+      Er.setLocal(inp, bad ? label + ': ' + bad + '; not applied.' : '');
+      if (!bad) { set(v); changed(); }
     });
-    return el('div', { class: 'row small', 'data-key': id }, el('label', { for: id, text: label }), inp);
+    return el('div', { class: 'row small', 'data-key': id, 'data-label': label }, el('label', { for: id }, label, el('span', { class: 'unit', text: id === 'sc-sp_size' || id === 'sc-d_size' ? '' : ' [time units]' })), inp);
   };
+  const pos = (v) => (v > 0 ? '' : 'must be greater than 0');
+  const nonneg = (v) => (v >= 0 ? '' : 'must be 0 or later');
   box.append(
-    num('sc-t_end', 'End time [time units]', () => sc.t_end, (v) => { sc.t_end = v; }, 0),
-    num('sc-dt', 'Sample step dt [time units]', () => sc.dt, (v) => { sc.dt = v; }, 0),
-    num('sc-sp_time', 'Set-point step at [time units]', () => sc.setpoint.time, (v) => { sc.setpoint.time = v; }, 0),
+    num('sc-t_end', 'End time', () => sc.t_end, (v) => { sc.t_end = v; }, pos),
+    num('sc-dt', 'Sample step dt', () => sc.dt, (v) => { sc.dt = v; }, (v) => pos(v) || (v >= sc.t_end ? 'must be shorter than the end time (' + Er.short(sc.t_end) + ')' : '')),
+    num('sc-sp_time', 'Set-point step at', () => sc.setpoint.time, (v) => { sc.setpoint.time = v; }, nonneg),
     num('sc-sp_size', 'Set-point step size', () => sc.setpoint.size, (v) => { sc.setpoint.size = v; }),
-    num('sc-d_time', 'Load step at [time units]', () => sc.disturbance.time, (v) => { sc.disturbance.time = v; }, 0),
+    num('sc-d_time', 'Load step at', () => sc.disturbance.time, (v) => { sc.disturbance.time = v; }, nonneg),
     num('sc-d_size', 'Load step size (plant input)', () => sc.disturbance.size, (v) => { sc.disturbance.size = v; }),
   );
 }

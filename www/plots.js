@@ -133,8 +133,15 @@ const boundary = { asObject: false };
 // The spec (JSON text and canvas size) each canvas was last drawn with: a plot whose spec did
 // not change is not drawn again (the canvas keeps its pixels until its size changes).
 const drawn = new Map();
+// The last spec of each canvas (export-data.js draws it again at a chosen size).
+const lastSpec = new Map();
+
+/** The spec a canvas was last drawn from, or null. */
+export const specOf = (id) => lastSpec.get(id) || null;
+
 function plot(spec) {
   const c = $(spec.canvas);
+  lastSpec.set(spec.canvas, spec);
   if (c && c.closest('[hidden]')) return; // a panel the instructor mode hides (issue 16)
   try {
     const t0 = performance.now();

@@ -10,11 +10,16 @@ const shown = { banners: '', announce: 0 };
 export function showBanners(list) {
   // Only touch the (assertive) live region when the message changes, so a screen reader
   // announces a new problem once, not on every frame while a slider moves.
-  const key = list.map((b) => b.kind + b.title + b.text).join('|');
+  const key = list.map((b) => b.kind + b.title + b.text + (b.field || '')).join('|');
   if (key === shown.banners) return;
   shown.banners = key;
   const box = $('banners');
-  box.replaceChildren(...list.map((b) => el('div', { class: 'banner ' + b.kind }, el('strong', { text: b.title + '. ' }), el('span', { text: b.text }))));
+  // A banner about a field (errors.js route()) links to it: the field is where it is fixed.
+  const goTo = (id) => el('button', {
+    type: 'button', class: 'banner-go', text: 'Go to the field', 'aria-controls': id,
+    onclick: () => { const f = $(id); if (f) { f.scrollIntoView({ block: 'center' }); f.focus(); } },
+  });
+  box.replaceChildren(...list.map((b) => el('div', { class: 'banner ' + b.kind }, el('strong', { text: b.title + '. ' }), el('span', { text: b.text }), b.field && $(b.field) ? goTo(b.field) : null)));
 }
 
 function setOut(id, text, value) {

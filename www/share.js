@@ -1,34 +1,55 @@
-// Sharing and export: the state written to the URL hash, the link and the embed code (and the
-// choice of sliders an embedded page shows), the CSV of the responses, PNGs of the plots.
+// Sharing: the state written to the URL hash, the link and the embed code (and the choice of
+// sliders an embedded page shows). Downloads (CSV, JSON, PNG): export-data.js.
 import * as U from './url.js';
 import { $, el } from './dom.js';
 import { store } from './store.js';
-import * as P from './pins.js';
 import { hashSuffix } from './instructor.js';
+import * as Hi from './history.js';
 
-const timers = { hash: 0 };
-
-/** Writes the state to the URL hash once the input has settled. */
+/** Writes the state to the URL hash once the input has settled (one history entry per
+ *  committed change: history.js). */
 export function saveHashSoon() {
-  clearTimeout(timers.hash);
-  timers.hash = setTimeout(() => {
-    const h = U.encodeHash(store.state, store.embed) + hashSuffix();
-    if (location.hash !== h) history.replaceState(null, '', h);
-  }, 400);
+  Hi.commitSoon();
 }
 
 function baseUrl() {
   return location.href.split('#')[0].split('?')[0];
 }
 
+/** The host page's part of the embed code: sets each pidlab frame's height from the
+ *  'pidlab:height' message its page posts (README, "Embedding"). */
+const HOST_SCRIPT = "<script>addEventListener('message',function(e){var d=e.data;if(!d||d.type!=='pidlab:height')return;" +
+  "document.querySelectorAll('iframe[data-pidlab]').forEach(function(f){if(f.contentWindow===e.source)f.style.height=Math.ceil(d.height)+'px';});});</" + 'script>';
+
+/** The height of the page in embed mode at the present width (measured with the embed view
+ *  switched on for a moment, within one task, so nothing is painted). */
+function embedHeight() {
+  const b = document.body;
+  if (store.embed) return Math.ceil(document.documentElement.getBoundingClientRect().height);
+  const shown = [...document.querySelectorAll('.controls .row[data-key]')].map((r) => [r, r.classList.contains('shown')]);
+  b.classList.add('embed');
+  for (const [r] of shown) r.classList.toggle('shown', store.state.show.includes(r.getAttribute('data-key')));
+  const h = Math.ceil(document.documentElement.getBoundingClientRect().height);
+  b.classList.remove('embed');
+  for (const [r, was] of shown) r.classList.toggle('shown', was);
+  return h;
+}
+
+/** The embed code: a frame with a relative src (pidlab.html, the single-file page hosted next
+ *  to the embedding page), sized to the content, and the script that keeps it sized. */
+export function embedCode() {
+  const src = 'pidlab.html' + U.encodeHash(store.state, true) + hashSuffix();
+  return '<iframe data-pidlab src="' + src.replace(/&/g, '&amp;').replace(/"/g, '&quot;') + '" title="pidlab: PID tuning" width="100%" height="' + embedHeight() + '" style="border:0;width:100%" loading="lazy"></iframe>\n' + HOST_SCRIPT;
+}
+
 /** Shows the link (kind 'link') or the embed code ('embed') of the state and copies it. */
 export async function share(kind) {
-  const url = baseUrl() + U.encodeHash(store.state, kind === 'embed') + hashSuffix();
-  const text = kind === 'embed'
-    ? '<iframe src="' + url.replace(/&/g, '&amp;').replace(/"/g, '&quot;') + '" title="pidlab: PID tuning" width="100%" height="760" style="border:0" loading="lazy"></iframe>'
-    : url;
+  const text = kind === 'embed' ? embedCode() : baseUrl() + U.encodeHash(store.state, false) + hashSuffix();
   $('share-out').hidden = false;
   $('share-label').textContent = kind === 'embed' ? 'Embed code' : 'Link';
+  $('share-note').textContent = kind === 'embed'
+    ? 'Host the single file dist/pidlab.html (it needs no other file) as pidlab.html in the same folder as the page that embeds it, or change src to its address. The script sets the frame to the height of its content: the page posts { type: "pidlab:height", height } to its host (README, "Embedding").'
+    : '';
   const inp = $('share-text');
   inp.value = text;
   inp.focus();
@@ -40,40 +61,19 @@ export async function share(kind) {
   $('share-status').textContent = ok ? 'Copied to the clipboard.' : 'Selected: press Ctrl+C to copy.';
 }
 
-function download(blob, name) {
-  const url = URL.createObjectURL(blob);
-  const a = el('a', { href: url, download: name });
-  document.body.append(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
-}
-
-function csvText() {
-  const cols = [];
-  const r = store.last;
-  if (r && r.sim) {
-    cols.push(['t', r.sim.t], ['r', r.sim.r], ['d', r.sim.d], ['y', r.sim.y], ['u', r.sim.u]);
-    if (r.simNom) cols.push(['y_nominal', r.simNom.y], ['u_nominal', r.simNom.u]);
-  }
-  P.pinned().forEach((p, i) => {
-    if (p.sim && r && r.sim && p.sim.t.length === r.sim.t.length) cols.push(['y_pin' + (i + 1), p.sim.y], ['u_pin' + (i + 1), p.sim.u]);
-  });
-  const n = cols.length ? Math.max(...cols.map((c) => c[1].length)) : 0;
-  const lines = [cols.map((c) => c[0]).join(',')];
-  for (let i = 0; i < n; i++) lines.push(cols.map((c) => (i < c[1].length ? String(c[1][i]) : '')).join(','));
-  return lines.join('\n') + '\n';
-}
-
-/** Downloads the responses shown as CSV. */
-export function exportCsv() {
-  download(new Blob([csvText()], { type: 'text/csv' }), 'pidlab-responses.csv');
-}
-
-/** Downloads a plot's canvas as PNG. */
-export function exportPng(canvasId) {
-  const c = $(canvasId);
-  c.toBlob((blob) => { if (blob) download(blob, c.id + '.png'); }, 'image/png');
+/** In a frame: posts the page's height to the host whenever it changes
+ *  ({ type: 'pidlab:height', height: <CSS px> }; any origin may read it: it is only a height). */
+export function postHeight() {
+  if (window.parent === window) return;
+  let last = -1;
+  const send = () => {
+    const h = Math.ceil(document.documentElement.getBoundingClientRect().height);
+    if (h === last) return;
+    last = h;
+    window.parent.postMessage({ type: 'pidlab:height', height: h }, '*');
+  };
+  if (typeof ResizeObserver === 'function') new ResizeObserver(send).observe(document.documentElement);
+  send();
 }
 
 /** The checkboxes choosing the sliders an embedded page shows (one per control row). */

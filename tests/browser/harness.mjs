@@ -85,3 +85,24 @@ export async function setInput(page, sel, value, ev = 'input') {
   }, [sel, value, ev]);
   await frames(page);
 }
+
+/** Per canvas: the number of clearly coloured pixels (a drawn data curve, not grid or text). */
+export async function colouredPixels(page) {
+  return page.evaluate(() => {
+    const out = {};
+    for (const c of document.querySelectorAll('.plot canvas')) {
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        const mx = Math.max(d[i], d[i + 1], d[i + 2]);
+        const mn = Math.min(d[i], d[i + 1], d[i + 2]);
+        if (d[i + 3] > 0 && mx - mn > 60) n++;
+      }
+      out[c.id] = n;
+    }
+    return out;
+  });
+}
+
+/** The banners' texts. */
+export const banners = (page) => page.$$eval('#banners .banner', (b) => b.map((x) => x.textContent));

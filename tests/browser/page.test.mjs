@@ -274,7 +274,8 @@ test('embed mode shows the plots and only the chosen sliders', async () => {
 test('CSV export of the responses and PNG export of a plot', async () => {
   const { page } = await open(U.encodeHash(boilerPk(1.0)));
   const [csv] = await Promise.all([page.waitForEvent('download'), page.click('#export-csv')]);
-  const text = readFileSync(await csv.path(), 'utf8').trim().split('\n');
+  // the design comes first as '#' lines (tool.test.mjs checks them), then the columns
+  const text = readFileSync(await csv.path(), 'utf8').trim().split('\n').filter((l) => !l.startsWith('#'));
   assert.equal(text[0], 't,r,d,y,u');
   const n = await page.evaluate(() => {
     const st = window.__pidlab.state();
@@ -283,7 +284,8 @@ test('CSV export of the responses and PNG export of a plot', async () => {
   assert.equal(text.length, n + 1);
   assert.ok(text.slice(1).every((l) => l.split(',').length === 5 && l.split(',').every((v) => Number.isFinite(Number(v)))));
   const [png] = await Promise.all([page.waitForEvent('download'), page.click('button.png[data-canvas="plot-nyquist"]')]);
-  assert.equal(png.suggestedFilename(), 'plot-nyquist.png');
+  // named with its pixel size (2× the CSS size by default)
+  assert.match(png.suggestedFilename(), /^plot-nyquist-\d+x\d+\.png$/);
   const head = readFileSync(await png.path()).subarray(0, 8);
   assert.deepEqual([...head], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
   await page.close();
@@ -368,10 +370,11 @@ test('input-to-paint latency of the λ slider', async () => {
         ch.port2.postMessage(0);
       });
     });
-    return { min: Number(x.min), max: Number(x.max), log: x.dataset.scale === 'log', lo: Number(x.dataset.lo), hi: Number(x.dataset.hi), x: b.x, y: b.y + b.height / 2, w: b.width };
+    return { log: x.dataset.scale === 'log', lo: Number(x.dataset.lo), hi: Number(x.dataset.hi), x: b.x, y: b.y + b.height / 2, w: b.width };
   });
   // where λ = v sits along the track (a logarithmic slider's position is log-spaced)
-  const frac = (v) => (g.log ? Math.log(v / g.lo) / Math.log(g.hi / g.lo) : (v - g.min) / (g.max - g.min));
+  // (the slider's positions run over its interval [lo, hi], data-lo/data-hi, linear or log)
+  const frac = (v) => (g.log ? Math.log(v / g.lo) / Math.log(g.hi / g.lo) : (v - g.lo) / (g.hi - g.lo));
   const px = (v) => Math.round(g.x + 8 + (g.w - 16) * frac(v));
   const [a, b] = [px(0.5), Math.max(px(0.5) + 2, px(1.9))];
   await page.mouse.move(a, g.y);
@@ -418,10 +421,24 @@ test('screenshots (target/screenshots/: 1280 and 360 px wide)', async () => {
   await small.page.close();
 });
 
-test('a parameter whose accepted range covers decades has a logarithmic slider', async () => {
-  // praveen_kumar accepts λ ∈ [1e-6, 1e6] (methods()); a linear slider over it would put the
-  // useful λ (0.2–2 on the boiler) in its first position
+test('a parameter whose range covers decades has a logarithmic slider', async () => {
+  // praveen_kumar declares λ ∈ [1e-6, 1e6] (methods()); a linear slider over it would put the
+  // useful λ (0.2–2 on the boiler) in its first position. Where the module has admissible(),
+  // the sliders span the plant's admissible interval instead (tool.test.mjs checks λ's); then
+  // the check here is on N, whose interval covers decades.
   const { page } = await open(U.encodeHash(boilerPk(1.0)));
+  if (await page.evaluate(() => typeof window.__pidlab.wasm.admissible === 'function')) {
+    // the interval and scale come from admissible(): log where it covers ≥ 2 decades
+    const g = await page.evaluate(() => {
+      const x = document.getElementById('mp-n');
+      const a = window.__pidlab.wasm.admissible({ method: 'praveen_kumar', plant: window.__pidlab.state().plant }).params.n;
+      return { scale: x.dataset.scale, lo: Number(x.dataset.lo), hi: Number(x.dataset.hi), a };
+    });
+    assert.deepEqual([g.lo, g.hi], [g.a.min, g.a.max]);
+    assert.equal(g.scale, g.a.min > 0 && (g.a.scale === 'log' || g.a.max / g.a.min >= 100) ? 'log' : 'linear');
+    await page.close();
+    return;
+  }
   const g = await page.evaluate(() => {
     const x = document.getElementById('mp-lambda');
     const native = Object.getOwnPropertyDescriptor(HTMLInputElement.prototype, 'value').get.call(x);
