@@ -9,7 +9,7 @@
 #   - rustup components rustfmt and clippy, and the wasm32-unknown-unknown target;
 #   - wasm-pack (cargo install --locked; ~3 min). wasm-pack itself installs the wasm-bindgen CLI
 #     matching Cargo.lock on its first build (~5 min, cached under ~/.cache/.wasm-pack);
-#   - the npm devDependencies of package.json (npm ci), e.g. playwright-core;
+#   - the npm devDependencies of package.json (npm ci): playwright-core, binaryen (wasm-opt);
 #   - python-control in a local virtual environment .venv (scripts/ensure-python.sh), for the
 #     export tests and the benchmark;
 #   - with --browser: Debian's chromium (/usr/bin/chromium) for the browser tests.
@@ -68,8 +68,9 @@ if ! command -v wasm-pack >/dev/null; then
   cargo install wasm-pack --locked --version "$WASM_PACK_VERSION"
 fi
 
-# --- wasm-opt: not used. Cargo.toml sets wasm-opt = false for wasm-pack (Debian's binaryen 108
-# breaks the module, npm's binaryen 132 gains nothing measurable; see README "wasm-opt").
+# --- wasm-opt: npm's binaryen (a devDependency, installed by npm ci below), run by
+# scripts/wasm-opt.sh after wasm-pack. Cargo.toml keeps wasm-pack's own step off (wasm-opt =
+# false): Debian's binaryen 108 breaks the module (README "wasm-opt").
 
 # --- npm devDependencies (playwright-core for the browser tests) -----------------------------
 if [ -f package.json ]; then
