@@ -67,6 +67,12 @@ console.log('|---|---:|---:|---:|---:|---:|');
 const row = (name, s) => console.log(`| ${name} | ${f(s.median)} | ${f(s.p95)} | ${f(s.min)} | ${f(s.mean)} | ${f(s.cpuMedian)} |`);
 const full = time(update, RUNS);
 row('**update (tune + simulate + analyze)**', full);
+// For scripts/bench.sh: the update's figures and the controller, which the python-control half
+// (bench/python_control_bench.py) simulates the same way.
+if (process.env.BENCH_OUT) {
+  const { writeFileSync } = await import('node:fs');
+  writeFileSync(process.env.BENCH_OUT, JSON.stringify({ update: full, controller: tuneCall ? pidlab.tune(tuneCall).controller : IPD, ms: an0.ms }));
+}
 let ctl = IPD;
 if (tuneCall) {
   row('tune', time(() => pidlab.tune(tuneCall), RUNS));

@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# The benchmark (not a test): one slider update for the boiler natively and as wasm in Node.
+# The benchmark (not a test): one slider update for the boiler natively, as wasm in Node, and
+# the same update with python-control (Padé(5) delay, two forced responses, Ms on a 2000-point
+# grid; bench/python_control_bench.py in the local .venv) in the same run, with the ratio.
 #
 #   bash scripts/bench.sh            # both
 #   RUNS=2000 bash scripts/bench.sh  # more runs (default 1000, at least 200)
@@ -17,7 +19,31 @@ echo
 echo "## wasm in Node (pkg-node)"
 wasm-pack --quiet build --release --target nodejs --out-dir pkg-node >/dev/null 2>&1 \
   || wasm-pack build --release --target nodejs --out-dir pkg-node
-node bench/bench-node.mjs "$RUNS"
+bash scripts/wasm-opt.sh pkg-node >&2
+out=$(mktemp)
+trap 'rm -f "$out"' EXIT
+BENCH_OUT="$out" node bench/bench-node.mjs "$RUNS"
+echo
+echo "## python-control (Padé(5) delay, two forced responses, Ms on 2000 points; no tune step)"
+PY=$(bash scripts/ensure-python.sh)
+PRUNS=$(( RUNS / 5 < 50 ? 50 : RUNS / 5 ))
+node -e 'process.stdout.write(JSON.stringify(JSON.parse(require("fs").readFileSync(process.argv[1], "utf8")).controller))' "$out" \
+  | "$PY" bench/python_control_bench.py "$PRUNS" >"$out.py"
+node -e '
+const fs = require("fs");
+const n = JSON.parse(fs.readFileSync(process.argv[1], "utf8"));
+const p = JSON.parse(fs.readFileSync(process.argv[2], "utf8"));
+const f = (x) => x.toFixed(3) + " ms";
+console.log(`python-control ${p.python_control}, numpy ${p.numpy}: ${p.runs} runs; Ms (Padé, grid) = ${p.ms.toFixed(3)} vs pidlab ${n.ms.toFixed(3)} (exact)`);
+console.log();
+console.log("| one update on the boiler | wall median | wall p95 | CPU-time median |");
+console.log("|---|---:|---:|---:|");
+console.log(`| pidlab, wasm in Node (tune + simulate + analyze) | ${f(n.update.median)} | ${f(n.update.p95)} | ${f(n.update.cpuMedian)} |`);
+console.log(`| python-control (simulate + Ms only) | ${f(p.median_ms)} | ${f(p.p95_ms)} | ${f(p.cpu_median_ms)} |`);
+console.log();
+console.log(`ratio python-control / pidlab: ${(p.median_ms / n.update.median).toFixed(1)}x wall median, ${(p.cpu_median_ms / n.update.cpuMedian).toFixed(1)}x CPU-time median (load average ${require("os").loadavg().map((x) => x.toFixed(2)).join(" ")})`);
+' "$out" "$out.py"
+rm -f "$out.py"
 echo
 echo "## identify in Node (pkg-node): 2,000 samples"
 node bench/identify-node.mjs

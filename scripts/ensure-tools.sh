@@ -4,12 +4,13 @@
 #
 #   bash scripts/ensure-tools.sh            # Rust wasm toolchain, wasm-pack, npm deps
 #   bash scripts/ensure-tools.sh --browser  # the same plus Debian's chromium (browser tests)
+#   bash scripts/ensure-tools.sh --size     # the same plus twiggy (what fills the wasm module)
 #
 # What it installs when missing (a new machine has rustup's Rust, Node 20/npm and Python 3):
 #   - rustup components rustfmt and clippy, and the wasm32-unknown-unknown target;
 #   - wasm-pack (cargo install --locked; ~3 min). wasm-pack itself installs the wasm-bindgen CLI
 #     matching Cargo.lock on its first build (~5 min, cached under ~/.cache/.wasm-pack);
-#   - the npm devDependencies of package.json (npm ci), e.g. playwright-core;
+#   - the npm devDependencies of package.json (npm ci): playwright-core, binaryen (wasm-opt);
 #   - python-control in a local virtual environment .venv (scripts/ensure-python.sh), for the
 #     export tests and the benchmark;
 #   - with --browser: Debian's chromium (/usr/bin/chromium) for the browser tests.
@@ -17,9 +18,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 want_browser=0
+want_size=0
 for a in "$@"; do
   case "$a" in
     --browser) want_browser=1 ;;
+    --size) want_size=1 ;;
     *) echo "ensure-tools: unknown argument $a" >&2; exit 2 ;;
   esac
 done
@@ -68,8 +71,16 @@ if ! command -v wasm-pack >/dev/null; then
   cargo install wasm-pack --locked --version "$WASM_PACK_VERSION"
 fi
 
-# --- wasm-opt: not used. Cargo.toml sets wasm-opt = false for wasm-pack (Debian's binaryen 108
-# breaks the module, npm's binaryen 132 gains nothing measurable; see README "wasm-opt").
+# --- wasm-opt: npm's binaryen (a devDependency, installed by npm ci below), run by
+# scripts/wasm-opt.sh after wasm-pack. Cargo.toml keeps wasm-pack's own step off (wasm-opt =
+# false): Debian's binaryen 108 breaks the module (README "wasm-opt").
+
+# --- twiggy (--size only; a size study, not needed to build or test): cargo install, ~2 min ------
+TWIGGY_VERSION=0.8.0
+if [ "$want_size" = 1 ] && ! command -v twiggy >/dev/null; then
+  say "cargo install twiggy $TWIGGY_VERSION (once)"
+  cargo install twiggy --locked --version "$TWIGGY_VERSION"
+fi
 
 # --- npm devDependencies (playwright-core for the browser tests) -----------------------------
 if [ -f package.json ]; then

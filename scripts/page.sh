@@ -22,8 +22,9 @@ done
 PORT=${PORT:-8000}
 
 bash scripts/ensure-tools.sh
-echo "== wasm-pack build --release --target web --out-dir www/pkg"
+echo "== wasm-pack build --release --target web --out-dir www/pkg (then wasm-opt -O3)"
 wasm-pack build --release --target web --out-dir www/pkg
+bash scripts/wasm-opt.sh www/pkg
 if [ -f scripts/build-page.sh ]; then
   echo "== scripts/build-page.sh"
   bash scripts/build-page.sh

@@ -798,6 +798,33 @@ fn frequency_warnings(check: &DesignCheck, warnings: &mut Vec<String>) {
     }
 }
 
+/// How many Ms minima [`lambda_for_ms`] keeps (by plant, ε and derivative structure).
+const MS_MIN_CACHE_SIZE: usize = 8;
+
+std::thread_local! {
+    /// The last Ms minima found by [`lambda_for_ms`]: (key, λ at the minimum, Ms there). The
+    /// search is deterministic, so a hit gives bit-identical results.
+    static MS_MIN_CACHE: std::cell::RefCell<Vec<([u64; 7], f64, f64)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// The cache key of a loop: the plant's, ε's and the derivative's exact bit patterns.
+fn ms_min_key(p: &IpdtIr, epsilon: f64, deriv: Derivative) -> [u64; 7] {
+    let (kind, n) = match deriv {
+        Derivative::Measurement => (0, 0.0),
+        Derivative::Error { n } => (1, n),
+    };
+    [
+        p.k.to_bits(),
+        p.tau.to_bits(),
+        p.z.to_bits(),
+        p.theta.to_bits(),
+        epsilon.to_bits(),
+        kind,
+        f64::to_bits(n),
+    ]
+}
+
 /// λ for a target Ms of the exact-delay loop. Ms(λ) is large at both ends of the admissible
 /// interval (the gains blow up as b → 0 at λ_b; |L(j∞)| → 1 at λ_max), so the minimum of Ms is
 /// located first (golden-section search on log λ) and λ is solved on the branch above it, the
@@ -820,15 +847,30 @@ fn lambda_for_ms(p: &IpdtIr, ms: f64, epsilon: f64, deriv: Derivative) -> Result
             .unwrap_or(f64::INFINITY)
     };
     // Golden-section search for the minimum of Ms on log λ (inner 99.99 % of the interval),
-    // 40 steps; the minimum is taken at the middle of the final bracket.
-    let (a, b) = crate::numerics::golden_bracket(
-        |x| ms_of(x.exp()),
-        (lo * 1.0001).ln(),
-        (hi * 0.9999).ln(),
-        40,
-    );
-    let l_min = (0.5 * (a + b)).exp();
-    let ms_min = ms_of(l_min);
+    // 40 steps; the minimum is taken at the middle of the final bracket. It does not depend on
+    // the target, so the last few are kept by loop (a target-Ms slider drag reuses it: 41 of
+    // the ~55 frequency analyses of one solve).
+    let key = ms_min_key(p, epsilon, deriv);
+    let (l_min, ms_min) =
+        match MS_MIN_CACHE.with(|c| c.borrow().iter().find(|e| e.0 == key).map(|e| (e.1, e.2))) {
+            Some(hit) => hit,
+            None => {
+                let (a, b) = crate::numerics::golden_bracket(
+                    |x| ms_of(x.exp()),
+                    (lo * 1.0001).ln(),
+                    (hi * 0.9999).ln(),
+                    40,
+                );
+                let l_min = (0.5 * (a + b)).exp();
+                let ms_min = ms_of(l_min);
+                MS_MIN_CACHE.with(|c| {
+                    let mut c = c.borrow_mut();
+                    c.insert(0, (key, l_min, ms_min));
+                    c.truncate(MS_MIN_CACHE_SIZE);
+                });
+                (l_min, ms_min)
+            }
+        };
     if ms <= ms_min {
         return Err(Error::new(
             "params.target_ms",
