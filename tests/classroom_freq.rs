@@ -353,15 +353,22 @@ fn sweep_grid_is_log_spaced_over_three_decades_and_errors_are_named() {
         theta: 0.5,
     }
     .plant();
-    // λ is declared on [1e-3, 1e3]: six decades, log-spaced
-    let (name, v) = sweep_grid("shamsuzzoha_lee", &p, None, None, 7).unwrap();
+    // A range of six decades is log-spaced
+    let (name, v) = sweep_grid("shamsuzzoha_lee", &p, None, Some((1e-3, 1e3)), 7).unwrap();
     assert_eq!(name, "lambda");
     for (x, e) in v.iter().zip([1e-3, 1e-2, 1e-1, 1.0, 10.0, 100.0, 1e3]) {
         assert!((x / e - 1.0).abs() < 1e-12, "{x} {e}");
     }
-    // ζ on [0.1, 10]: two decades, evenly spaced
-    let (_, v) = sweep_grid("shamsuzzoha_lee", &p, Some("zeta"), None, 3).unwrap();
+    // two decades are evenly spaced
+    let (_, v) = sweep_grid("shamsuzzoha_lee", &p, Some("zeta"), Some((0.1, 10.0)), 3).unwrap();
     assert_eq!(v, vec![0.1, 5.05, 10.0]);
+    // Without a range: the plant's admissible interval of λ, ends included (closed: Ms = 4)
+    let ivs =
+        pidlab::rules::admissible::admissible("shamsuzzoha_lee", &p, &Params::default()).unwrap();
+    let lam = ivs.iter().find(|i| i.name == "lambda").unwrap();
+    let (_, v) = sweep_grid("shamsuzzoha_lee", &p, None, None, 5).unwrap();
+    assert!(!lam.min_open && !lam.max_open);
+    assert_eq!((v[0], v[4]), (lam.min, lam.max));
     let e = sweep_grid("shamsuzzoha_lee", &p, Some("lamda"), None, 3).unwrap_err();
     assert_eq!(e.path, "param");
     let e = sweep_grid("kaya", &p, Some("criterion"), None, 3).unwrap_err();

@@ -3,8 +3,9 @@
 //! records what a trade-off curve plots (IAE servo and load, TV, Ms, Mt). Each point is exactly
 //! what single `tune`, `simulate` and `analyze` calls give for that value.
 //!
-//! The range comes from [`admissible_range`], the one place that chooses it: today the
-//! declared `[min, max]` of the parameter; a plant-aware interval per rule replaces it there.
+//! The range comes from [`admissible_range`], the one place that chooses it: the parameter's
+//! plant-aware interval ([`super::admissible`]), where the rule designs a stable, drawable loop
+//! with 1.1 ≤ Ms ≤ 4.
 
 use super::{registry, tune, MethodInfo, ParamInfo, ParamValue, Params};
 use crate::analysis::freq::analyze;
@@ -54,7 +55,7 @@ pub struct SweepResult {
 pub fn default_param(info: &MethodInfo) -> Result<&ParamInfo> {
     info.params
         .iter()
-        .find(|p| p.choices.is_empty() && p.min.is_some() && !p.name.ends_with("_ms"))
+        .find(|p| p.is_continuous() && !p.name.ends_with("_ms"))
         .ok_or_else(|| {
             Error::new(
                 "param",
@@ -66,12 +67,27 @@ pub fn default_param(info: &MethodInfo) -> Result<&ParamInfo> {
         })
 }
 
-/// The admissible interval of `p` for `plant` (the one place the range is chosen: today the
-/// declared `[min, max]`; the plant is for the rule-specific interval that replaces it).
-pub fn admissible_range(_plant: &Plant, p: &ParamInfo) -> Option<(f64, f64)> {
-    match (p.min, p.max) {
-        (Some(a), Some(b)) if a.is_finite() && b.is_finite() && b > a => Some((a, b)),
-        _ => None,
+/// The admissible interval of `p` for `method` on `plant` ([`super::admissible::admissible`],
+/// the other parameters at their defaults), or its error (path `param` when the parameter has
+/// no interval: a point interval, or none for this plant).
+pub fn admissible_range(method: &str, plant: &Plant, p: &ParamInfo) -> Result<(f64, f64)> {
+    let ivs = super::admissible::admissible(method, plant, &Params::default())?;
+    match ivs.iter().find(|i| i.name == p.name) {
+        Some(i) if i.max > i.min => {
+            // An open end is not admissible itself: one part in a thousand of the span inside.
+            let inset = 1e-3 * (i.max - i.min);
+            let a = if i.min_open { i.min + inset } else { i.min };
+            let b = if i.max_open { i.max - inset } else { i.max };
+            Ok((a, b))
+        }
+        Some(i) => Err(Error::new(
+            "param",
+            format!("'{}' takes only the value {} on this plant", p.name, i.min),
+        )),
+        None => Err(Error::new(
+            "param",
+            format!("'{}' has no interval to sweep", p.name),
+        )),
     }
 }
 
@@ -141,17 +157,15 @@ pub fn sweep_grid(
     range: Option<(f64, f64)>,
     n: usize,
 ) -> Result<(String, Vec<f64>)> {
-    let (_, p) = method_param(method, param)?;
+    let (info, p) = method_param(method, param)?;
     if n == 0 || n > MAX_POINTS {
         return Err(Error::new(
             "points",
             format!("must be an integer in [1, {MAX_POINTS}] (got {n})"),
         ));
     }
-    let declared = admissible_range(plant, &p)
-        .ok_or_else(|| Error::new("param", format!("'{}' has no finite range", p.name)))?;
     let (a, b) = match range {
-        None => declared,
+        None => admissible_range(&info.id, plant, &p)?,
         Some((a, b)) => {
             let (lo, hi) = (p.min.unwrap_or(f64::MIN), p.max.unwrap_or(f64::MAX));
             if !(a.is_finite() && b.is_finite() && a < b && a >= lo && b <= hi) {
