@@ -3,7 +3,8 @@
 //! inside it (`admissible()` of the API; the page's sliders span these intervals).
 //!
 //! A value is **admissible** when the rule tunes without error and the nominal loop is stable
-//! (exact-delay Nyquist verdict, [`DesignCheck`]). Inside the admissible set the slider keeps to
+//! (exact-delay Nyquist verdict and Ms of [`crate::analysis::freq::stability_and_ms`], the
+//! same computation as `analyze`). Inside the admissible set the slider keeps to
 //! the **useful** part, where the sensitivity peak lies in [`MS_LOW`, `MS_HIGH`]: beyond Ms = 4
 //! a loop is too fragile to study, below Ms = 1.1 so sluggish that the slider's travel is wasted
 //! (Shamsuzzoha & Lee's λ from 6 to 1000 moves Ms from 1.06 to 1.00). Each end says why it is
@@ -16,7 +17,7 @@
 //! monotonically on every plant we scanned; a second run elsewhere is not reported). A rule whose
 //! parameter has a closed-form interval may narrow the scan through [`Rule::scan_range`].
 
-use super::{DesignCheck, ParamDefault, ParamInfo, Params, Rule};
+use super::{ParamDefault, ParamInfo, Params, Rule};
 use crate::error::{num, Error, Result};
 use crate::model::plant::Plant;
 use serde::Serialize;
@@ -33,10 +34,10 @@ pub const MS_SUGGESTED: f64 = 1.6;
 /// plant itself answers (Arvanitis's θ_design = 1000 keeps Ms = 1.7 and draws a flat line).
 pub const SLUGGISH: f64 = 50.0;
 /// Grid points of the scan of one parameter.
-pub const GRID: usize = 41;
-/// Relative accuracy of the ends (a slider position is 1/100 of the span or more: this is far
-/// finer than any position, and cheap: ~17 bisection steps per end).
-pub const REL: f64 = 1e-5;
+pub const GRID: usize = 25;
+/// Relative accuracy of the ends: a tenth of the page's inset from an open end (1/1000 of the
+/// span), ~10 bisection steps per end.
+pub const REL: f64 = 1e-4;
 /// Grid points and relative accuracy for a rule that is slow to tune ([`Rule::slow_to_tune`]):
 /// a coarser scan (about 20 designs in all), ends still inside the admissible set.
 pub const GRID_SLOW: usize = 9;
@@ -247,15 +248,11 @@ impl<'a> Judge<'a> {
             .find(|(k, _)| *k == key)
             .map(|(_, o)| o.clone());
         let o = cached.unwrap_or_else(|| {
-            let o = match DesignCheck::of(self.plant, &t.controller) {
-                DesignCheck::Done {
-                    stable: true,
-                    ms: Some(ms),
-                    ..
-                } if ms.is_finite() => Outcome::Stable(ms, false),
-                DesignCheck::Done { stable: false, .. } => Outcome::Unstable,
-                DesignCheck::Done { .. } => Outcome::Fails("no finite Ms".into()),
-                DesignCheck::Failed { analysis_error } => Outcome::Fails(analysis_error),
+            let o = match crate::analysis::freq::stability_and_ms(self.plant, &t.controller) {
+                Ok((true, Some(ms))) if ms.is_finite() => Outcome::Stable(ms, false),
+                Ok((false, _)) => Outcome::Unstable,
+                Ok(_) => Outcome::Fails("no finite Ms".into()),
+                Err(e) => Outcome::Fails(e.to_string()),
             };
             self.seen.borrow_mut().push((key, o.clone()));
             o
@@ -302,8 +299,15 @@ fn grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
             }
             v
         }
+        // The last point exactly `hi` (lo + (hi − lo)·1 can round above it).
         None => (0..n)
-            .map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64)
+            .map(|i| {
+                if i + 1 == n {
+                    hi
+                } else {
+                    lo + (hi - lo) * i as f64 / (n - 1) as f64
+                }
+            })
             .collect(),
     }
 }

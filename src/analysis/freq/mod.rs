@@ -151,6 +151,42 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
     Ok(out)
 }
 
+/// Only the stability verdict and Ms of [`analyze`] (`(stable, ms)`), computed by the same
+/// functions in the same order but without the margins, Mt, bandwidth and Nyquist plot: for
+/// scans that judge many designs (`rules::admissible`). `ms` is `None` when `analyze` has none.
+pub fn stability_and_ms(plant: &Plant, c: &Controller) -> Result<(bool, Option<f64>)> {
+    let (mut stable, ms) = feedback_stability_and_ms(plant, c)?;
+    if let Some(ml) = &c.model_loop {
+        let (inner, _) = feedback_stability_and_ms(&ml.model, &ml.controller())
+            .map_err(|e| e.within("controller.model_loop"))?;
+        stable &= inner;
+    }
+    Ok((stable, ms))
+}
+
+/// [`stability_and_ms`] of the feedback loop alone (the special loops as [`analyze_feedback`]).
+fn feedback_stability_and_ms(plant: &Plant, c: &Controller) -> Result<(bool, Option<f64>)> {
+    let l = LoopTf::new(plant, c);
+    if l.lr.num.is_zero() {
+        let a = no_feedback(plant);
+        return Ok((a.stable, a.ms));
+    }
+    if !l.lr.is_proper() {
+        return Ok((false, None));
+    }
+    let hf = HighFreq::new(&l);
+    let band = Band::new(&l, hf.l_inf);
+    let lim = MsLimits::new(&l, &hf);
+    if hf.neutral && hf.l_inf >= 1.0 {
+        let a = neutral_unstable(&l, &hf, &band);
+        return Ok((a.stable, a.ms));
+    }
+    let sweep = Sweep::run(&l, &band, &hf, &lim);
+    let ms = ms_supremum(&l, &sweep, &lim);
+    let st = stability(&l, c, &band, &hf, sweep.truncated);
+    Ok((st.stable, ms.ms))
+}
+
 /// The feedback loop `L = Cy·P·e^{−θs}` alone (the model loop is [`analyze`]'s business):
 /// the special loops first (no feedback, improper, neutral-unstable), then the sweep on the
 /// imaginary axis, Ms, the margins, the Nyquist plot and the stability verdict.
