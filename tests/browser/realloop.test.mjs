@@ -220,3 +220,26 @@ test('bad values are refused beside the field (page checks and the module\'s err
   await p2.close();
   await p3.close();
 });
+
+test('hash state: real-loop fields are checked for shape; malformed ones fall back to off', () => {
+  const q = (o) => '#' + new URLSearchParams({ s: JSON.stringify(o) }).toString();
+  const st = U.decodeHash(q({
+    actuator: { u_min: 'x', u_max: 2, anti_windup: { kind: 'magic', tt: 1 } },
+    sampling: { h: 'fast', method: 'tustin' },
+    noise: { std: 0.1, seed: -3 },
+  })).state;
+  // the unknown kind is dropped (no anti-windup), the string limit too
+  assert.deepEqual(st.actuator, { u_max: 2 });
+  assert.equal(st.sampling, null);
+  // a negative or fractional seed becomes 0, the module's default
+  assert.deepEqual(st.noise, { std: 0.1, seed: 0 });
+  const st2 = U.decodeHash(q({ actuator: 5, sampling: { h: 0.1, method: 'euler' }, noise: null })).state;
+  assert.equal(st2.actuator, null);
+  assert.deepEqual(st2.sampling, { h: 0.1, method: 'tustin' });
+  // values the module refuses are kept (it names the field), markup never reaches the state
+  const st3 = U.decodeHash(q({ actuator: { u_min: 1, u_max: -1, anti_windup: { kind: 'tracking', tt: -2 } }, sampling: { h: -1 } })).state;
+  assert.deepEqual(st3.actuator, { u_min: 1, u_max: -1, anti_windup: { kind: 'tracking', tt: -2 } });
+  assert.deepEqual(st3.sampling, { h: -1, method: 'tustin' });
+  // off: no keys in the URL
+  assert.ok(!/actuator|sampling|noise/.test(decodeURIComponent(U.encodeHash(S.defaultState()))));
+});
