@@ -65,6 +65,6 @@ export function showMetrics(r) {
   const sv = m.servo || {}, rg = m.regulatory || {};
   setAttr($('plot-servo'), 'aria-label', 'Set-point response of y to a step in r: overshoot ' + (typeof sv.overshoot === 'number' ? overshootText(sv.overshoot) : '–') + ', settling time ' + S.fmt(sv.settling_time) + ', IAE ' + S.fmt(sv.iae));
   setAttr($('plot-load'), 'aria-label', 'Load response of y to a step at the plant input: peak error ' + S.fmt(rg.peak_error) + ', settling time ' + S.fmt(rg.settling_time) + ', IAE ' + S.fmt(rg.iae));
-  setAttr($('plot-u'), 'aria-label', 'Control signal u: total variation ' + S.fmt(sv.tv) + ' (servo), ' + S.fmt(rg.tv) + ' (load)');
+  setAttr($('plot-u'), 'aria-label', 'Control signal u: total variation ' + S.fmt(sv.tv) + ' (servo), ' + S.fmt(rg.tv) + ' (load)' + (typeof sv.saturated === 'number' ? '; u at a limit ' + S.fmt(100 * sv.saturated, 3) + ' % (servo), ' + S.fmt(100 * (rg.saturated || 0), 3) + ' % (load) of the time; the limits and v, the output before them, are drawn too' : ''));
   setAttr($('plot-nyquist'), 'aria-label', 'Nyquist plot of L(jω)' + (r.ctl && r.ctl.model_loop ? ' = Cy·P, the feedback loop only (not the set-point model loop),' : '') + ' with the circle of radius 1/Ms around −1; Ms ' + (r.an ? S.fmt(r.an.ms) : '–') + (r.an && r.an.stable === false ? ', closed loop unstable' : ''));
 }

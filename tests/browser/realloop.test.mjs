@@ -85,6 +85,8 @@ test('limits on: the limit lines and v are drawn, u stays inside and the table s
   // the table's servo TV is the direct call's, and it changed with the limits
   assert.equal(row.cells[5], S.fmt(d.sim.metrics.servo.tv));
   assert.notEqual(row.cells[5], tvOff);
+  // the plot's text equivalent says it too
+  assert.match(await page.getAttribute('#plot-u', 'aria-label'), new RegExp('u at a limit ' + pc(d.sim.metrics.servo.saturated) + ' \\(servo\\)'));
   console.log(`  limits [−1.2, 0.25], h = 0.05: at limit ${row.cells.at(-1)}, servo TV ${tvOff} -> ${row.cells[5]}, pixels ${px.lim}`);
   // off again: no lines, no column
   await click(page, '#rl-limits');
