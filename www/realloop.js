@@ -70,17 +70,24 @@ function selectRow(id, label, opts, value, onValue) {
   return el('div', { class: 'row small', 'data-key': id, 'data-label': label }, el('label', { for: id }, label), sel);
 }
 
-/** Keyboard focus back on a control that was built again (a switch rebuilds the panel). */
-function refocus(id) {
-  const x = $(id);
-  if (x) x.focus();
+/**
+ * Builds the panel again after a switch, once the change event has finished its way up (the
+ * history commits a change whose control is still in the page), and puts the keyboard focus
+ * back on the control that was used.
+ */
+function rebuildSoon(id) {
+  setTimeout(() => {
+    buildReal();
+    const x = $(id);
+    if (x) x.focus();
+  }, 0);
 }
 
 function checkRow(id, label, checked, onValue) {
   Er.forget(id);
   const box = el('input', { type: 'checkbox', id });
   box.checked = checked;
-  box.addEventListener('change', () => { onValue(box.checked); buildReal(); refocus(id); changed(); });
+  box.addEventListener('change', () => { onValue(box.checked); rebuildSoon(id); changed(); });
   return el('div', { class: 'row small check', 'data-key': id, 'data-label': label }, box, el('label', { for: id, text: ' ' + label }));
 }
 
@@ -113,8 +120,7 @@ export function buildReal() {
     const kind = a.anti_windup ? a.anti_windup.kind : 'none';
     kids.push(selectRow('rl-aw', 'Anti-windup', AW_KINDS, kind, (k) => {
       if (k === 'none') delete a.anti_windup; else a.anti_windup = { kind: k };
-      buildReal();
-      refocus('rl-aw');
+      rebuildSoon('rl-aw');
     }));
     if (kind === 'tracking') {
       kids.push(numRow('rl-tt', 'Tracking time tt', a.anti_windup.tt, (v, dry) => {

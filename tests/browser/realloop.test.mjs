@@ -61,6 +61,7 @@ test('limits on: the limit lines and v are drawn, u stays inside and the table s
   // load step (steady state −1): both windows hit these limits, the load is still rejected.
   await setInput(page, '#rl-umin', -1.2);
   await setInput(page, '#rl-umax', 0.25);
+  await page.dispatchEvent('#rl-umax', 'change'); // the box is left: the history commits
   const st = await page.evaluate(() => window.__pidlab.state());
   assert.deepEqual(st.actuator, { u_min: -1.2, u_max: 0.25 });
   // the default design has an ideal derivative: the page starts it with backward Euler (Tustin
@@ -93,6 +94,11 @@ test('limits on: the limit lines and v are drawn, u stays inside and the table s
   assert.equal((await page.evaluate(() => window.__pidlab.state())).actuator, null);
   assert.ok(!(await header(page)).includes('At limit (servo / load)'));
   assert.ok((await uPixels(page)).lim < 50, 'limit lines gone');
+  // a switch is one history entry: Undo turns the limits back on, the panel follows
+  await click(page, '#undo');
+  assert.deepEqual((await page.evaluate(() => window.__pidlab.state())).actuator, { u_min: -1.2, u_max: 0.25 });
+  assert.equal(await page.isChecked('#rl-limits'), true);
+  assert.equal(await page.inputValue('#rl-umax'), '0.25');
   assert.deepEqual(log.errors, []);
   await page.close();
 });
