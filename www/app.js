@@ -25,6 +25,7 @@ import { updateSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeo
 import * as Er from './errors.js';
 import * as Hi from './history.js';
 import * as XD from './export-data.js';
+import * as RL from './realloop.js';
 
 /** Builds every control from the state. */
 function buildAll() {
@@ -32,6 +33,7 @@ function buildAll() {
   C.buildMethod();
   C.buildPert();
   C.buildScenario();
+  RL.buildReal();
   Pr.showPresetInfo();
   Sh.buildEmbedChoices();
   Sh.applyEmbed();

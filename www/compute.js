@@ -6,6 +6,7 @@ import * as E from './engine.js';
 import { errText } from './dom.js';
 import { store, methodParams } from './store.js';
 import { lap } from './perf.js';
+import { simInput } from './realloop.js';
 
 /** Adds a banner for a failed call, unless the module crashed (the crash has its own banner). */
 function failed(r, title, e) {
@@ -36,13 +37,14 @@ export function compute() {
   const controller = S.controllerOf(r.ctl);
   const perturbed = S.isPerturbed(state.pert);
   r.truePlant = perturbed ? S.perturbPlant(state.plant, state.pert) : state.plant;
+  const real = simInput(state); // actuator limits, sampling, noise (issue 13), when set
   try {
-    r.sim = E.run('simulate', { plant: r.truePlant, controller, scenario: state.scenario });
+    r.sim = E.run('simulate', { plant: r.truePlant, controller, scenario: state.scenario, ...real });
   } catch (e) {
     failed(r, 'Ill-posed loop: cannot simulate', e);
   }
   if (perturbed) {
-    try { r.simNom = E.run('simulate', { plant: state.plant, controller, scenario: state.scenario }); } catch { r.simNom = null; }
+    try { r.simNom = E.run('simulate', { plant: state.plant, controller, scenario: state.scenario, ...real }); } catch { r.simNom = null; }
   }
   t0 = lap('simulate', t0);
   try {

@@ -37,6 +37,14 @@ const SCENARIO_IDS = {
   'disturbance.time': 'sc-d_time', 'disturbance.size': 'sc-d_size',
 };
 
+// Paths of the real loop (issue 13) and the controls that own them (the first that exists).
+const REAL_IDS = {
+  'actuator': ['rl-limits'], 'actuator.u_min': ['rl-umin'], 'actuator.u_max': ['rl-umax'],
+  'actuator.anti_windup': ['rl-aw'], 'actuator.anti_windup.kind': ['rl-aw'], 'actuator.anti_windup.tt': ['rl-tt', 'rl-aw'],
+  'sampling': ['rl-sampled'], 'sampling.h': ['rl-h'], 'sampling.method': ['rl-method'],
+  'noise': ['rl-noise'], 'noise.std': ['rl-noise'], 'noise.seed': ['rl-noise'],
+};
+
 /** The input element that owns an API path (params.lambda, plant.theta, scenario.dt …), or null. */
 export function controlFor(path) {
   const [head, ...rest] = String(path).split('.');
@@ -54,6 +62,7 @@ export function controlFor(path) {
   }
   if (head === 'scenario' && SCENARIO_IDS[sub]) return byId(SCENARIO_IDS[sub]);
   if (head === 'method') return byId('method');
+  if (REAL_IDS[path]) return byId(...REAL_IDS[path]); // the real-loop controls (realloop.js)
   return null;
 }
 
@@ -82,11 +91,14 @@ const WORDS = [
   [/^scenario/, 'The scenario'],
   [/^params/, 'The method\'s parameters'],
   [/^spec/, 'The plot'],
+  [/^actuator/, 'The actuator limits'],
+  [/^sampling/, 'The sampled controller'],
+  [/^noise/, 'The measurement noise'],
 ];
 const words = (path) => (WORDS.find(([re]) => re.test(path)) || [null, ''])[1];
 
 // A path begins with one of the API's top-level fields (a verdict such as "unstable: …" is not one).
-const PATH = /^((?:params|plant|scenario|controller|method|spec)(?:\.[a-z0-9_]+)*): ([\s\S]*)$/i;
+const PATH = /^((?:params|plant|scenario|controller|method|spec|actuator|sampling|noise)(?:\.[a-z0-9_]+)*): ([\s\S]*)$/i;
 
 /** Splits "params.lambda: must …" into { path, message } (path '' when there is none). */
 export function splitPath(text) {

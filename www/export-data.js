@@ -16,6 +16,7 @@ export const UNITS = {
   y: 'unit of the plant output',
   u: 'unit of the plant input',
   d: 'unit of the plant input (the load enters at the plant input)',
+  v: 'unit of the plant input (the controller output before the limits)',
 };
 
 /** The design shown: plant, method and parameters, controller (Cr, Cy, named gains, model
@@ -39,6 +40,8 @@ export function designOf() {
     true_plant: S.isPerturbed(state.pert) && last ? last.truePlant : null,
     units: UNITS,
   };
+  // the real loop (issue 13), when set: as simulate() took them
+  for (const k of ['actuator', 'sampling', 'noise']) if (state[k]) d[k] = state[k];
   if (state.target !== null) d.params.target_ms = state.target;
   return d;
 }
@@ -48,6 +51,7 @@ function responseColumns() {
   const r = store.last;
   if (r && r.sim) {
     cols.push(['t', r.sim.t], ['r', r.sim.r], ['d', r.sim.d], ['y', r.sim.y], ['u', r.sim.u]);
+    if (Array.isArray(r.sim.v)) cols.push(['v', r.sim.v]); // before the limits (sampled loop)
     if (r.simNom) cols.push(['y_nominal', r.simNom.y], ['u_nominal', r.simNom.u]);
   }
   P.pinned().forEach((p, i) => {
@@ -68,6 +72,7 @@ export function csvText() {
     '# method: ' + (d.method_title || d.method) + (d.citation ? ' [' + d.citation + ']' : '') + '; params ' + JSON.stringify(d.params),
     '# controller: ' + (d.controller ? 'Cr(s) = ' + tfText(d.controller.cr) + '; Cy(s) = ' + tfText(d.controller.cy) + '; u = Cr r - Cy y; gains ' + JSON.stringify(d.controller.gains) + (d.controller.model_loop ? '; with a set-point model loop (see the JSON line)' : '') : 'none'),
     '# scenario: t_end ' + sc.t_end + ', dt ' + sc.dt + ', set-point step ' + sc.setpoint.size + ' at t = ' + sc.setpoint.time + ', load step ' + sc.disturbance.size + ' at t = ' + sc.disturbance.time + ' (plant input)',
+    '# real loop: actuator ' + (d.actuator ? JSON.stringify(d.actuator) : 'none (no limits)') + '; sampling ' + (d.sampling ? JSON.stringify(d.sampling) : 'none (continuous controller)') + '; noise ' + (d.noise ? JSON.stringify(d.noise) : 'none'),
     '# perturbation of the true plant [%]: ' + JSON.stringify(d.perturbation_percent),
     '# units: ' + Object.entries(d.units).map(([k, v]) => k + ' in ' + v).join('; '),
     '# design (JSON): ' + JSON.stringify(d),

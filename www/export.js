@@ -135,5 +135,25 @@ export function buildExport(targets) {
   $('export-target').addEventListener('change', showSampled);
   $('export-aw').addEventListener('change', showSampled);
   $('export-download').addEventListener('click', exportCode);
+  const menu = $('export-menu');
+  if (menu) menu.addEventListener('toggle', () => { if (menu.open) pageDefaults(); });
+  pageDefaults();
+  showSampled();
+}
+
+/** The sampling and actuator fields from the page's real loop, when it sets them (issue 13). */
+export function pageDefaults() {
+  const { sampling, actuator } = store.state;
+  if (sampling) {
+    $('export-h').value = String(sampling.h);
+    $('export-method').value = sampling.method || 'tustin';
+  }
+  if (actuator) {
+    $('export-umin').value = typeof actuator.u_min === 'number' ? String(actuator.u_min) : '';
+    $('export-umax').value = typeof actuator.u_max === 'number' ? String(actuator.u_max) : '';
+    const aw = actuator.anti_windup;
+    $('export-aw').value = aw ? aw.kind : 'none';
+    $('export-tt').value = aw && typeof aw.tt === 'number' ? String(aw.tt) : '';
+  }
   showSampled();
 }

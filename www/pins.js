@@ -5,6 +5,7 @@ import * as S from './state.js';
 import * as E from './engine.js';
 import { $, el } from './dom.js';
 import { store, changed, methodInfo, methodParams } from './store.js';
+import { simInput } from './realloop.js';
 
 // Okabe–Ito palette (colour-blind safe): current design, reference, then the pins.
 export const COLORS = { current: '#0072B2', reference: '#000000', pins: ['#D55E00', '#009E73', '#CC79A7', '#E69F00', '#56B4E9', '#999999'] };
@@ -28,7 +29,7 @@ export function pinLabel() {
 
 function simulatePin(p, i) {
   const out = { label: p.label, color: COLORS.pins[i % COLORS.pins.length], sim: null, L: null, ms: null };
-  try { out.sim = E.call('simulate', { plant: p.plant, controller: p.controller, scenario: store.state.scenario }); } catch { out.sim = null; }
+  try { out.sim = E.call('simulate', { plant: p.plant, controller: p.controller, scenario: store.state.scenario, ...simInput(p) }); } catch { out.sim = null; }
   try {
     const an = E.call('analyze', { plant: p.plant, controller: p.controller });
     out.ms = an.ms;
@@ -65,7 +66,7 @@ export function pin() {
   const { state, last } = store;
   if (!last || !last.ctl) return;
   if (state.pins.length >= 6) state.pins.shift();
-  state.pins.push({ label: pinLabel(), plant: structuredClone(last.truePlant || state.plant), controller: structuredClone(S.controllerOf(last.ctl)), scenario: structuredClone(state.scenario) });
+  state.pins.push({ label: pinLabel(), plant: structuredClone(last.truePlant || state.plant), controller: structuredClone(S.controllerOf(last.ctl)), scenario: structuredClone(state.scenario), ...structuredClone(simInput(state)) });
   refreshPins();
   changed();
 }

@@ -8,6 +8,7 @@ import { lap } from './perf.js';
 import * as P from './pins.js';
 import { showBanners } from './readouts.js';
 import { envelope } from './envelope.js';
+import { limitLines } from './realloop.js';
 
 const C_CUR = P.COLORS.current;
 const C_REF = P.COLORS.reference;
@@ -224,6 +225,13 @@ export function drawPlots(r) {
     const w = series(run.sim, 'u', null, null, nb);
     return { label: run.label.replace(/^y/, 'u'), x: w.x, y: w.y, color: run.color, faint: run.faint };
   });
+  // The real loop (issue 13): the controller's output before the limits, v, and the limits.
+  if (r.sim && Array.isArray(r.sim.v) && r.sim.v.length === r.sim.t.length) {
+    const w = series(r.sim, 'v', null, null, nb);
+    u.push({ label: 'v (controller output before the limits)', x: w.x, y: w.y, color: '#56B4E9', dash: 'dash', width: 1.5 });
+  }
+  const tEnd = r.sim && r.sim.t.length ? r.sim.t[r.sim.t.length - 1] : sc.t_end;
+  for (const l of limitLines(state)) u.push({ label: l.label, x: [0, tEnd], y: [l.y, l.y], color: '#D55E00', dash: 'dot', width: 1.5 });
   lap('plots: series', t2);
   plot({ canvas: 'plot-u', kind: 'time', dpr: k, title: 'Control signal', xlabel: 'time', ylabel: 'u', series: u, vlines: divLines });
 

@@ -5,6 +5,7 @@ import * as E from './engine.js';
 import { $, el } from './dom.js';
 import { store, changed, rebuild } from './store.js';
 import * as P from './pins.js';
+import { simInput } from './realloop.js';
 
 export function buildPresets() {
   const sel = $('preset');
@@ -38,6 +39,7 @@ function loadPreset(id) {
   if (p.scenario) state.scenario = S.cleanState({ scenario: p.scenario }).scenario;
   state.pert = { k: 0, tau: 0, zero: 0, theta: 0 };
   state.target = null;
+  Object.assign(state, S.cleanReal(p)); // its actuator, sampling, noise (the windup demo); else off
   // A rule applied to a reduced model (tune.plant) and simulated on the process itself: the
   // designed controller is loaded as a literal on the process (the paper's figure).
   const model = p.tune && p.tune.plant ? S.cleanPlant(p.tune.plant) : null;
@@ -78,7 +80,7 @@ export function pinExample() {
     }
     if (!controller) continue;
     if (state.pins.length >= 6) state.pins.shift();
-    state.pins.push({ label: p.title, plant, controller: S.controllerOf(controller), scenario: structuredClone(state.scenario) });
+    state.pins.push({ label: p.title, plant, controller: S.controllerOf(controller), scenario: structuredClone(state.scenario), ...simInput(S.cleanReal(p)) });
   }
   P.refreshPins();
   changed();

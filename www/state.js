@@ -36,6 +36,10 @@ export function defaultState() {
     pert: { k: 0, tau: 0, zero: 0, theta: 0 },
     pins: [],
     show: [],
+    // the real loop (issue 13, realloop.js): simulate()'s actuator, sampling, noise; null = off
+    actuator: null,
+    sampling: null,
+    noise: null,
   };
 }
 
@@ -120,6 +124,34 @@ export function cleanController(c) {
   return out;
 }
 
+/**
+ * The real-loop fields of an untrusted object ({ actuator, sampling, noise }, each null when
+ * absent or malformed) in the form simulate() takes. Only the shape is checked here (finite
+ * numbers, known kinds): values the module refuses (crossed limits, h ≤ 0, …) are kept, so its
+ * error is shown beside the field.
+ */
+export function cleanReal(raw) {
+  const out = { actuator: null, sampling: null, noise: null };
+  if (!raw || typeof raw !== 'object') return out;
+  const a = raw.actuator;
+  if (a && typeof a === 'object') {
+    const act = {};
+    if (isNum(a.u_min)) act.u_min = a.u_min;
+    if (isNum(a.u_max)) act.u_max = a.u_max;
+    const aw = a.anti_windup;
+    if (aw && typeof aw === 'object' && ['none', 'tracking', 'conditional'].includes(aw.kind)) {
+      act.anti_windup = { kind: aw.kind };
+      if (aw.kind === 'tracking' && isNum(aw.tt)) act.anti_windup.tt = aw.tt;
+    }
+    out.actuator = act;
+  }
+  const sm = raw.sampling;
+  if (sm && typeof sm === 'object' && isNum(sm.h)) out.sampling = { h: sm.h, method: ['tustin', 'backward', 'forward'].includes(sm.method) ? sm.method : 'tustin' };
+  const n = raw.noise;
+  if (n && typeof n === 'object' && isNum(n.std)) out.noise = { std: n.std, seed: Number.isSafeInteger(n.seed) && n.seed >= 0 ? n.seed : 0 };
+  return out;
+}
+
 /** Validates a decoded state object field by field; anything malformed falls back to the default. */
 export function cleanState(raw) {
   const s = defaultState();
@@ -149,10 +181,12 @@ export function cleanState(raw) {
           plant,
           controller,
           scenario: cleanScenario(p.scenario),
+          ...Object.fromEntries(Object.entries(cleanReal(p)).filter(([, v]) => v)),
         });
       }
     }
   }
+  Object.assign(s, cleanReal(raw));
   if (Array.isArray(raw.show)) s.show = raw.show.filter((x) => isId(x)).slice(0, 32);
   return s;
 }

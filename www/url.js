@@ -7,6 +7,7 @@ export function encodeHash(state, embed = false) {
   const s = { ...state };
   if (!s.show || s.show.length === 0) delete s.show;
   if (!s.pins || s.pins.length === 0) delete s.pins;
+  for (const k of ['actuator', 'sampling', 'noise']) if (!s[k]) delete s[k]; // the real loop, off
   const q = new URLSearchParams();
   if (embed) q.set('embed', '1');
   q.set('s', JSON.stringify(s));
