@@ -160,12 +160,15 @@ test('postMessage API: get, set and change events between origins, with origin c
 
 test('postMessage API: a host whose origin is not the one named is ignored', async () => {
   const { page, frame, send, errors } = await hostPage('https://other.example');
+  const lambda0 = (await frame().evaluate(() => window.__pidlab.state())).params.lambda;
   await send({ type: 'pidlab:get', id: 1 });
   await send({ type: 'pidlab:set', id: 2, state: { params: { lambda: 3 } } });
   // the messages are dispatched before this evaluation runs (same event loop, in order)
   await frame().waitForFunction(() => window.__pidlab.api().refused === 2, null, { timeout: 10000 });
   const s = await frame().evaluate(() => window.__pidlab.state());
-  assert.equal(s.params.lambda, 0.6);
+  // unchanged (the start value is the plant's suggested λ, not the 3 the host sent)
+  assert.notEqual(lambda0, 3);
+  assert.equal(s.params.lambda, lambda0);
   assert.deepEqual(await page.evaluate(() => window.msgs), [], 'nothing is sent to another origin');
   assert.deepEqual(errors, []);
   await page.close();
