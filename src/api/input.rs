@@ -193,6 +193,9 @@ impl TfIn {
     }
 }
 
+/// Every family parameter a plant object may carry.
+const FAMILY_FIELDS: [&str; 7] = ["k", "tau", "tau_z", "z", "tau1", "tau2", "theta"];
+
 /// A plant: `{num, den, delay}` or `{family, …its parameters}`; both together (what `tune`
 /// returns as `plant`) when they agree.
 #[derive(Debug, Deserialize)]
@@ -203,6 +206,8 @@ pub struct PlantIn {
     tau: Option<Num>,
     tau_z: Option<Num>,
     z: Option<Num>,
+    tau1: Option<Num>,
+    tau2: Option<Num>,
     theta: Option<Num>,
     num: Option<Vec<Num>>,
     den: Option<Vec<Num>>,
@@ -216,6 +221,8 @@ impl PlantIn {
             "tau" => self.tau,
             "tau_z" => self.tau_z,
             "z" => self.z,
+            "tau1" => self.tau1,
+            "tau2" => self.tau2,
             "theta" => self.theta,
             _ => None,
         }
@@ -225,7 +232,7 @@ impl PlantIn {
     /// The plant; errors name `path.<field>`.
     pub fn build(&self, path: &str) -> Result<Plant> {
         let Some(id) = &self.family else {
-            for n in ["k", "tau", "tau_z", "z", "theta"] {
+            for n in FAMILY_FIELDS {
                 if self.get(n).is_some() {
                     return Err(Error::new(
                         format!("{path}.{n}"),
@@ -252,7 +259,7 @@ impl PlantIn {
                 format!("unknown family '{id}' (one of {})", Family::IDS.join(", ")),
             )
         })?;
-        for n in ["k", "tau", "tau_z", "z", "theta"] {
+        for n in FAMILY_FIELDS {
             if self.get(n).is_some() && !names.contains(&n) {
                 return Err(Error::new(
                     format!("{path}.{n}"),
