@@ -28,6 +28,10 @@ export function sliderEnds(r) {
 /** The value at a position (rounded to a tenth of the step between positions there, so the
  *  number box shows a short number that stays strictly inside an open end). */
 export function valueAt(r, pos) {
+  // a closed end is the interval's own end, exactly (10 ** log10(x) may differ from x in the
+  // last bit and land outside it)
+  if (pos <= 0 && !r.minOpen) return r.min;
+  if (pos >= POSITIONS && !r.maxOpen) return r.max;
   const { a, b } = sliderEnds(r);
   const x = a + (pos / POSITIONS) * (b - a);
   const v = r.log ? 10 ** x : x;
@@ -37,6 +41,9 @@ export function valueAt(r, pos) {
   // the rounding must not carry the value past the slider's own ends
   const lo = r.log ? 10 ** a : a, hi = r.log ? 10 ** b : b;
   if (!(out >= Math.min(lo, hi)) || !(out <= Math.max(lo, hi))) out = v;
+  // nor past a closed end of the interval (the same last-bit rounding of 10 ** x)
+  if (!r.maxOpen && out > r.max) out = r.max;
+  if (!r.minOpen && out < r.min) out = r.min;
   return out;
 }
 
