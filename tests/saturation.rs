@@ -403,3 +403,84 @@ fn wide_limits_equal_the_linear_loop() {
         }
     }
 }
+
+/// The applied u is sat(v) at every sample, `tv` is its total variation, and `saturated` is
+/// the time at a limit: within the samples' resolution of the fraction of samples at a limit
+/// (each entry into or exit from a limit moves the sampled count by at most one sample).
+#[wasm_bindgen_test(unsupported = test)]
+fn applied_input_time_at_limit_and_tv() {
+    let case = &cases()[0];
+    let c = case.c.pid().to_controller().unwrap();
+    let (dt, t_end) = (0.05, 40.0);
+    let sc = Scenario::steps(t_end, dt, 0.0, 1.0, 20.0, case.d);
+    let rl = RealLoop {
+        limits: case.limits,
+        ..RealLoop::default()
+    };
+    let res = simulate_real(&case.plant, &c, &sc, &rl).unwrap();
+    let v = res.v.as_ref().unwrap();
+    for (u, v) in res.u.iter().zip(v) {
+        assert!((u - case.limits.sat(*v)).abs() <= 1e-12, "{u} vs sat({v})");
+    }
+    let servo = res.metrics.servo.as_ref().unwrap();
+    let n = (20.0 / dt).round() as usize;
+    let at: Vec<bool> = res.u[..n]
+        .iter()
+        .map(|u| (u - 1.5).abs() <= 1e-12 || (u + 1.5).abs() <= 1e-12)
+        .collect();
+    let switches = at.windows(2).filter(|w| w[0] != w[1]).count();
+    let frac = at.iter().filter(|a| **a).count() as f64 / n as f64;
+    let sat = servo.saturated.unwrap();
+    println!("servo: saturated = {sat:.4}, sampled fraction = {frac:.4}, {switches} switches");
+    assert!(sat > 0.0 && switches > 0);
+    assert!(
+        (sat - frac).abs() <= (switches + 1) as f64 / n as f64,
+        "{sat} vs {frac}"
+    );
+    // the window's TV includes the kick from u(0⁻) = 0 (metrics docs)
+    let tv: f64 = res.u[0].abs()
+        + res.u[..=n]
+            .windows(2)
+            .map(|w| (w[1] - w[0]).abs())
+            .sum::<f64>();
+    println!(
+        "servo: tv = {:.6} (Σ|Δu| of the applied samples {tv:.6})",
+        servo.tv
+    );
+    assert!((servo.tv - tv).abs() <= 1e-9 * tv.max(1.0) + (res.u[n] - res.u[n - 1]).abs());
+}
+
+/// Through the JSON API: a continuous controller with limits is simulated (v and
+/// metrics.saturated in the result); conditional anti-windup and bad limits still error.
+#[wasm_bindgen_test(unsupported = test)]
+fn api_continuous_limits() {
+    let pid = Pid::ideal(1.61, 11.5, 1.15).filter_n(10.0);
+    let c = pid.to_controller().unwrap();
+    let (num, den) = (c.cr.to_desc(), c.cy.to_desc());
+    let base = serde_json::json!({
+        "plant": {"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1},
+        "controller": {"cr": {"num": num.0, "den": num.1}, "cy": {"num": den.0, "den": den.1}},
+        "scenario": {"t_end": 20, "dt": 0.05, "setpoint": {"size": 1}},
+        "actuator": {"u_min": -1.5, "u_max": 1.5, "anti_windup": {"kind": "tracking"}}
+    });
+    let j = pidlab::api::simulate(&base).unwrap();
+    let u = j["u"].as_array().unwrap();
+    assert!(u.iter().all(|x| x.as_f64().unwrap().abs() <= 1.5 + 1e-12));
+    assert!(j["v"].as_array().unwrap().len() == u.len());
+    let s = j["metrics"]["servo"]["saturated"].as_f64().unwrap();
+    assert!(s > 0.0 && s < 1.0, "{s}");
+    let mut x = base.clone();
+    x["actuator"]["anti_windup"] = serde_json::json!({"kind": "conditional"});
+    let e = pidlab::api::simulate(&x).unwrap_err();
+    assert_eq!(e.path, "actuator.anti_windup", "{e}");
+    let mut x = base.clone();
+    x["actuator"]["u_min"] = serde_json::json!(2);
+    assert!(pidlab::api::simulate(&x)
+        .unwrap_err()
+        .path
+        .starts_with("actuator.u_max"));
+    let mut x = base;
+    x["plant"] = serde_json::json!({"family": "fopdt", "k": 1, "tau": 1, "theta": 0});
+    let e = pidlab::api::simulate(&x).unwrap_err();
+    assert!(e.path.starts_with("plant"), "{e}");
+}
