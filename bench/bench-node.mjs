@@ -1,7 +1,7 @@
 // Benchmark of one slider update in Node (the wasm-pack nodejs build in pkg-node/):
 // tune + simulate 3001 points (t_end 30, dt 0.01, set-point step at 0, load step at 15) +
 // analyze, on the boiler steam drum; the same update sampled (h = 0.01) and sampled with a
-// limited valve and anti-windup; then every method of methods() on its first preset.
+// limited valve and anti-windup, and continuous with that valve; then every method of methods() on its first preset.
 //
 //   node bench/bench-node.mjs [runs]      (scripts/bench.sh builds pkg-node and runs this)
 import { createRequire } from 'node:module';
@@ -84,7 +84,9 @@ row('analyze', time(() => pidlab.analyze({ plant: BOILER, controller: ctl }), RU
 // derivative), then also with the valve limited to ±1.5 and tracking anti-windup.
 const SAMPLED = { sampling: { h: 0.01, method: 'backward' } };
 const SATURATED = { ...SAMPLED, actuator: { u_min: -1.5, u_max: 1.5, anti_windup: { kind: 'tracking' } } };
-for (const [name, extra] of [['update, sampled h = 0.01 (tune + simulate + analyze)', SAMPLED], ['update, sampled h = 0.01, valve ±1.5, tracking anti-windup', SATURATED]]) {
+// the continuous controller with the same valve (limit switches located to round-off)
+const CONTINUOUS = { actuator: SATURATED.actuator };
+for (const [name, extra] of [['update, sampled h = 0.01 (tune + simulate + analyze)', SAMPLED], ['update, sampled h = 0.01, valve ±1.5, tracking anti-windup', SATURATED], ['update, continuous, valve ±1.5, tracking anti-windup', CONTINUOUS]]) {
   row(name, time(() => {
     const controller = tuneCall ? pidlab.tune(tuneCall).controller : IPD;
     pidlab.simulate({ plant: BOILER, controller, scenario: SCENARIO, ...extra });

@@ -373,11 +373,7 @@ fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool)
         tv: total_variation(res, a, b, sc.t_end),
         y_final,
         u_final,
-        saturated: res
-            .sampled
-            .as_ref()
-            .filter(|s| s.limits.is_active())
-            .map(|s| s.fraction_at_limit(a, b)),
+        saturated: res.fraction_at_limit(a, b),
     }
 }
 

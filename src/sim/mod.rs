@@ -35,11 +35,13 @@
 pub(crate) mod model_loop;
 pub mod noise;
 pub mod sampled;
+pub mod saturation;
 mod scenario;
 pub(crate) mod single;
 mod trajectory;
 
 pub use sampled::{NoiseSpec, RealLoop, SampledRecord, Sampling};
+pub use saturation::LimitRecord;
 pub use scenario::{Scenario, Step};
 pub(crate) use single::LoopModel;
 pub(crate) use trajectory::{interpolation_inverse, piece_exponential};
@@ -76,9 +78,11 @@ pub struct Response {
     pub steady: Vec<SteadyPoint>,
     /// Sampled loops: the controller's samples (`v_k`, `u_k`, `n_k`); `None` for continuous.
     pub sampled: Option<SampledRecord>,
-    /// Controller output before the limits at the output samples (sampled loops; `None`
-    /// otherwise, where `v = u`).
+    /// Controller output before the limits at the output samples (loops with limits or
+    /// sampling; `None` otherwise, where `v = u`).
     pub v: Option<Vec<f64>>,
+    /// Continuous controllers with limits: the intervals during which u is at a limit.
+    pub limit_record: Option<LimitRecord>,
 }
 
 impl Response {
@@ -93,6 +97,17 @@ impl Response {
             .iter()
             .find(|(k, _)| *k == (r, d))
             .and_then(|(_, v)| *v)
+    }
+
+    /// Fraction of `[a, b]` during which the applied u is at a limit (`None`: no limits).
+    pub fn fraction_at_limit(&self, a: f64, b: f64) -> Option<f64> {
+        if let Some(rec) = &self.limit_record {
+            return Some(rec.fraction_at_limit(a, b));
+        }
+        self.sampled
+            .as_ref()
+            .filter(|s| s.limits.is_active())
+            .map(|s| s.fraction_at_limit(a, b))
     }
 }
 
@@ -136,6 +151,7 @@ pub(crate) fn sample(
         trajectory: traj,
         sampled: None,
         v: None,
+        limit_record: None,
     };
     let traj = &res.trajectory;
     let t_traj_end = traj.end();
@@ -166,10 +182,13 @@ pub(crate) fn sample(
 /// noise ([`RealLoop`]); with none of them it is [`simulate`].
 ///
 /// Supported: every rational (Cr, Cy) controller **sampled** ([`sampled`]: limits act on the
-/// held `u_k`, anti-windup in the discretised `A_o` or clamping form, noise on `y_k`).
-/// Refused with an error naming the field: limits or anti-windup on a **continuous**
-/// controller (`actuator`: give `sampling`), noise without sampling (`noise`), and any of them
-/// with a model-based set-point loop (`controller.model_loop`).
+/// held `u_k`, anti-windup in the discretised `A_o` or clamping form, noise on `y_k`), and
+/// **continuous** with limits ([`saturation`]: anti-windup `"none"` or `"tracking"`, events
+/// located to round-off; plants with dead time). Refused with an error naming the field:
+/// conditional anti-windup on a continuous controller (`actuator.anti_windup`), continuous
+/// limits on a plant without dead time (`plant.delay`), noise without sampling (`noise`), and
+/// any of them with a model-based set-point loop (`controller.model_loop`). Anti-windup
+/// without limits on a continuous controller is inactive: the linear loop.
 pub fn simulate_real(
     plant: &Plant,
     c: &Controller,
@@ -195,11 +214,7 @@ pub fn simulate_real(
         ));
     }
     let Some(smp) = rl.sampling else {
-        return Err(crate::error::Error::new(
-            "actuator",
-            "limits and anti-windup are simulated for sampled controllers: give sampling { h } \
-             (a continuous controller with limits is not supported yet)",
-        ));
+        return simulate_saturated(plant, c, sc, rl);
     };
     let (traj, diverged_at, rec) = sampled::integrate(plant, c, sc, rl, smp)?;
     let steady_model = LoopModel::new(plant, c, false).ok();
@@ -221,5 +236,38 @@ pub fn simulate_real(
     }
     res.v = Some(v);
     res.sampled = Some(rec);
+    Ok(res)
+}
+
+/// The continuous controller with limits ([`saturation`]).
+fn simulate_saturated(
+    plant: &Plant,
+    c: &Controller,
+    sc: &Scenario,
+    rl: &RealLoop,
+) -> Result<Response> {
+    let lim = rl.limits;
+    if !lim.is_active() {
+        let mut res = simulate(plant, c, sc)?;
+        res.v = Some(res.u.clone());
+        return Ok(res);
+    }
+    let run = saturation::integrate(plant, c, sc, lim, rl.anti_windup)?;
+    let steady_model = LoopModel::new(plant, c, false).ok();
+    let steady = |r: f64, d: f64| {
+        let (y, u) = steady_model.as_ref()?.steady_state(r, d)?;
+        (u >= lim.u_min && u <= lim.u_max).then_some((y, u))
+    };
+    let mut res = sample(sc, run.traj, run.diverged_at, &steady);
+    let v = res
+        .t
+        .iter()
+        .map(|t| {
+            let (k, s) = res.trajectory.locate(*t);
+            lagrange(&run.v_nodes[k * NODES..(k + 1) * NODES], s)
+        })
+        .collect();
+    res.v = Some(v);
+    res.limit_record = Some(run.record);
     Ok(res)
 }

@@ -104,7 +104,8 @@ test('bad input: clear errors naming the field, nothing traps', () => {
     [{ sampling: { h: 0.1 } }, 'controller.c'], // ideal derivative under tustin
     [{ noise: { std: 0.1 } }, 'noise'],
     [{ sampling: { h: 0.1, method: 'backward' }, noise: { std: -1 } }, 'noise.std'],
-    [{ actuator: { u_max: 1 } }, 'actuator'], // limits need sampling (continuous: not yet)
+    // continuous limits run (see below); continuous clamping is refused
+    [{ actuator: { u_max: 1, anti_windup: { kind: 'conditional' } } }, 'actuator.anti_windup'],
   ];
   for (const [extra, path] of cases) {
     assert.throws(
@@ -113,4 +114,22 @@ test('bad input: clear errors naming the field, nothing traps', () => {
       JSON.stringify(extra),
     );
   }
+});
+
+test('continuous controller with limits: u = sat(v) at every sample, wide limits = the linear loop', () => {
+  const base = { plant: BOILER, controller: IPD, scenario: SCENARIO };
+  const lin = pidlab.simulate(base);
+  const umax = Math.max(...arr(lin.u).map(Math.abs));
+  const lim = 0.5 * umax;
+  const res = pidlab.simulate({ ...base, actuator: { u_min: -lim, u_max: lim, anti_windup: { kind: 'tracking' } } });
+  assert.ok(finiteArray(res.y) && finiteArray(res.v));
+  const u = arr(res.u), v = arr(res.v);
+  for (let i = 0; i < u.length; i++) {
+    assert.ok(Math.abs(u[i] - Math.min(Math.max(v[i], -lim), lim)) <= 1e-12, `sample ${i}`);
+  }
+  assert.ok(u.some((x) => Math.abs(Math.abs(x) - lim) <= 1e-12), 'the limit acts');
+  const wide = pidlab.simulate({ ...base, actuator: { u_min: -10 * umax, u_max: 10 * umax } });
+  // both exact to round-off (tests/saturation.rs measures 1e-13)
+  const dy = Math.max(...arr(wide.y).map((y, i) => Math.abs(y - lin.y[i])));
+  assert.ok(dy <= 1e-9, `wide limits: max |Δy| = ${dy}`);
 });
