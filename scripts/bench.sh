@@ -20,6 +20,7 @@ echo "## wasm in Node (pkg-node)"
 wasm-pack --quiet build --release --target nodejs --out-dir pkg-node >/dev/null 2>&1 \
   || wasm-pack build --release --target nodejs --out-dir pkg-node
 bash scripts/wasm-opt.sh pkg-node >&2
+node scripts/js-api.mjs pkg-node >&2
 out=$(mktemp)
 trap 'rm -f "$out"' EXIT
 BENCH_OUT="$out" node bench/bench-node.mjs "$RUNS"

@@ -9,6 +9,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build_pkg() {
   wasm-pack build --release --target web --out-dir www/pkg "$@"
+  node scripts/js-api.mjs www/pkg
 }
 if [ ! -f www/pkg/pidlab_bg.wasm ] || [ ! -f www/pkg/pidlab.js ]; then
   echo "build-page.sh: www/pkg missing; building it with wasm-pack" >&2

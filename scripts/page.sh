@@ -25,6 +25,7 @@ bash scripts/ensure-tools.sh
 echo "== wasm-pack build --release --target web --out-dir www/pkg (then wasm-opt -O3)"
 wasm-pack build --release --target web --out-dir www/pkg
 bash scripts/wasm-opt.sh www/pkg
+node scripts/js-api.mjs www/pkg
 if [ -f scripts/build-page.sh ]; then
   echo "== scripts/build-page.sh"
   bash scripts/build-page.sh

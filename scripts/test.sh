@@ -57,7 +57,8 @@ run cargo-test cargo test --release --no-fail-fast
 run wasm-test wasm-pack test --node --release -- --lib --test '*'
 # A stale package from an earlier build must not be tested: skip the tests when the build failed.
 failed() { [[ " ${FAILED[*]} " == *" $1 "* ]]; }
-run pkg-node wasm-pack build --release --target nodejs --out-dir pkg-node
+# js-api.mjs adds the contract's `export` (= export_code; a JS keyword wasm-bindgen cannot emit).
+run pkg-node bash -c 'wasm-pack build --release --target nodejs --out-dir pkg-node && node scripts/js-api.mjs pkg-node'
 if failed pkg-node; then section "node-test: skipped (pkg-node did not build)"; else
   run node-test node --test tests/node/
 fi

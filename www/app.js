@@ -172,6 +172,7 @@ async function main() {
     store.methods = m.methods || [];
     store.families = m.families || [];
     store.exportTargets = m.export_targets || [];
+    store.identifyFamilies = m.identify_families || [];
     S.setFamilies(store.families);
     const pr = E.call('presets');
     store.presets = Array.isArray(pr) ? pr : (pr && pr.presets) || [];
@@ -202,7 +203,7 @@ async function main() {
   P.refreshPins();
   wire();
   // The identification panel: "Use this model" makes the fitted plant the page's plant.
-  Id.setup({ onUse: (plant) => { store.state.plant = S.cleanPlant(plant) || plant; store.state.preset = ''; buildAll(); changed(); } });
+  Id.setup({ families: store.identifyFamilies, infos: store.families, onUse: (plant) => { store.state.plant = S.cleanPlant(plant) || plant; store.state.preset = ''; buildAll(); changed(); } });
   Hi.init(restored);
   Sh.postHeight();
   // What the tests and the benchmark read (the module itself, the state, the timings).

@@ -6,15 +6,17 @@
 import * as E from './engine.js';
 import { $, el, setText, errText } from './dom.js';
 
-const FAMILIES = [
-  ['auto', 'auto: best by AICc'],
-  ['fopdt_ir', 'fopdt_ir: k(1 − τ_z s)e^(−θs)/(τs + 1)'],
-  ['ipdt_ir', 'ipdt_ir: k(1 − τ_z s)e^(−θs)/(s(τs + 1))'],
-  ['ifoptd', 'ifoptd: k e^(−θs)/(s(τs + 1))'],
-  ['ifoptd_zero', 'ifoptd_zero: k(1 + z s)e^(−θs)/(s(τs + 1))'],
-  ['piptd', 'piptd: k e^(−θs)/s'],
-  ['diptd', 'diptd: k e^(−θs)/s²'],
-];
+/**
+ * The family choices: the module's `identify_families` (methods()), labelled by the formula of
+ * each family's info (methods().families); "auto" ranks them by AICc.
+ */
+export function familyOptions(ids, infos) {
+  return (ids || []).map((id) => {
+    if (id === 'auto') return [id, 'auto: best by AICc'];
+    const f = (infos || []).find((x) => x.id === id);
+    return [id, f && f.formula ? `${id}: ${f.formula.replace(/^P\(s\) = /, '')}` : id];
+  });
+}
 const C_DATA = '#999999';
 const C_FIT = '#0072B2';
 const C_RES = '#D55E00';
@@ -147,11 +149,12 @@ function readFile(file) {
   r.readAsText(file);
 }
 
-/** Builds the panel in #identify-box; `onUse(plant)` receives the fitted plant. */
-export function setup({ onUse }) {
+/** Builds the panel in #identify-box; `onUse(plant)` receives the fitted plant; `families`
+ * (methods().identify_families) and `infos` (methods().families) fill the family choice. */
+export function setup({ onUse, families, infos }) {
   state.onUse = onUse;
   const sel = $('identify-family');
-  sel.replaceChildren(...FAMILIES.map(([v, label]) => el('option', { value: v, text: label })));
+  sel.replaceChildren(...familyOptions(families, infos).map(([v, label]) => el('option', { value: v, text: label })));
   $('identify-fit').addEventListener('click', fit);
   $('identify-file').addEventListener('change', (e) => readFile(e.target.files && e.target.files[0]));
   const area = $('identify-csv');

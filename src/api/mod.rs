@@ -172,6 +172,8 @@ pub fn methods() -> Value {
         "methods": rules::methods().iter().map(|m| serde_json::to_value(m).unwrap_or(Value::Null)).collect::<Vec<_>>(),
         "families": serde_json::to_value(family_infos()).unwrap_or(Value::Null),
         "export_targets": export::targets(),
+        // What `identify` fits, in the order `"auto"` tries them ("auto" first).
+        "identify_families": std::iter::once("auto").chain(crate::identify::FAMILIES).collect::<Vec<_>>(),
     })
 }
 

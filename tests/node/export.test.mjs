@@ -80,3 +80,13 @@ test('export: bad input throws an Error naming the field, and the module survive
   // still alive
   assert.equal(pidlab.export_code({ plant: BOILER, controller: IPD, target: 'julia', date: DATE }).filename, 'pidlab_controller.jl');
 });
+
+test('export: the contract name `export` is the module function export_code (scripts/js-api.mjs)', () => {
+  // `export` is a JS keyword wasm-bindgen will not emit as a function name; the build adds the
+  // alias to the glue. Same function, so the same text for the same input.
+  assert.equal(typeof pidlab.export, 'function');
+  assert.equal(pidlab.export, pidlab.export_code);
+  const inp = { plant: BOILER, controller: IPD, target: 'julia', date: DATE };
+  assert.equal(pidlab.export(inp).text, pidlab.export_code(inp).text);
+  assert.throws(() => pidlab.export({ plant: BOILER, controller: IPD, target: 'fortran' }), /^Error: target: /);
+});

@@ -97,3 +97,18 @@ test('identify: bad data are refused with the field named, nothing traps', () =>
   // the module still answers
   assert.equal(pidlab.identify({ ...bump(PLANT, 200, 0.1, 0, 2), family: 'fopdt_ir' }).plant.family, 'fopdt_ir');
 });
+
+test('identify: methods().identify_families lists what identify fits ("auto" first), each an API family', () => {
+  const m = pidlab.methods();
+  const fams = m.identify_families;
+  assert.equal(fams[0], 'auto');
+  const api = new Set(m.families.map((f) => f.id));
+  for (const f of fams.slice(1)) assert.ok(api.has(f), f + ' is an API family');
+  // The families, at least; a family not listed is refused by identify with the list.
+  for (const f of ['fopdt_ir', 'ipdt_ir', 'ifoptd', 'piptd', 'ifoptd_zero', 'diptd']) assert.ok(fams.includes(f), f);
+  const t = Array.from({ length: 50 }, (_, i) => i * 0.1);
+  const u = t.map((x) => (x >= 1 ? 1 : 0));
+  const y = t.map((x) => (x >= 1.2 ? x - 1.2 : 0));
+  const notListed = m.families.map((f) => f.id).find((f) => !fams.includes(f));
+  if (notListed) assert.throws(() => pidlab.identify({ t, u, y, family: notListed }), /^Error: family: /);
+});
