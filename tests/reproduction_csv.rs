@@ -184,3 +184,32 @@ fn errata_collects_every_source() {
         );
     }
 }
+
+/// The fit counts the addenda quote are the ones the report computes (its Tables 2-8 section
+/// prints "Counts: N fitted formulas, M measurable …, K meet …, O are within it + 0.1 point").
+#[test]
+fn addenda_quote_the_reports_fit_counts() {
+    let report = std::fs::read_to_string("docs/reproduction.md").expect("docs/reproduction.md");
+    let line = report
+        .lines()
+        .find(|l| l.starts_with("Counts: ") && l.contains("fitted formulas"))
+        .expect("the report prints the fit counts");
+    let nums: Vec<usize> = line
+        .split(|c: char| !c.is_ascii_digit())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    // "Counts: N fitted formulas, M measurable (…), K meet …, O are within it + 0.1 point"
+    let (n, m, k, o) = (nums[0], nums[1], nums[2], nums[3]);
+    assert!(k <= m && m <= n && o <= n, "{line}");
+    let addenda = std::fs::read_to_string("docs/ERRATA-ADDENDA.md").expect("addenda");
+    for quoted in [
+        format!("Of the {m} measurable fitted formulas"),
+        format!("({n} printed; {} not computable", n - m),
+        format!("{k} meet their printed maximum normalized error and {o} are"),
+    ] {
+        assert!(
+            addenda.contains(&quoted),
+            "docs/ERRATA-ADDENDA.md must quote the report's counts ({line}): missing {quoted:?}"
+        );
+    }
+}

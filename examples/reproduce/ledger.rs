@@ -206,7 +206,7 @@ pub fn summary(cells: &[Cell]) -> String {
          Where pidlab's default does not reproduce a cell within 2 %, the study tries the paper's \
          possible simulation details as options (never a change of the defaults): TV on fixed \
          grids of 0.01-0.2, TV of the plant input u + d, the set-point TV without the move at \
-         the step, a longer window for settling times, candidate set-point structures for a \
+         the step, the servo TV with the sample at the load time counted, a longer window for settling times, candidate set-point structures for a \
          comparison method whose structure the paper does not give. Ours is then the option's \
          value and the cause names it with pidlab's default value; where no option reproduces \
          the cell, ours stays the default and the cause lists what was tried.\n\n\
