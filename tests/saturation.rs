@@ -71,6 +71,7 @@ struct Case {
 }
 
 /// Heun reference: `y` at the multiples of `dt` (right-hand limits), and the applied u.
+/// The step is `θ/m`, or `1/m` without dead time.
 fn reference(case: &Case, m: usize, dt: f64, t_d: f64) -> (Vec<f64>, Vec<f64>) {
     let ss = realize(&case.plant.tf).unwrap();
     let np = ss.order();
@@ -81,7 +82,12 @@ fn reference(case: &Case, m: usize, dt: f64, t_d: f64) -> (Vec<f64>, Vec<f64>) {
     let cp: Vec<f64> = (0..np).map(|i| ss.c[(0, i)]).collect();
     let dp = ss.d[(0, 0)];
     let theta = case.plant.delay;
-    let delta = theta / m as f64;
+    // θ = 0: m steps per unit time
+    let delta = if theta > 0.0 {
+        theta / m as f64
+    } else {
+        1.0 / m as f64
+    };
     let c = &case.c;
     let tf = c.tf();
     let lim = case.limits;
@@ -210,6 +216,23 @@ fn reference(case: &Case, m: usize, dt: f64, t_d: f64) -> (Vec<f64>, Vec<f64>) {
         };
         u + dstep(t, right)
     };
+    // θ = 0: the plant input w = sat(v) + d now; v is affine in w (through y's feedthrough),
+    // v = v_a + k_w·w, so v − k_w·sat(v) = v_a + k_w·d is solved exactly (k_w < 1)
+    let w_direct = |x: &[f64], t: f64, right: bool| -> f64 {
+        let d = dstep(t, right);
+        let va = eval(x, 0.0, r).0;
+        let kw = eval(x, 1.0, r).0 - va;
+        let free = (va + kw * d) / (1.0 - kw);
+        let v = if free > lim.u_max {
+            va + kw * (lim.u_max + d)
+        } else if free < lim.u_min {
+            va + kw * (lim.u_min + d)
+        } else {
+            free
+        };
+        lim.sat(v) + d
+    };
+    let direct = theta == 0.0;
     let mut x = vec![0.0; nx];
     let every = (dt / delta).round() as usize;
     let (mut ys, mut us) = (vec![], vec![]);
@@ -217,14 +240,26 @@ fn reference(case: &Case, m: usize, dt: f64, t_d: f64) -> (Vec<f64>, Vec<f64>) {
     let (_, u0, _, _) = eval(&x, 0.0, r);
     u_right[0] = u0;
     for k in 0..n {
-        let w0 = w_at(&u_left, &u_right, k, true);
+        let w0 = if direct {
+            w_direct(&x, k as f64 * delta, true)
+        } else {
+            w_at(&u_left, &u_right, k, true)
+        };
         let (_, u, y, f0) = eval(&x, w0, r);
         if k % every == 0 {
             ys.push(y);
-            us.push(u);
+            us.push(if direct {
+                w0 - dstep(k as f64 * delta, true)
+            } else {
+                u
+            });
         }
-        let w1 = w_at(&u_left, &u_right, k + 1, false);
         let xp: Vec<f64> = (0..nx).map(|i| x[i] + delta * f0[i]).collect();
+        let w1 = if direct {
+            w_direct(&xp, (k + 1) as f64 * delta, false)
+        } else {
+            w_at(&u_left, &u_right, k + 1, false)
+        };
         let (_, _, _, f1) = eval(&xp, w1, r);
         let vr0 = if case.conditional {
             let mut x0 = x.clone();
@@ -240,17 +275,29 @@ fn reference(case: &Case, m: usize, dt: f64, t_d: f64) -> (Vec<f64>, Vec<f64>) {
         if case.conditional {
             let mut x1 = x.clone();
             x1[np] = 0.0;
+            let w1 = if direct {
+                w_direct(&x, (k + 1) as f64 * delta, false)
+            } else {
+                w1
+            };
             let vr1 = eval(&x1, w1, r).0;
             x[np] = project(i0, x[np], vr0, vr1);
         }
-        u_left[k + 1] = eval(&x, w1, r).1;
-        let w1r = w_at(&u_left, &u_right, k + 1, true);
-        u_right[k + 1] = eval(&x, w1r, r).1;
+        if !direct {
+            u_left[k + 1] = eval(&x, w1, r).1;
+            let w1r = w_at(&u_left, &u_right, k + 1, true);
+            u_right[k + 1] = eval(&x, w1r, r).1;
+        }
     }
-    let wn = w_at(&u_left, &u_right, n, true);
+    let tn = n as f64 * delta;
+    let wn = if direct {
+        w_direct(&x, tn, true)
+    } else {
+        w_at(&u_left, &u_right, n, true)
+    };
     let (_, u, y, _) = eval(&x, wn, r);
     ys.push(y);
-    us.push(u);
+    us.push(if direct { wn - dstep(tn, true) } else { u });
     (ys, us)
 }
 
@@ -273,7 +320,11 @@ fn check(case: &Case) -> (f64, f64, usize) {
     let res = simulate_real(&case.plant, &c, &sc, &rl).unwrap();
     assert!(!res.diverged, "{}: diverged", case.name);
     // δ = θ/M ≈ 2.5e-4 (and half of it)
-    let m = (case.plant.delay / 2.5e-4).ceil() as usize;
+    let m = if case.plant.delay > 0.0 {
+        (case.plant.delay / 2.5e-4).ceil() as usize
+    } else {
+        4000
+    };
     let (y1, _) = reference(case, m, dt, t_d);
     let (y2, u2) = reference(case, 2 * m, dt, t_d);
     let ref_err = y1
@@ -512,6 +563,101 @@ fn conditional_continuous_loops_match_a_fine_reference() {
     );
 }
 
+/// Continuous limits without dead time (θ = 0): the plant input `w = sat(v) + d` is
+/// instantaneous; unsaturated, the algebraic loop `v = … + e·w` of a biproper loop is solved
+/// exactly (fopdt_ir: e = −L(j∞) = −K_p·k·τ_z/τ·(−1) = 0.2 here). Against the reference's
+/// θ = 0 branch (the same Heun steps, δ = 2.5e-4 and half, with the algebraic loop solved
+/// at every evaluation), with each anti-windup kind. A loop with `L(j∞) ≤ −1` has no unique
+/// solution of `v − e·sat(v) = …`: refused naming `plant.delay`.
+#[wasm_bindgen_test(unsupported = test)]
+fn limits_without_dead_time() {
+    let pi = |kp, ki| Textbook {
+        kp,
+        ki,
+        kd: 0.0,
+        b: 1.0,
+        c: 1.0,
+        n: None,
+        setpoint: None,
+    };
+    let fopdt_ir0 = Family::FopdtIr {
+        k: 1.0,
+        tau: 2.0,
+        tau_z: 0.5,
+        theta: 0.0,
+    }
+    .plant();
+    let mut cases = vec![];
+    for (aw, tt, conditional) in [
+        ("none", None, false),
+        ("tracking", Some(1.5), false),
+        ("conditional", None, true),
+    ] {
+        cases.push(Case {
+            name: match aw {
+                "none" => "fopdt_ir θ = 0 (biproper: algebraic loop), PI, u in [0, 1.2], none",
+                "tracking" => {
+                    "fopdt_ir θ = 0 (biproper: algebraic loop), PI, u in [0, 1.2], tracking"
+                }
+                _ => "fopdt_ir θ = 0 (biproper: algebraic loop), PI, u in [0, 1.2], conditional",
+            },
+            plant: fopdt_ir0.clone(),
+            c: pi(0.8, 0.6),
+            limits: Limits::new(Some(0.0), Some(1.2)).unwrap(),
+            tt,
+            conditional,
+            d: 1.5,
+            t_end: 20.0,
+        });
+    }
+    cases.push(Case {
+        name: "sopdt θ = 0, filtered PID, ±1.5, conditional",
+        plant: Family::Sopdt {
+            k: 1.0,
+            tau1: 2.0,
+            tau2: 1.0,
+            theta: 0.0,
+        }
+        .plant(),
+        c: Textbook {
+            n: Some(10.0),
+            ..pi(4.0, 1.5)
+        },
+        limits: Limits::new(Some(-1.5), Some(1.5)).unwrap(),
+        tt: None,
+        conditional: true,
+        d: -0.8,
+        t_end: 20.0,
+    });
+    cases.push(Case {
+        name: "ifoptd θ = 0, PI, ±0.2, tracking",
+        plant: Family::Ifoptd {
+            k: 1.0,
+            tau: 1.0,
+            theta: 0.0,
+        }
+        .plant(),
+        c: pi(0.6, 0.08),
+        limits: Limits::new(Some(-0.2), Some(0.2)).unwrap(),
+        tt: Some(3.0),
+        conditional: false,
+        d: -0.1,
+        t_end: 30.0,
+    });
+    for case in &cases {
+        check(case);
+    }
+    // L(j∞) = −K_p·k·τ_z/τ = −1.25 ≤ −1: refused
+    let c = pi(5.0, 0.6).pid().to_controller().unwrap();
+    let sc = Scenario::steps(10.0, 0.05, 0.0, 1.0, 5.0, 0.0);
+    let rl = RealLoop {
+        limits: Limits::new(Some(0.0), Some(1.2)).unwrap(),
+        ..RealLoop::default()
+    };
+    let e = simulate_real(&fopdt_ir0, &c, &sc, &rl).unwrap_err();
+    assert!(e.path.starts_with("plant.delay"), "{e}");
+}
+
 /// The sampled conditional controller (`sim::sampled`: freeze the integral at a sample when
 /// v_k is beyond a limit and its increment pushes further) converges to the continuous one as
 /// h → 0: the zero-order hold delays the control action by h/2 on average, an O(h) error, so
@@ -686,8 +832,17 @@ fn api_continuous_limits() {
         .unwrap_err()
         .path
         .starts_with("actuator.u_max"));
-    let mut x = base;
+    let mut x = base.clone();
     x["plant"] = serde_json::json!({"family": "fopdt", "k": 1, "tau": 1, "theta": 0});
     let e = pidlab::api::simulate(&x).unwrap_err();
     assert!(e.path.starts_with("plant"), "{e}");
+    // no dead time: simulated (a strictly proper loop: no algebraic loop)
+    let mut x = base;
+    x["plant"] = serde_json::json!({"family": "sopdt", "k": 1, "tau1": 1, "tau2": 0.5, "theta": 0});
+    let j = pidlab::api::simulate(&x).unwrap();
+    assert!(j["u"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|u| u.as_f64().unwrap().abs() <= 1.5 + 1e-12));
 }

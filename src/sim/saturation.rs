@@ -62,8 +62,17 @@
 //! (PID, PI, I-PD, PID × filter, lead-lag × PI, 2-DOF); others are an error naming
 //! `actuator.anti_windup`.
 //!
-//! A loop without dead time (θ = 0) is refused (`plant.delay`): its plant input is
-//! algebraic in the mode.
+//! ## Without dead time (θ = 0)
+//! The plant input `w = u + d` is then instantaneous, so each mode's matrices are written for
+//! the inputs `(d, r, L)` ([`SatLoop::eliminate_w`]): at a limit `w = L + d`; unsaturated
+//! `u = v` and the loop's algebraic equation `v = g·X + h_r r + e (v + d)` (`e = −L(j∞)`,
+//! nonzero only for a biproper loop: a biproper plant under a controller with direct
+//! feed-through, or an ideal derivative on a plant of relative degree one) is solved,
+//! `v = (g·X + h_r r + e d)/(1 − e)`. `v` is continuous across a switch (at `v = L` both give
+//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.5/ρ` over the modes' matrices, and the
+//! `w` slot of the augmented state carries the constant `d`. With `1 − e ≤ 0`
+//! (`L(j∞) ≤ −1`) `v − e·sat(v) = …` is not monotone and has no unique solution: refused,
+//! naming `plant.delay`.
 
 use super::scenario::Scenario;
 use super::trajectory::{interpolation_inverse, lagrange, Trajectory, DEG, NODES};
@@ -112,16 +121,22 @@ impl LimitRecord {
 /// "conditional": `X = [x_I; x_c; x_p]` with `x_c` the controller's part without integrator
 /// (inputs r, y only: `b_L = 0`), `v = x_I + v_rest`; `cond` gives the integrator's input.
 struct SatLoop {
-    a: [DMatrix<f64>; 2],
-    bw: [DVector<f64>; 2],
-    br: [DVector<f64>; 2],
-    bl: [DVector<f64>; 2],
+    /// Indexed by [`Mode::kind`]: 0 unsaturated, 1 at a limit (integral frozen), 2 at a limit
+    /// integrating (conditional).
+    a: [DMatrix<f64>; 3],
+    bw: [DVector<f64>; 3],
+    br: [DVector<f64>; 3],
+    bl: [DVector<f64>; 3],
     g: DVector<f64>,
     hr: f64,
     e: f64,
     yx: DVector<f64>,
     yw: f64,
     cond: Option<Cond>,
+    rows: Option<Rows>,
+    /// θ = 0: the plant input is `w = u + d` now, the `w` slot of the state carries `d`
+    /// (module docs); `1 − e > 0` then.
+    direct: bool,
 }
 
 /// Conditional integration: the integrator's input `e_I = ex·X + ew·w + er·r`
@@ -141,6 +156,7 @@ fn tf(num: Poly, den: &Poly) -> Tf {
 
 impl SatLoop {
     fn new(plant: &Plant, c: &Controller, aw: AntiWindup, setpoint_step: bool) -> Result<SatLoop> {
+        // (the raw loop, then θ = 0's elimination of w, then balancing: `assemble`)
         let pf = PolyForm::new(c).map_err(|e| e.within("controller"))?;
         let (ao, w) = match aw {
             AntiWindup::None => (pf.r.clone(), Poly::constant(0.0)),
@@ -242,17 +258,26 @@ impl SatLoop {
                 ew: -g_y * dp,
                 er: g_r,
             };
+            let mut gr = g.clone();
+            gr[0] = 0.0;
+            let rows = Rows {
+                sa: a1.tr_mul(&gr),
+                sw: gr.dot(&bw),
+                sr: gr.dot(&br),
+            };
             SatLoop {
-                a: [a0, a1],
-                bw: [bw0, bw],
-                br: [br0, br],
-                bl: [DVector::zeros(n), DVector::zeros(n)],
+                a: [a0.clone(), a1, a0],
+                bw: [bw0.clone(), bw, bw0],
+                br: [br0.clone(), br, br0],
+                bl: [DVector::zeros(n), DVector::zeros(n), DVector::zeros(n)],
                 g,
                 hr: dcr,
                 e,
                 yx,
                 yw: dp,
                 cond: Some(cond),
+                rows: Some(rows),
+                direct: false,
             }
         } else {
             let mut bu = DVector::zeros(n);
@@ -262,21 +287,26 @@ impl SatLoop {
             let bw0 = &bw + &bu * e;
             let br0 = &br + &bu * dcr;
             SatLoop {
-                a: [a0, a1],
-                bw: [bw0, bw],
-                br: [br0, br],
-                bl: [DVector::zeros(n), bu],
+                a: [a0.clone(), a1, a0],
+                bw: [bw0.clone(), bw, bw0],
+                br: [br0.clone(), br, br0],
+                bl: [DVector::zeros(n), bu.clone(), bu],
                 g,
                 hr: dcr,
                 e,
                 yx,
                 yw: dp,
                 cond: None,
+                rows: None,
+                direct: false,
             }
         };
+        if plant.delay == 0.0 {
+            m.eliminate_w()?;
+        }
         // balance the state coordinates (X = S X̃) for well-scaled exponentials
         let s = balance(&m.a[0]);
-        for k in 0..2 {
+        for k in 0..3 {
             for i in 0..n {
                 for j in 0..n {
                     m.a[k][(i, j)] *= s[j] / s[i];
@@ -292,8 +322,67 @@ impl SatLoop {
             if let Some(cd) = m.cond.as_mut() {
                 cd.ex[i] *= s[i];
             }
+            if let Some(rw) = m.rows.as_mut() {
+                rw.sa[i] *= s[i];
+            }
         }
         Ok(m)
+    }
+
+    /// θ = 0: the plant input `w = u + d` is instantaneous. Unsaturated, `u = v` and
+    /// `v = g·X + h_r r + e (v + d)` is solved, `v = (g·X + h_r r + e d)/(1 − e)`; at a limit
+    /// `w = L + d`. Each mode's matrices then act on `[X; d (the w slot); r; L]`. With
+    /// `1 − e ≤ 0` (`e = −L(j∞)`, the loop's high-frequency gain: a biproper loop with
+    /// `L(j∞) ≤ −1`) `v − e·sat(v) = …` has no unique solution: refused.
+    fn eliminate_w(&mut self) -> Result<()> {
+        let ome = 1.0 - self.e;
+        if ome <= 1e-12 {
+            return Err(Error::new(
+                "plant.delay",
+                format!(
+                    "without dead time the loop is algebraic: v = … + e·sat(v) with e = −L(j∞) \
+                     = {} ≥ 1 has no unique solution; give the plant a dead time or sampling",
+                    self.e
+                ),
+            ));
+        }
+        // the raw loop `Ẋ = A X + B_w w + B_r r + B_u u` of each kind
+        let raw = |k: usize| -> (DMatrix<f64>, DVector<f64>, DVector<f64>, DVector<f64>) {
+            if self.cond.is_some() {
+                (
+                    self.a[k].clone(),
+                    self.bw[k].clone(),
+                    self.br[k].clone(),
+                    self.bl[k].clone(),
+                )
+            } else {
+                (
+                    self.a[1].clone(),
+                    self.bw[1].clone(),
+                    self.br[1].clone(),
+                    self.bl[1].clone(),
+                )
+            }
+        };
+        let (a, bw, br, bu) = raw(0);
+        let bwu = &bw + &bu;
+        let a0 = &a + &bwu * (self.g.transpose() / ome);
+        let br0 = &br + &bwu * (self.hr / ome);
+        let bd0 = &bw + &bwu * (self.e / ome);
+        let mut out = [0, 1, 2].map(|k| {
+            let (a, bw, br, bu) = raw(k);
+            let bl = &bw + &bu;
+            (a, bw, br, bl)
+        });
+        out[0] = (a0, bd0, br0, DVector::zeros(self.order()));
+        for (k, (a, bw, br, bl)) in out.into_iter().enumerate() {
+            self.a[k] = a;
+            self.bw[k] = bw;
+            self.br[k] = br;
+            self.bl[k] = bl;
+        }
+        self.direct = true;
+        Ok(())
     }
 
     fn order(&self) -> usize {
@@ -302,7 +391,8 @@ impl SatLoop {
 
     /// `M` of the augmented system over `z = [X (n); ξ (NODES); r; L]` for a piece of
     /// length `len` (`w(τ) = Σ ξ_k (τ/len)^k`).
-    fn augmented(&self, mode: usize, len: f64) -> DMatrix<f64> {
+    fn augmented(&self, kind: usize, len: f64) -> DMatrix<f64> {
+        let mode = kind;
         let n = self.order();
         let sz = n + NODES + 2;
         let mut big = DMatrix::zeros(sz, sz);
@@ -316,13 +406,6 @@ impl SatLoop {
             big[(n + k, n + k + 1)] = (k + 1) as f64 / len;
         }
         big
-    }
-
-    fn rho(&self) -> f64 {
-        self.a[0]
-            .complex_eigenvalues()
-            .iter()
-            .fold(0.0f64, |m, z| m.max(z.norm()))
     }
 }
 
@@ -382,22 +465,25 @@ impl Mode {
         }
     }
 
-    /// Which matrices: 0 unsaturated/integrating, 1 at a limit/integral frozen.
-    fn dynamics(self) -> usize {
+    /// Which matrices: 0 unsaturated, 1 at a limit (integral frozen), 2 at a limit
+    /// integrating.
+    fn kind(self) -> usize {
         match self {
-            Mode::Free | Mode::Integ(_) => 0,
+            Mode::Free => 0,
+            Mode::Integ(_) => 2,
             _ => 1,
         }
     }
 }
 
 /// The loop's switching functions at one state: `v`, the integrator's input `e` and
-/// `s = dv_rest/dt` (conditional only; 0 otherwise).
+/// `s = dv_rest/dt` (conditional only; 0 otherwise), and the output `y`.
 #[derive(Clone, Copy, Debug)]
 struct Point {
     v: f64,
     e: f64,
     s: f64,
+    y: f64,
 }
 
 /// Precomputed rows for [`Point`] (no allocation per evaluation).
@@ -409,29 +495,35 @@ struct Rows {
 }
 
 impl SatLoop {
-    fn rows(&self) -> Option<Rows> {
-        self.cond.as_ref()?;
-        let mut gr = self.g.clone();
-        gr[0] = 0.0;
-        Some(Rows {
-            sa: self.a[1].tr_mul(&gr),
-            sw: gr.dot(&self.bw[1]),
-            sr: gr.dot(&self.br[1]),
-        })
-    }
-
-    fn point(&self, rows: &Option<Rows>, z: &DVector<f64>, len: f64) -> Point {
+    /// The switching functions at `z` in `mode` (θ = 0: the mode decides the plant input).
+    fn point(&self, z: &DVector<f64>, len: f64, mode: Mode) -> Point {
         let n = self.order();
         let x = z.rows(0, n);
-        let (w, r) = (z[n], z[n + NODES]);
-        let v = self.g.dot(&x) + self.hr * r + self.e * w;
-        match (&self.cond, rows) {
+        let (xi0, r) = (z[n], z[n + NODES]);
+        let gx = self.g.dot(&x) + self.hr * r;
+        let (v, w, wdot) = if !self.direct {
+            (gx + self.e * xi0, xi0, z[n + 1] / len)
+        } else if mode == Mode::Free {
+            let v = (gx + self.e * xi0) / (1.0 - self.e);
+            (v, v + xi0, 0.0)
+        } else {
+            let w = z[n + NODES + 1] + xi0;
+            (gx + self.e * w, w, 0.0)
+        };
+        let y = self.yx.dot(&x) + self.yw * w;
+        match (&self.cond, &self.rows) {
             (Some(cd), Some(rw)) => Point {
                 v,
                 e: cd.ex.dot(&x) + cd.ew * w + cd.er * r,
-                s: rw.sa.dot(&x) + rw.sw * w + rw.sr * r + self.e * z[n + 1] / len,
+                s: rw.sa.dot(&x) + rw.sw * w + rw.sr * r + self.e * wdot,
+                y,
             },
-            _ => Point { v, e: 0.0, s: 0.0 },
+            _ => Point {
+                v,
+                e: 0.0,
+                s: 0.0,
+                y,
+            },
         }
     }
 }
@@ -535,13 +627,6 @@ pub(crate) fn integrate(
     aw: AntiWindup,
 ) -> Result<SatRun> {
     let theta = plant.delay;
-    if theta <= 0.0 {
-        return Err(Error::new(
-            "plant.delay",
-            "actuator limits on a continuous controller are simulated for plants with dead time \
-             (θ > 0); without dead time give sampling { h }",
-        ));
-    }
     let m = SatLoop::new(
         plant,
         c,
@@ -549,23 +634,23 @@ pub(crate) fn integrate(
         sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
     )?;
     let conditional = m.cond.is_some();
-    let rows = m.rows();
     let n = m.order();
     let sz = n + NODES + 2;
-    // grid h = θ/N, h ≤ dt, h ≤ 0.5/ρ (both modes' spectra are bounded by the unsaturated
-    // one's or the open-loop's: take the larger)
-    let rho = m.rho().max(
-        m.a[1]
-            .complex_eigenvalues()
+    // grid h = θ/N (θ = 0: any h), h ≤ dt, h ≤ 0.5/ρ over every mode's matrix
+    let rho = m.a.iter().fold(0.0f64, |r, a| {
+        a.complex_eigenvalues()
             .iter()
-            .fold(0.0f64, |a, z| a.max(z.norm())),
-    );
+            .fold(r, |r, z| r.max(z.norm()))
+    });
     let mut hmax = sc.dt;
     if rho > 0.0 {
         hmax = hmax.min(0.5 / rho);
     }
-    let nd = (theta / hmax - 1e-9).ceil().max(1.0);
-    let h = theta / nd;
+    let h = if theta > 0.0 {
+        theta / (theta / hmax - 1e-9).ceil().max(1.0)
+    } else {
+        hmax
+    };
     let tol = 1e-9 * h;
     let t_end = sc.t_end;
     if t_end / h > MAX_PIECES as f64 {
@@ -636,8 +721,14 @@ pub(crate) fn integrate(
     let mut xi = DVector::<f64>::zeros(NODES);
     let mut zs: Vec<DVector<f64>> = (0..NODES).map(|_| DVector::zeros(sz)).collect();
     // the delayed input's node values on [t0, t1] (one earlier piece's restriction) into `wn`
+    let direct = m.direct;
     let wv = |wn: &mut DVector<f64>, t0: f64, t1: f64, traj: &Trajectory| {
         wn.fill(0.0);
+        if direct {
+            // θ = 0: the w slot carries the load d (constant on the piece)
+            wn.fill(step_at(&sc.disturbance, t0));
+            return;
+        }
         let (a, b) = (t0 - theta, t1 - theta);
         if b <= tol || traj.n_pieces == 0 {
             return;
@@ -690,7 +781,7 @@ pub(crate) fn integrate(
         // a jump across a switching surface at the piece start re-classifies the mode here
         // (not right after a located switch: there the function is zero to round-off)
         if !just_switched {
-            let p = m.point(&rows, z, t1 - t);
+            let p = m.point(z, t1 - t, mode);
             let f = validity(mode, p, lim);
             let off = matches!(mode, Mode::Slide(_)) && (p.v - lval(mode)).abs() > eps;
             let e0 = if matches!(mode, Mode::Slide(_)) {
@@ -717,10 +808,10 @@ pub(crate) fn integrate(
         }
         if let Mode::Slide(_) = mode {
             // on the sliding surface the integral holds v at the limit
-            let p = m.point(&rows, &zs[0], t1 - t);
+            let p = m.point(&zs[0], t1 - t, mode);
             zs[0][0] += (lval(mode) - p.v) / m.g[0];
         }
-        let mi = mode.dynamics();
+        let mi = mode.kind();
         let mut len = t1 - t;
         let mut key = (mi, len.to_bits() >> 8);
         cache
@@ -733,7 +824,7 @@ pub(crate) fn integrate(
         // the first node at which a validity function is negative
         let mut hit = None;
         for (i, zi) in zs.iter().enumerate().skip(1) {
-            let f = validity(mode, m.point(&rows, zi, len), lim);
+            let f = validity(mode, m.point(zi, len, mode), lim);
             if f[0] < 0.0 || f[1] < 0.0 {
                 hit = Some(i);
                 break;
@@ -745,14 +836,14 @@ pub(crate) fn integrate(
             let z0 = zs[0].clone();
             let f_at = |tau: f64, k: usize| -> f64 {
                 let zt = (&big * tau).exp() * &z0;
-                validity(mode, m.point(&rows, &zt, len), lim)[k]
+                validity(mode, m.point(&zt, len, mode), lim)[k]
             };
             let (ta, tb) = (
                 (i - 1) as f64 * len / DEG as f64,
                 i as f64 * len / DEG as f64,
             );
-            let fa = validity(mode, m.point(&rows, &zs[i - 1], len), lim);
-            let fb = validity(mode, m.point(&rows, &zs[i], len), lim);
+            let fa = validity(mode, m.point(&zs[i - 1], len, mode), lim);
+            let fb = validity(mode, m.point(&zs[i], len, mode), lim);
             // the earliest root among the functions that turned negative
             let mut first: Option<(f64, usize)> = None;
             for k in 0..2 {
@@ -781,7 +872,7 @@ pub(crate) fn integrate(
             }
             if let Some((tau, k)) = first {
                 let zt = (&big * tau).exp() * &z0;
-                let to = transition(mode, k, m.point(&rows, &zt, len), conditional);
+                let to = transition(mode, k, m.point(&zt, len, mode), conditional);
                 switch_to = Some(to);
                 if tau <= tol {
                     // at the piece start: switch now and redo the piece
@@ -823,8 +914,8 @@ pub(crate) fn integrate(
         // store the piece: applied u + d at the nodes, y, v
         let mut bad = false;
         for zi in zs.iter() {
-            let p = m.point(&rows, zi, len);
-            let y = m.yx.dot(&zi.rows(0, n)) + m.yw * zi[n];
+            let p = m.point(zi, len, mode);
+            let y = p.y;
             let (u, v) = uv(mode, p);
             if !(v.abs() <= limit && y.abs() <= limit) {
                 bad = true;
@@ -840,7 +931,7 @@ pub(crate) fn integrate(
         traj.n_pieces += 1;
         x.copy_from(&zs[DEG].rows(0, n));
         if let Mode::Slide(_) = mode {
-            let p = m.point(&rows, &zs[DEG], len);
+            let p = m.point(&zs[DEG], len, mode);
             x[0] += (lval(mode) - p.v) / m.g[0];
         }
         if bad || !x.iter().all(|q| q.is_finite()) {
