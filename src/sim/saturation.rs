@@ -722,6 +722,7 @@ pub(crate) fn integrate(
     let mut zs: Vec<DVector<f64>> = (0..NODES).map(|_| DVector::zeros(sz)).collect();
     // the delayed input's node values on [t0, t1] (one earlier piece's restriction) into `wn`
     let direct = m.direct;
+    let cursor = std::cell::Cell::new(0usize);
     let wv = |wn: &mut DVector<f64>, t0: f64, t1: f64, traj: &Trajectory| {
         wn.fill(0.0);
         if direct {
@@ -733,12 +734,37 @@ pub(crate) fn integrate(
         if b <= tol || traj.n_pieces == 0 {
             return;
         }
-        let (k, _) = traj.locate(0.5 * (a + b));
+        // the piece holding the window: a cursor that moves with time (no search per piece;
+        // the same piece as `traj.locate`)
+        let mid = 0.5 * (a + b);
+        let starts = traj.starts.as_deref().unwrap_or(&[]);
+        let np = traj.n_pieces.min(starts.len());
+        let mut k = cursor.get().min(np.saturating_sub(1));
+        while k + 1 < np && starts[k + 1] <= mid + tol {
+            k += 1;
+        }
+        while k > 0 && starts[k] > mid + tol {
+            k -= 1;
+        }
+        cursor.set(k);
         let (p0, pl) = traj.piece(k);
         let vals = traj.v_nodes(k);
         for (i, wi) in wn.iter_mut().enumerate() {
             let s = (a + (b - a) * i as f64 / DEG as f64 - p0) / pl;
             *wi = lagrange(vals, s);
+        }
+    };
+    // the node states of a piece from its start `zs[0]` (one cached exponential per length)
+    let propagate = |cache: &mut HashMap<(usize, u64), DMatrix<f64>>,
+                     zs: &mut [DVector<f64>],
+                     mi: usize,
+                     len: f64| {
+        let step = cache
+            .entry((mi, len.to_bits() >> 8))
+            .or_insert_with(|| (m.augmented(mi, len) * (len / DEG as f64)).exp());
+        for i in 1..NODES {
+            let (head, tail) = zs.split_at_mut(i);
+            step.mul_to(&head[i - 1], &mut tail[0]);
         }
     };
     // `(applied u, reported v)` of a mode at a point
@@ -813,14 +839,7 @@ pub(crate) fn integrate(
         }
         let mi = mode.kind();
         let mut len = t1 - t;
-        let mut key = (mi, len.to_bits() >> 8);
-        cache
-            .entry(key)
-            .or_insert_with(|| (m.augmented(mi, len) * (len / DEG as f64)).exp());
-        for i in 1..NODES {
-            let (head, tail) = zs.split_at_mut(i);
-            cache[&key].mul_to(&head[i - 1], &mut tail[0]);
-        }
+        propagate(&mut cache, &mut zs, mi, len);
         // the first node at which a validity function is negative
         let mut hit = None;
         for (i, zi) in zs.iter().enumerate().skip(1) {
@@ -900,14 +919,7 @@ pub(crate) fn integrate(
                 vinv.mul_to(&wn, &mut xi);
                 z.rows_mut(n, NODES).copy_from(&xi);
                 len = t1 - t;
-                key = (mi, len.to_bits() >> 8);
-                cache
-                    .entry(key)
-                    .or_insert_with(|| (m.augmented(mi, len) * (len / DEG as f64)).exp());
-                for i in 1..NODES {
-                    let (head, tail) = zs.split_at_mut(i);
-                    cache[&key].mul_to(&head[i - 1], &mut tail[0]);
-                }
+                propagate(&mut cache, &mut zs, mi, len);
             }
         }
         zero_switches = 0;
