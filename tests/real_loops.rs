@@ -524,12 +524,6 @@ fn bad_input_names_the_field() {
             "actuator.anti_windup.tt",
         ),
         ("actuator", json!({"u_max": 1, "speed": 1}), "actuator"),
-        // continuous limits are simulated; conditional anti-windup needs sampling
-        (
-            "actuator",
-            json!({"u_max": 1, "anti_windup": {"kind": "conditional"}}),
-            "actuator.anti_windup",
-        ),
         ("sampling", json!({"h": 0}), "sampling.h"),
         ("sampling", json!({"h": -0.1}), "sampling.h"),
         ("sampling", json!({"h": 21}), "sampling.h"),

@@ -183,10 +183,11 @@ pub(crate) fn sample(
 ///
 /// Supported: every rational (Cr, Cy) controller **sampled** ([`sampled`]: limits act on the
 /// held `u_k`, anti-windup in the discretised `A_o` or clamping form, noise on `y_k`), and
-/// **continuous** with limits ([`saturation`]: anti-windup `"none"` or `"tracking"`, events
-/// located to round-off; plants with dead time). Refused with an error naming the field:
-/// conditional anti-windup on a continuous controller (`actuator.anti_windup`), continuous
-/// limits on a plant without dead time (`plant.delay`), noise without sampling (`noise`), and
+/// **continuous** with limits ([`saturation`]: anti-windup `"none"`, `"tracking"` or
+/// `"conditional"` (the Filippov solution, sliding included), events located to round-off;
+/// θ ≥ 0). Refused with an error naming the field: continuous limits without dead time on a
+/// loop with `L(j∞) ≤ −1` (`plant.delay`: no unique solution), noise without sampling
+/// (`noise`), and
 /// any of them with a model-based set-point loop (`controller.model_loop`). Anti-windup
 /// without limits on a continuous controller is inactive: the linear loop.
 pub fn simulate_real(

@@ -327,11 +327,12 @@ pub(crate) fn integrate(
             0.0
         }
     };
-    for p in 0..n_pieces {
-        let (t0, t1) = (ev[p], ev[p + 1]);
-        let len = t1 - t0;
+    let mut zb = z.clone();
+    // (p = n_pieces: only the samples due at t_end)
+    for p in 0..=n_pieces {
+        let t0 = ev[p];
         // samples due at t0
-        while k_next < n_samples && k_next as f64 * h <= t0 + tol {
+        while k_next < n_samples && (p == n_pieces || k_next as f64 * h <= t0 + tol) {
             let tk = k_next as f64 * h;
             let y = ps.c.dot(&z.rows(0, n)) + ps.d * w_prev;
             let nk = gen.as_mut().map(|g| g.sample()).unwrap_or(0.0);
@@ -343,6 +344,11 @@ pub(crate) fn integrate(
             rec.u.push(u);
             k_next += 1;
         }
+        if p == n_pieces {
+            break;
+        }
+        let t1 = ev[p + 1];
+        let len = t1 - t0;
         let tm = 0.5 * (t0 + t1);
         let held = |t: f64| -> f64 {
             if t < 0.0 {
@@ -359,7 +365,8 @@ pub(crate) fn integrate(
         let mut bad = false;
         for i in 0..NODES {
             if i > 0 {
-                z = e * &z;
+                e.mul_to(&z, &mut zb);
+                std::mem::swap(&mut z, &mut zb);
             }
             let y = ps.c.dot(&z.rows(0, n)) + ps.d * w;
             if !(y.abs() <= limit && applied.abs() <= limit) {
@@ -378,21 +385,6 @@ pub(crate) fn integrate(
             traj.lens.truncate(p);
             traj.starts.as_mut().unwrap().truncate(p);
             break;
-        }
-    }
-    // a sample due exactly at t_end
-    if diverged_at.is_none() {
-        while k_next < n_samples {
-            let tk = k_next as f64 * h;
-            let y = ps.c.dot(&z.rows(0, n)) + ps.d * w_prev;
-            let nk = gen.as_mut().map(|g| g.sample()).unwrap_or(0.0);
-            if gen.is_some() {
-                noise.push(nk);
-            }
-            let (v, u) = ctrl.step(step_at(&sc.setpoint, tk), y + nk);
-            rec.v.push(v);
-            rec.u.push(u);
-            k_next += 1;
         }
     }
     if gen.is_some() {

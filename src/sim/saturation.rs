@@ -24,22 +24,64 @@
 //! step through a proportional path, a biproper plant's jump) switches the mode at the start
 //! of the piece. No fixed-step integration is used.
 //!
-//! The vector field is continuous across the switching surface for both kinds (at `v = L`
-//! the tracking term `W·(u − v)` vanishes), so there is no sliding motion: the modes are
-//! well defined. Conditional integration (clamping) can slide along `v = L` in continuous
-//! time (the frozen integrator lets `v` fall back inside, where it integrates out again), so
-//! it is not simulated here: it is refused with an error naming `actuator.anti_windup`
-//! (its sampled version is in [`super::sampled`]). A loop without dead time (θ = 0) is
-//! refused too (`plant.delay`): its plant input is algebraic in the mode.
+//! For "none" and "tracking" the vector field is continuous across the switching surface (at
+//! `v = L` the tracking term `W·(u − v)` vanishes), so there is no sliding motion: the modes
+//! are well defined.
+//!
+//! ## Conditional integration (clamping)
+//! The controller is split as in [`crate::model::discrete::IntegralSplit`]: its integral
+//! state, the residue at `s = 0`, `ẋ_I = e_I = g_r·r − g_y·y` (`K_i (r − y)` for a PID; with a
+//! set-point filter `F` the integral of `r − y`, the filter's remainder `K_i (F − 1)/s` being
+//! part of the rest), and a part without integrator, `v = x_I + v_rest`. The applied input is
+//! `u = sat(v)`; the controller does not depend on `u`. The integral stops while `v` is at or
+//! beyond a limit `L_σ` and `e_I` drives it further out (σ = +1 for `u_max`, −1 for `u_min`):
+//! the right-hand side `ẋ_I = e_I·[not(σ(v − L_σ) ≥ 0 and σ e_I > 0)]` is discontinuous on
+//! `v = L_σ`, and the loop is defined as its Filippov solution. With `s = dv_rest/dt` (a linear
+//! function of the loop's state, the delayed input and its derivative) the modes are
+//!
+//! | mode | `ẋ_I` | holds while |
+//! |---|---|---|
+//! | free | `e_I` | `u_min ≤ v ≤ u_max` |
+//! | clamped σ | 0 | `σ(v − L) ≥ 0`, `σ e_I ≥ 0` |
+//! | integrating σ | `e_I` | `σ(v − L) ≥ 0`, `σ e_I ≤ 0` (the integral pulls `v` back) |
+//! | sliding σ | `−s` (so `v ≡ L`) | `σ s ≤ 0`, `σ(e_I + s) ≥ 0` |
+//!
+//! Sliding is the chattering case: frozen, `v_rest` brings `v` back inside; free, the
+//! integral pushes it out again. The Filippov solution keeps `v = L` with the convex
+//! combination `ẋ_I = −s ∈ [0, e_I]` of the two fields (σ = +1): the integral follows the
+//! proportional part down so that the output stays at the limit, which is also the limit
+//! h → 0 of the sampled clamping law ([`super::sampled`]; tests/saturation.rs measures the
+//! first-order convergence). It ends when `s` changes sign (→ clamped) or `e_I + s` does
+//! (→ free). In the sliding mode the loop is integrated with the integral frozen and
+//! `x_I = L − v_rest` is set at the piece's nodes and end (exact: nothing else in the loop
+//! depends on `x_I` while `u = L`). Each validity function above is a linear function of
+//! the augmented state, so its zero is located by Brent's method like a limit crossing; the
+//! mode entered at a zero is fixed by the signs of `e_I` and `s` there (a jump of the state —
+//! a set-point step, a biproper plant's jump, a kink of the delayed input — re-classifies
+//! the mode at the piece's start). Defined for controllers with exactly one integrator
+//! (PID, PI, I-PD, PID × filter, lead-lag × PI, 2-DOF); others are an error naming
+//! `actuator.anti_windup`.
+//!
+//! ## Without dead time (θ = 0)
+//! The plant input `w = u + d` is then instantaneous, so each mode's matrices are written for
+//! the inputs `(d, r, L)` ([`SatLoop::eliminate_w`]): at a limit `w = L + d`; unsaturated
+//! `u = v` and the loop's algebraic equation `v = g·X + h_r r + e (v + d)` (`e = −L(j∞)`,
+//! nonzero only for a biproper loop: a biproper plant under a controller with direct
+//! feed-through, or an ideal derivative on a plant of relative degree one) is solved,
+//! `v = (g·X + h_r r + e d)/(1 − e)`. `v` is continuous across a switch (at `v = L` both give
+//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.5/ρ` over the modes' matrices, and the
+//! `w` slot of the augmented state carries the constant `d`. With `1 − e ≤ 0`
+//! (`L(j∞) ≤ −1`) `v − e·sat(v) = …` is not monotone and has no unique solution: refused,
+//! naming `plant.delay`.
 
 use super::scenario::Scenario;
 use super::trajectory::{interpolation_inverse, lagrange, Trajectory, DEG, NODES};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
-use crate::model::discrete::{default_tt, AntiWindup, Limits, PolyForm};
+use crate::model::discrete::{default_tt, AntiWindup, IntegralSplit, Limits, PolyForm};
 use crate::model::plant::Plant;
 use crate::model::poly::Poly;
-use crate::model::ss::{balance, realize, realize_paths};
+use crate::model::ss::{balance, realize, realize_paths, Ss};
 use crate::model::tf::Tf;
 use crate::numerics::brent;
 use nalgebra::{DMatrix, DVector};
@@ -72,18 +114,37 @@ impl LimitRecord {
     }
 }
 
-/// The loop matrices: state `X = [x_c; x_p]`, `Ẋ = A_m X + b_w,m w + b_r,m r + b_L,m L` in
-/// mode m (0 unsaturated, 1 at a limit L), `v = g·X + h_r r + e w`, `y = y_x·X + y_w w`.
+/// The loop matrices: state `X`, `Ẋ = A_m X + b_w,m w + b_r,m r + b_L,m L` in dynamics m
+/// (0: unsaturated, or integrating; 1: at a limit L, or integral frozen),
+/// `v = g·X + h_r r + e w`, `y = y_x·X + y_w w`.
+/// "none"/"tracking": `X = [x_c; x_p]`, the controller driven by `u` (`b_L`).
+/// "conditional": `X = [x_I; x_c; x_p]` with `x_c` the controller's part without integrator
+/// (inputs r, y only: `b_L = 0`), `v = x_I + v_rest`; `cond` gives the integrator's input.
 struct SatLoop {
-    a: [DMatrix<f64>; 2],
-    bw: [DVector<f64>; 2],
-    br: [DVector<f64>; 2],
-    bl: [DVector<f64>; 2],
+    /// Indexed by [`Mode::kind`]: 0 unsaturated, 1 at a limit (integral frozen), 2 at a limit
+    /// integrating (conditional).
+    a: [DMatrix<f64>; 3],
+    bw: [DVector<f64>; 3],
+    br: [DVector<f64>; 3],
+    bl: [DVector<f64>; 3],
     g: DVector<f64>,
     hr: f64,
     e: f64,
     yx: DVector<f64>,
     yw: f64,
+    cond: Option<Cond>,
+    rows: Option<Rows>,
+    /// θ = 0: the plant input is `w = u + d` now, the `w` slot of the state carries `d`
+    /// (module docs); `1 − e > 0` then.
+    direct: bool,
+}
+
+/// Conditional integration: the integrator's input `e_I = ex·X + ew·w + er·r`
+/// (`= g_r r − g_y y`, the unscaled `ẋ_I`), and `x_I = X[0]·g[0]` (after balancing).
+struct Cond {
+    ex: DVector<f64>,
+    ew: f64,
+    er: f64,
 }
 
 fn tf(num: Poly, den: &Poly) -> Tf {
@@ -95,6 +156,7 @@ fn tf(num: Poly, den: &Poly) -> Tf {
 
 impl SatLoop {
     fn new(plant: &Plant, c: &Controller, aw: AntiWindup, setpoint_step: bool) -> Result<SatLoop> {
+        // (the raw loop, then θ = 0's elimination of w, then balancing: `assemble`)
         let pf = PolyForm::new(c).map_err(|e| e.within("controller"))?;
         let (ao, w) = match aw {
             AntiWindup::None => (pf.r.clone(), Poly::constant(0.0)),
@@ -106,11 +168,12 @@ impl SatLoop {
                 pf.tracking(tt).map_err(|e| e.within("actuator"))?
             }
             AntiWindup::Conditional => {
-                return Err(Error::new(
-                    "actuator.anti_windup",
-                    "conditional integration is simulated for sampled controllers (give \
-                     sampling { h }); on a continuous controller use \"tracking\" or \"none\"",
-                ))
+                let sp = IntegralSplit::new(&pf).map_err(|e| e.within("actuator"))?;
+                let (cs, kd) = realize_paths(&[
+                    (&tf(sp.t_rest.clone(), &sp.r1), "controller.cr", 1.0),
+                    (&tf(sp.s_rest.clone(), &sp.r1), "controller.cy", -1.0),
+                ])?;
+                return SatLoop::assemble(plant, &cs, &kd, Some((sp.g_r, sp.g_y)), setpoint_step);
             }
         };
         let (cs, kd) = realize_paths(&[
@@ -118,6 +181,19 @@ impl SatLoop {
             (&tf(pf.s.clone(), &ao), "controller.cy", -1.0),
             (&tf(w, &ao), "actuator.anti_windup", 1.0),
         ])?;
+        SatLoop::assemble(plant, &cs, &kd, None, setpoint_step)
+    }
+
+    /// The loop of a controller realized with inputs `[r, y]` (+ `u` without `integral`);
+    /// `integral = Some((g_r, g_y))`: a separate integral state `ẋ_I = g_r r − g_y y` is
+    /// added in front and `v = x_I + (controller output)` (conditional integration).
+    fn assemble(
+        plant: &Plant,
+        cs: &Ss,
+        kd: &[f64],
+        integral: Option<(f64, f64)>,
+        setpoint_step: bool,
+    ) -> Result<SatLoop> {
         let (k_dr, k_dy) = (kd[0], -kd[1]);
         let ps = realize(&plant.tf).map_err(|e| e.within("plant"))?;
         let dp = ps.d[(0, 0)];
@@ -135,8 +211,10 @@ impl SatLoop {
                  set-point weight c = 0, a set-point filter, or a derivative filter (N)",
             ));
         }
+        let ni = usize::from(integral.is_some());
         let (nc, np) = (cs.order(), ps.order());
-        let n = nc + np;
+        let n = ni + nc + np;
+        let (oc, op) = (ni, ni + nc);
         let bcr = cs.b.column(0).into_owned();
         let bcy = cs.b.column(1).into_owned();
         let cc = cs.c.row(0).transpose();
@@ -144,45 +222,91 @@ impl SatLoop {
         let ap = &ps.a;
         let bp = ps.b.column(0).into_owned();
         let cp = ps.c.row(0).transpose();
-        // at a limit: ẋ_c = A_c x_c + b_r r + b_y y + b_u L, ẋ_p = A_p x_p + b_p w
+        // at a limit (or integral frozen): ẋ_c = A_c x_c + b_r r + b_y y (+ b_u L),
+        // ẋ_p = A_p x_p + b_p w
         let mut a1 = DMatrix::zeros(n, n);
-        a1.view_mut((0, 0), (nc, nc)).copy_from(&cs.a);
-        a1.view_mut((0, nc), (nc, np))
+        a1.view_mut((oc, oc), (nc, nc)).copy_from(&cs.a);
+        a1.view_mut((oc, op), (nc, np))
             .copy_from(&(&bcy * cp.transpose()));
-        a1.view_mut((nc, nc), (np, np)).copy_from(ap);
+        a1.view_mut((op, op), (np, np)).copy_from(ap);
         let mut bw = DVector::zeros(n);
-        bw.rows_mut(0, nc).copy_from(&(&bcy * dp));
-        bw.rows_mut(nc, np).copy_from(&bp);
+        bw.rows_mut(oc, nc).copy_from(&(&bcy * dp));
+        bw.rows_mut(op, np).copy_from(&bp);
         let mut br = DVector::zeros(n);
-        br.rows_mut(0, nc).copy_from(&bcr);
+        br.rows_mut(oc, nc).copy_from(&bcr);
         let mut g = DVector::zeros(n);
-        g.rows_mut(0, nc).copy_from(&cc);
+        g.rows_mut(oc, nc).copy_from(&cc);
         // v = C_c x_c + D_r r + D_y y − k_dy ẏ, ẏ = C_p A_p x_p + C_p b_p w (D_p = 0 then)
         let cpap = ap.transpose() * &cp;
-        g.rows_mut(nc, np).copy_from(&(&cp * dcy - cpap * k_dy));
+        g.rows_mut(op, np).copy_from(&(&cp * dcy - cpap * k_dy));
         let e = dcy * dp - k_dy * cp.dot(&bp);
-        let mut bu = DVector::zeros(n);
-        bu.rows_mut(0, nc).copy_from(&cs.b.column(2));
-        // unsaturated: u = v = g·X + h_r r + e w
-        let a0 = &a1 + &bu * g.transpose();
-        let bw0 = &bw + &bu * e;
-        let br0 = &br + &bu * dcr;
         let mut yx = DVector::zeros(n);
-        yx.rows_mut(nc, np).copy_from(&cp);
-        let mut m = SatLoop {
-            a: [a0, a1],
-            bw: [bw0, bw],
-            br: [br0, br],
-            bl: [DVector::zeros(n), bu],
-            g,
-            hr: dcr,
-            e,
-            yx,
-            yw: dp,
+        yx.rows_mut(op, np).copy_from(&cp);
+        let mut m = if let Some((g_r, g_y)) = integral {
+            // integrating: ẋ_I = g_r r − g_y (C_p x_p + D_p w); v = x_I + …
+            g[0] = 1.0;
+            let mut a0 = a1.clone();
+            let mut ex = DVector::zeros(n);
+            ex.rows_mut(op, np).copy_from(&(&cp * -g_y));
+            a0.row_mut(0).copy_from(&ex.transpose());
+            let mut bw0 = bw.clone();
+            bw0[0] = -g_y * dp;
+            let mut br0 = br.clone();
+            br0[0] = g_r;
+            let cond = Cond {
+                ex,
+                ew: -g_y * dp,
+                er: g_r,
+            };
+            let mut gr = g.clone();
+            gr[0] = 0.0;
+            let rows = Rows {
+                sa: a1.tr_mul(&gr),
+                sw: gr.dot(&bw),
+                sr: gr.dot(&br),
+            };
+            SatLoop {
+                a: [a0.clone(), a1, a0],
+                bw: [bw0.clone(), bw, bw0],
+                br: [br0.clone(), br, br0],
+                bl: [DVector::zeros(n), DVector::zeros(n), DVector::zeros(n)],
+                g,
+                hr: dcr,
+                e,
+                yx,
+                yw: dp,
+                cond: Some(cond),
+                rows: Some(rows),
+                direct: false,
+            }
+        } else {
+            let mut bu = DVector::zeros(n);
+            bu.rows_mut(oc, nc).copy_from(&cs.b.column(2));
+            // unsaturated: u = v = g·X + h_r r + e w
+            let a0 = &a1 + &bu * g.transpose();
+            let bw0 = &bw + &bu * e;
+            let br0 = &br + &bu * dcr;
+            SatLoop {
+                a: [a0.clone(), a1, a0],
+                bw: [bw0.clone(), bw, bw0],
+                br: [br0.clone(), br, br0],
+                bl: [DVector::zeros(n), bu.clone(), bu],
+                g,
+                hr: dcr,
+                e,
+                yx,
+                yw: dp,
+                cond: None,
+                rows: None,
+                direct: false,
+            }
         };
+        if plant.delay == 0.0 {
+            m.eliminate_w()?;
+        }
         // balance the state coordinates (X = S X̃) for well-scaled exponentials
         let s = balance(&m.a[0]);
-        for k in 0..2 {
+        for k in 0..3 {
             for i in 0..n {
                 for j in 0..n {
                     m.a[k][(i, j)] *= s[j] / s[i];
@@ -195,8 +319,70 @@ impl SatLoop {
         for i in 0..n {
             m.g[i] *= s[i];
             m.yx[i] *= s[i];
+            if let Some(cd) = m.cond.as_mut() {
+                cd.ex[i] *= s[i];
+            }
+            if let Some(rw) = m.rows.as_mut() {
+                rw.sa[i] *= s[i];
+            }
         }
         Ok(m)
+    }
+
+    /// θ = 0: the plant input `w = u + d` is instantaneous. Unsaturated, `u = v` and
+    /// `v = g·X + h_r r + e (v + d)` is solved, `v = (g·X + h_r r + e d)/(1 − e)`; at a limit
+    /// `w = L + d`. Each mode's matrices then act on `[X; d (the w slot); r; L]`. With
+    /// `1 − e ≤ 0` (`e = −L(j∞)`, the loop's high-frequency gain: a biproper loop with
+    /// `L(j∞) ≤ −1`) `v − e·sat(v) = …` has no unique solution: refused.
+    fn eliminate_w(&mut self) -> Result<()> {
+        let ome = 1.0 - self.e;
+        if ome <= 1e-12 {
+            return Err(Error::new(
+                "plant.delay",
+                format!(
+                    "without dead time the loop is algebraic: v = … + e·sat(v) with e = −L(j∞) \
+                     = {} ≥ 1 has no unique solution; give the plant a dead time or sampling",
+                    self.e
+                ),
+            ));
+        }
+        // the raw loop `Ẋ = A X + B_w w + B_r r + B_u u` of each kind
+        let raw = |k: usize| -> (DMatrix<f64>, DVector<f64>, DVector<f64>, DVector<f64>) {
+            if self.cond.is_some() {
+                (
+                    self.a[k].clone(),
+                    self.bw[k].clone(),
+                    self.br[k].clone(),
+                    self.bl[k].clone(),
+                )
+            } else {
+                (
+                    self.a[1].clone(),
+                    self.bw[1].clone(),
+                    self.br[1].clone(),
+                    self.bl[1].clone(),
+                )
+            }
+        };
+        let (a, bw, br, bu) = raw(0);
+        let bwu = &bw + &bu;
+        let a0 = &a + &bwu * (self.g.transpose() / ome);
+        let br0 = &br + &bwu * (self.hr / ome);
+        let bd0 = &bw + &bwu * (self.e / ome);
+        let mut out = [0, 1, 2].map(|k| {
+            let (a, bw, br, bu) = raw(k);
+            let bl = &bw + &bu;
+            (a, bw, br, bl)
+        });
+        out[0] = (a0, bd0, br0, DVector::zeros(self.order()));
+        for (k, (a, bw, br, bl)) in out.into_iter().enumerate() {
+            self.a[k] = a;
+            self.bw[k] = bw;
+            self.br[k] = br;
+            self.bl[k] = bl;
+        }
+        self.direct = true;
+        Ok(())
     }
 
     fn order(&self) -> usize {
@@ -205,7 +391,8 @@ impl SatLoop {
 
     /// `M` of the augmented system over `z = [X (n); ξ (NODES); r; L]` for a piece of
     /// length `len` (`w(τ) = Σ ξ_k (τ/len)^k`).
-    fn augmented(&self, mode: usize, len: f64) -> DMatrix<f64> {
+    fn augmented(&self, kind: usize, len: f64) -> DMatrix<f64> {
+        let mode = kind;
         let n = self.order();
         let sz = n + NODES + 2;
         let mut big = DMatrix::zeros(sz, sz);
@@ -219,23 +406,6 @@ impl SatLoop {
             big[(n + k, n + k + 1)] = (k + 1) as f64 / len;
         }
         big
-    }
-
-    /// `(v, y)` for the augmented state `z` (propagated: its `ξ_0` is `w` at that instant).
-    fn outputs(&self, z: &DVector<f64>) -> (f64, f64) {
-        let n = self.order();
-        let w = z[n];
-        let x = z.rows(0, n);
-        let v = self.g.dot(&x) + self.hr * z[n + NODES] + self.e * w;
-        let y = self.yx.dot(&x) + self.yw * w;
-        (v, y)
-    }
-
-    fn rho(&self) -> f64 {
-        self.a[0]
-            .complex_eigenvalues()
-            .iter()
-            .fold(0.0f64, |m, z| m.max(z.norm()))
     }
 }
 
@@ -272,6 +442,182 @@ pub(crate) struct SatRun {
     pub record: LimitRecord,
 }
 
+/// The switching mode of the loop (module docs). `σ = 1` is the upper limit, `−1` the lower.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Mode {
+    /// Unsaturated: `u = v`, the controller's linear law.
+    Free,
+    /// "none"/"tracking": at the limit `L_σ` (`u = L_σ`).
+    Sat(i8),
+    /// "conditional": `v` beyond `L_σ`, the integral's input drives it further out: frozen.
+    Clamp(i8),
+    /// "conditional": `v` beyond `L_σ`, the integral's input drives it back: integrating.
+    Integ(i8),
+    /// "conditional": sliding on `v = L_σ` (Filippov): `x_I = L_σ − v_rest`.
+    Slide(i8),
+}
+
+impl Mode {
+    fn side(self) -> i8 {
+        match self {
+            Mode::Free => 0,
+            Mode::Sat(k) | Mode::Clamp(k) | Mode::Integ(k) | Mode::Slide(k) => k,
+        }
+    }
+
+    /// Which matrices: 0 unsaturated, 1 at a limit (integral frozen), 2 at a limit
+    /// integrating.
+    fn kind(self) -> usize {
+        match self {
+            Mode::Free => 0,
+            Mode::Integ(_) => 2,
+            _ => 1,
+        }
+    }
+}
+
+/// The loop's switching functions at one state: `v`, the integrator's input `e` and
+/// `s = dv_rest/dt` (conditional only; 0 otherwise), and the output `y`.
+#[derive(Clone, Copy, Debug)]
+struct Point {
+    v: f64,
+    e: f64,
+    s: f64,
+    y: f64,
+}
+
+/// Precomputed rows for [`Point`] (no allocation per evaluation).
+struct Rows {
+    /// `s = sa·X + sw·w + sr·r + e·ẇ` (the frozen dynamics' derivative of `v_rest`).
+    sa: DVector<f64>,
+    sw: f64,
+    sr: f64,
+}
+
+impl SatLoop {
+    /// The switching functions at `z` in `mode` (θ = 0: the mode decides the plant input).
+    fn point(&self, z: &DVector<f64>, len: f64, mode: Mode) -> Point {
+        let n = self.order();
+        let x = z.rows(0, n);
+        let (xi0, r) = (z[n], z[n + NODES]);
+        let gx = self.g.dot(&x) + self.hr * r;
+        let (v, w, wdot) = if !self.direct {
+            (gx + self.e * xi0, xi0, z[n + 1] / len)
+        } else if mode == Mode::Free {
+            let v = (gx + self.e * xi0) / (1.0 - self.e);
+            (v, v + xi0, 0.0)
+        } else {
+            let w = z[n + NODES + 1] + xi0;
+            (gx + self.e * w, w, 0.0)
+        };
+        let y = self.yx.dot(&x) + self.yw * w;
+        match (&self.cond, &self.rows) {
+            (Some(cd), Some(rw)) => Point {
+                v,
+                e: cd.ex.dot(&x) + cd.ew * w + cd.er * r,
+                s: rw.sa.dot(&x) + rw.sw * w + rw.sr * r + self.e * wdot,
+                y,
+            },
+            _ => Point {
+                v,
+                e: 0.0,
+                s: 0.0,
+                y,
+            },
+        }
+    }
+}
+
+/// The mode's validity functions (both ≥ 0 while the mode holds).
+fn validity(mode: Mode, p: Point, lim: Limits) -> [f64; 2] {
+    let l = |k: i8| if k > 0 { lim.u_max } else { lim.u_min };
+    match mode {
+        Mode::Free => [lim.u_max - p.v, p.v - lim.u_min],
+        Mode::Sat(k) => [f64::from(k) * (p.v - l(k)), f64::INFINITY],
+        Mode::Clamp(k) => [f64::from(k) * (p.v - l(k)), f64::from(k) * p.e],
+        Mode::Integ(k) => [f64::from(k) * (p.v - l(k)), -f64::from(k) * p.e],
+        Mode::Slide(k) => [-f64::from(k) * p.s, f64::from(k) * (p.e + p.s)],
+    }
+}
+
+/// Conditional: the mode entered when `v` reaches `L_σ` (with `v̇` pointing out) or is found
+/// at it: the integral's input `e` and `s = v̇_rest` decide (module docs).
+fn entry(k: i8, p: Point) -> Mode {
+    let (e, s) = (f64::from(k) * p.e, f64::from(k) * p.s);
+    if e <= 0.0 {
+        if e + s > 0.0 {
+            Mode::Integ(k)
+        } else {
+            Mode::Free
+        }
+    } else if s >= 0.0 {
+        Mode::Clamp(k)
+    } else if e + s > 0.0 {
+        Mode::Slide(k)
+    } else {
+        Mode::Free
+    }
+}
+
+/// The mode after validity function `which` of `mode` reached zero at the point `p`.
+fn transition(mode: Mode, which: usize, p: Point, conditional: bool) -> Mode {
+    match (mode, which) {
+        (Mode::Free, _) => {
+            let k = if which == 0 { 1 } else { -1 };
+            if conditional {
+                match entry(k, p) {
+                    // v̇ = 0 at the limit (a tangency): the side's least stiff mode
+                    Mode::Free if f64::from(k) * p.e > 0.0 => Mode::Slide(k),
+                    Mode::Free => Mode::Integ(k),
+                    m => m,
+                }
+            } else {
+                Mode::Sat(k)
+            }
+        }
+        (Mode::Sat(_), _) | (Mode::Integ(_), 0) => Mode::Free,
+        (Mode::Clamp(k), 0) => {
+            if f64::from(k) * (p.e + p.s) > 0.0 {
+                Mode::Slide(k)
+            } else {
+                Mode::Free
+            }
+        }
+        (Mode::Clamp(k), _) => Mode::Integ(k),
+        (Mode::Integ(k), _) | (Mode::Slide(k), 0) => Mode::Clamp(k),
+        (Mode::Slide(_), _) => Mode::Free,
+    }
+}
+
+/// The mode of a state found after a jump (a set-point step, a biproper plant's or a
+/// derivative's jump): `v` beyond a limit, at it, or inside.
+fn classify(mode: Mode, p: Point, lim: Limits, conditional: bool, eps: f64) -> Mode {
+    for k in [1i8, -1] {
+        let l = if k > 0 { lim.u_max } else { lim.u_min };
+        if !l.is_finite() {
+            continue;
+        }
+        let d = f64::from(k) * (p.v - l);
+        if d > eps {
+            return match (conditional, f64::from(k) * p.e > 0.0) {
+                (false, _) => Mode::Sat(k),
+                (true, true) => Mode::Clamp(k),
+                (true, false) => Mode::Integ(k),
+            };
+        }
+        if d >= -eps {
+            return if conditional {
+                entry(k, p)
+            } else if mode == Mode::Sat(k) {
+                mode
+            } else {
+                Mode::Free
+            };
+        }
+    }
+    Mode::Free
+}
+
 /// Simulates the continuous loop with limits (module docs).
 pub(crate) fn integrate(
     plant: &Plant,
@@ -281,34 +627,30 @@ pub(crate) fn integrate(
     aw: AntiWindup,
 ) -> Result<SatRun> {
     let theta = plant.delay;
-    if theta <= 0.0 {
-        return Err(Error::new(
-            "plant.delay",
-            "actuator limits on a continuous controller are simulated for plants with dead time \
-             (θ > 0); without dead time give sampling { h }",
-        ));
-    }
     let m = SatLoop::new(
         plant,
         c,
         aw,
         sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
     )?;
+    let conditional = m.cond.is_some();
     let n = m.order();
-    // grid h = θ/N, h ≤ dt, h ≤ 0.5/ρ (both modes' spectra are bounded by the unsaturated
-    // one's or the open-loop's: take the larger)
-    let rho = m.rho().max(
-        m.a[1]
-            .complex_eigenvalues()
+    let sz = n + NODES + 2;
+    // grid h = θ/N (θ = 0: any h), h ≤ dt, h ≤ 0.5/ρ over every mode's matrix
+    let rho = m.a.iter().fold(0.0f64, |r, a| {
+        a.complex_eigenvalues()
             .iter()
-            .fold(0.0f64, |a, z| a.max(z.norm())),
-    );
+            .fold(r, |r, z| r.max(z.norm()))
+    });
     let mut hmax = sc.dt;
     if rho > 0.0 {
         hmax = hmax.min(0.5 / rho);
     }
-    let nd = (theta / hmax - 1e-9).ceil().max(1.0);
-    let h = theta / nd;
+    let h = if theta > 0.0 {
+        theta / (theta / hmax - 1e-9).ceil().max(1.0)
+    } else {
+        hmax
+    };
     let tol = 1e-9 * h;
     let t_end = sc.t_end;
     if t_end / h > MAX_PIECES as f64 {
@@ -352,18 +694,91 @@ pub(crate) fn integrate(
         .iter()
         .filter(|x| x.is_finite())
         .fold(scale.max(1.0), |m, x| m.max(x.abs()));
+    // round-off thresholds of the switching functions: v (units of u) and rates (u per time)
+    let eps = 1e-12 * vscale;
+    let eps_rate = eps / h;
+    let lval = |mode: Mode| match mode.side() {
+        1 => lim.u_max,
+        -1 => lim.u_min,
+        _ => 0.0,
+    };
     let mut x = DVector::<f64>::zeros(n);
-    // mode: 0 unsaturated, 1 at u_max, 2 at u_min
-    let mut mode = 0usize;
+    let mut mode = Mode::Free;
     let mut sat_since = 0.0;
     let mut t = 0.0;
     let mut diverged_at = None;
     let mut just_switched = false;
+    let mut zero_switches = 0usize;
     let step_at = |s: &super::Step, t: f64| {
         if s.size != 0.0 && t >= s.time - tol {
             s.size
         } else {
             0.0
+        }
+    };
+    // work buffers (no allocation per piece)
+    let mut wn = DVector::<f64>::zeros(NODES);
+    let mut xi = DVector::<f64>::zeros(NODES);
+    let mut zs: Vec<DVector<f64>> = (0..NODES).map(|_| DVector::zeros(sz)).collect();
+    // the delayed input's node values on [t0, t1] (one earlier piece's restriction) into `wn`
+    let direct = m.direct;
+    let cursor = std::cell::Cell::new(0usize);
+    let wv = |wn: &mut DVector<f64>, t0: f64, t1: f64, traj: &Trajectory| {
+        wn.fill(0.0);
+        if direct {
+            // θ = 0: the w slot carries the load d (constant on the piece)
+            wn.fill(step_at(&sc.disturbance, t0));
+            return;
+        }
+        let (a, b) = (t0 - theta, t1 - theta);
+        if b <= tol || traj.n_pieces == 0 {
+            return;
+        }
+        // the piece holding the window: a cursor that moves with time (no search per piece;
+        // the same piece as `traj.locate`)
+        let mid = 0.5 * (a + b);
+        let starts = traj.starts.as_deref().unwrap_or(&[]);
+        let np = traj.n_pieces.min(starts.len());
+        let mut k = cursor.get().min(np.saturating_sub(1));
+        while k + 1 < np && starts[k + 1] <= mid + tol {
+            k += 1;
+        }
+        while k > 0 && starts[k] > mid + tol {
+            k -= 1;
+        }
+        cursor.set(k);
+        let (p0, pl) = traj.piece(k);
+        let vals = traj.v_nodes(k);
+        for (i, wi) in wn.iter_mut().enumerate() {
+            let s = (a + (b - a) * i as f64 / DEG as f64 - p0) / pl;
+            *wi = lagrange(vals, s);
+        }
+    };
+    // the node states of a piece from its start `zs[0]` (one cached exponential per length)
+    let propagate = |cache: &mut HashMap<(usize, u64), DMatrix<f64>>,
+                     zs: &mut [DVector<f64>],
+                     mi: usize,
+                     len: f64| {
+        let step = cache
+            .entry((mi, len.to_bits() >> 8))
+            .or_insert_with(|| (m.augmented(mi, len) * (len / DEG as f64)).exp());
+        for i in 1..NODES {
+            let (head, tail) = zs.split_at_mut(i);
+            step.mul_to(&head[i - 1], &mut tail[0]);
+        }
+    };
+    // `(applied u, reported v)` of a mode at a point
+    let uv = |mode: Mode, p: Point| match mode {
+        Mode::Free => (p.v, p.v),
+        Mode::Slide(_) => (lval(mode), lval(mode)),
+        _ => (lval(mode), p.v),
+    };
+    // the time at a limit: an interval opens when u leaves the linear law and closes on return
+    let switch_at = |record: &mut LimitRecord, since: &mut f64, from: Mode, to: Mode, at: f64| {
+        if from == Mode::Free && to != Mode::Free {
+            *since = at;
+        } else if from != Mode::Free && to == Mode::Free {
+            record.intervals.push((*since, at));
         }
     };
     while t < t_end - tol {
@@ -382,151 +797,138 @@ pub(crate) fn integrate(
         }
         let r = step_at(&sc.setpoint, t);
         let d = step_at(&sc.disturbance, t);
-        // the delayed input's node values on [t, t1] (one earlier piece's restriction)
-        let wv = |t0: f64, t1: f64, traj: &Trajectory| -> DVector<f64> {
-            let mut wn = DVector::zeros(NODES);
-            let (a, b) = (t0 - theta, t1 - theta);
-            if b <= tol || traj.n_pieces == 0 {
-                return wn;
-            }
-            let (k, _) = traj.locate(0.5 * (a + b));
-            let (p0, pl) = traj.piece(k);
-            let vals = traj.v_nodes(k);
-            for (i, wi) in wn.iter_mut().enumerate() {
-                let s = (a + (b - a) * i as f64 / DEG as f64 - p0) / pl;
-                *wi = lagrange(vals, s);
-            }
-            wn
-        };
-        let mut z = DVector::zeros(n + NODES + 2);
-        let fill = |z: &mut DVector<f64>, t0: f64, t1: f64, traj: &Trajectory, lv: f64| {
-            z.rows_mut(0, n).copy_from(&x);
-            let xi = &vinv * wv(t0, t1, traj);
-            z.rows_mut(n, NODES).copy_from(&xi);
-            z[n + NODES] = r;
-            z[n + NODES + 1] = lv;
-        };
-        let lval = |mode: usize| match mode {
-            1 => lim.u_max,
-            2 => lim.u_min,
-            _ => 0.0,
-        };
-        fill(&mut z, t, t1, &traj, lval(mode));
-        // a jump of v across a limit at the piece start switches the mode here
-        let (v0, _) = m.outputs(&z);
-        let eps = 1e-12 * vscale;
-        // (not right after a located switch: there v is at the limit to round-off)
-        let new_mode = match mode {
-            _ if just_switched => mode,
-            0 if v0 > lim.u_max + eps => 1,
-            0 if v0 < lim.u_min - eps => 2,
-            1 if v0 < lim.u_max - eps => 0,
-            2 if v0 > lim.u_min + eps => 0,
-            _ => mode,
-        };
-        if new_mode != mode {
-            if mode != 0 {
-                record.intervals.push((sat_since, t));
+        let z = &mut zs[0];
+        z.rows_mut(0, n).copy_from(&x);
+        wv(&mut wn, t, t1, &traj);
+        vinv.mul_to(&wn, &mut xi);
+        z.rows_mut(n, NODES).copy_from(&xi);
+        z[n + NODES] = r;
+        z[n + NODES + 1] = lval(mode);
+        // a jump across a switching surface at the piece start re-classifies the mode here
+        // (not right after a located switch: there the function is zero to round-off)
+        if !just_switched {
+            let p = m.point(z, t1 - t, mode);
+            let f = validity(mode, p, lim);
+            let off = matches!(mode, Mode::Slide(_)) && (p.v - lval(mode)).abs() > eps;
+            let e0 = if matches!(mode, Mode::Slide(_)) {
+                eps_rate
             } else {
-                sat_since = t;
-            }
-            mode = new_mode;
-            z[n + NODES + 1] = lval(mode);
-            cuts.add(t + theta);
-        }
-        let mi = usize::from(mode != 0);
-        let len = t1 - t;
-        let mut key = (mi, len.to_bits() >> 8);
-        cache
-            .entry(key)
-            .or_insert_with(|| (m.augmented(mi, len) * (len / DEG as f64)).exp());
-        // node states and the limit function f = v − L_crossed
-        let f_of = |v: f64| -> f64 {
-            match mode {
-                0 => {
-                    if v > lim.u_max {
-                        v - lim.u_max
-                    } else if v < lim.u_min {
-                        lim.u_min - v
-                    } else {
-                        -1.0
+                eps
+            };
+            let e1 = if conditional && mode != Mode::Free {
+                eps_rate
+            } else {
+                eps
+            };
+            if off || f[0] < -e0 || f[1] < -e1 {
+                let new_mode = classify(mode, p, lim, conditional, eps);
+                if new_mode != mode {
+                    switch_at(&mut record, &mut sat_since, mode, new_mode, t);
+                    if (mode == Mode::Free) != (new_mode == Mode::Free) {
+                        cuts.add(t + theta);
                     }
+                    mode = new_mode;
+                    z[n + NODES + 1] = lval(mode);
                 }
-                1 => lim.u_max - v,
-                _ => v - lim.u_min,
             }
-        };
-        let mut zs = vec![z.clone()];
-        for i in 1..NODES {
-            let zi = &cache[&key] * &zs[i - 1];
-            zs.push(zi);
         }
+        if let Mode::Slide(_) = mode {
+            // on the sliding surface the integral holds v at the limit
+            let p = m.point(&zs[0], t1 - t, mode);
+            zs[0][0] += (lval(mode) - p.v) / m.g[0];
+        }
+        let mi = mode.kind();
+        let mut len = t1 - t;
+        propagate(&mut cache, &mut zs, mi, len);
+        // the first node at which a validity function is negative
         let mut hit = None;
         for (i, zi) in zs.iter().enumerate().skip(1) {
-            let (v, _) = m.outputs(zi);
-            if f_of(v) > 0.0 {
+            let f = validity(mode, m.point(zi, len, mode), lim);
+            if f[0] < 0.0 || f[1] < 0.0 {
                 hit = Some(i);
                 break;
             }
         }
         let mut switch_to = None;
         if let Some(i) = hit {
-            // the limit function of the crossing: v − L with the L crossed
-            let (vi, _) = m.outputs(&zs[i]);
-            let (lc, to) = match mode {
-                0 if vi > lim.u_max => (lim.u_max, 1),
-                0 => (lim.u_min, 2),
-                1 => (lim.u_max, 0),
-                _ => (lim.u_min, 0),
-            };
             let big = m.augmented(mi, len);
-            let g = |tau: f64| -> f64 {
-                let zt = (&big * tau).exp() * &z;
-                m.outputs(&zt).0 - lc
+            let z0 = zs[0].clone();
+            let f_at = |tau: f64, k: usize| -> f64 {
+                let zt = (&big * tau).exp() * &z0;
+                validity(mode, m.point(&zt, len, mode), lim)[k]
             };
             let (ta, tb) = (
                 (i - 1) as f64 * len / DEG as f64,
                 i as f64 * len / DEG as f64,
             );
-            let (fa, fb) = (g(ta), g(tb));
-            let root = if fa == 0.0 {
-                Some(ta)
-            } else {
-                brent(g, ta, tb, fa, fb, 1e-15 * (t + len).max(1.0), 200).map(|(x, _)| x)
-            };
-            if let Some(tau) = root {
+            let fa = validity(mode, m.point(&zs[i - 1], len, mode), lim);
+            let fb = validity(mode, m.point(&zs[i], len, mode), lim);
+            // the earliest root among the functions that turned negative
+            let mut first: Option<(f64, usize)> = None;
+            for k in 0..2 {
+                if fb[k] >= 0.0 {
+                    continue;
+                }
+                let root = if fa[k] <= 0.0 {
+                    Some(ta)
+                } else {
+                    brent(
+                        |q| f_at(q, k),
+                        ta,
+                        tb,
+                        fa[k],
+                        fb[k],
+                        1e-15 * (t + len).max(1.0),
+                        200,
+                    )
+                    .map(|(q, _)| q)
+                };
+                if let Some(tau) = root {
+                    if first.is_none_or(|(t0, _)| tau < t0) {
+                        first = Some((tau, k));
+                    }
+                }
+            }
+            if let Some((tau, k)) = first {
+                let zt = (&big * tau).exp() * &z0;
+                let to = transition(mode, k, m.point(&zt, len, mode), conditional);
                 switch_to = Some(to);
                 if tau <= tol {
                     // at the piece start: switch now and redo the piece
-                    if mode != 0 {
-                        record.intervals.push((sat_since, t));
-                    } else {
-                        sat_since = t;
+                    zero_switches += 1;
+                    if zero_switches > 16 {
+                        return Err(Error::new(
+                            "actuator",
+                            format!(
+                                "internal: the limit modes chatter at t = {t} (mode {mode:?}); \
+                                 please report this loop"
+                            ),
+                        ));
+                    }
+                    switch_at(&mut record, &mut sat_since, mode, to, t);
+                    if (mode == Mode::Free) != (to == Mode::Free) {
+                        cuts.add(t + theta);
                     }
                     mode = to;
-                    cuts.add(t + theta);
                     just_switched = true;
                     continue;
                 }
                 t1 = t + tau;
-                fill(&mut z, t, t1, &traj, lval(mode));
-                let len = t1 - t;
-                key = (mi, len.to_bits() >> 8);
-                cache
-                    .entry(key)
-                    .or_insert_with(|| (m.augmented(mi, len) * (len / DEG as f64)).exp());
-                zs = vec![z.clone()];
-                for i in 1..NODES {
-                    let zi = &cache[&key] * &zs[i - 1];
-                    zs.push(zi);
-                }
+                let z = &mut zs[0];
+                wv(&mut wn, t, t1, &traj);
+                vinv.mul_to(&wn, &mut xi);
+                z.rows_mut(n, NODES).copy_from(&xi);
+                len = t1 - t;
+                propagate(&mut cache, &mut zs, mi, len);
             }
         }
+        zero_switches = 0;
         // store the piece: applied u + d at the nodes, y, v
         let mut bad = false;
         for zi in zs.iter() {
-            let (v, y) = m.outputs(zi);
-            let u = if mode == 0 { v } else { lval(mode) };
+            let p = m.point(zi, len, mode);
+            let y = p.y;
+            let (u, v) = uv(mode, p);
             if !(v.abs() <= limit && y.abs() <= limit) {
                 bad = true;
             }
@@ -539,7 +941,11 @@ pub(crate) fn integrate(
         }
         traj.lens.push(t1 - t);
         traj.n_pieces += 1;
-        x = zs[DEG].rows(0, n).into_owned();
+        x.copy_from(&zs[DEG].rows(0, n));
+        if let Mode::Slide(_) = mode {
+            let p = m.point(&zs[DEG], len, mode);
+            x[0] += (lval(mode) - p.v) / m.g[0];
+        }
         if bad || !x.iter().all(|q| q.is_finite()) {
             diverged_at = Some(t);
             let k = traj.n_pieces - 1;
@@ -551,23 +957,21 @@ pub(crate) fn integrate(
             v_nodes.truncate(k * NODES);
             break;
         }
-        // a non-grid cut propagates its copy one dead time later
+        // a non-grid cut propagates its copy one dead time later (a switch only when it
+        // changes the applied u's law)
         let on_grid = ((t1 / h).round() * h - t1).abs() <= tol;
-        if !on_grid && (cuts.contains(t1, tol) || switch_to.is_some()) {
+        let u_switch = switch_to.is_some_and(|to| (to == Mode::Free) != (mode == Mode::Free));
+        if !on_grid && (cuts.contains(t1, tol) || u_switch) {
             cuts.add(t1 + theta);
         }
         if let Some(to) = switch_to {
-            if mode != 0 {
-                record.intervals.push((sat_since, t1));
-            } else {
-                sat_since = t1;
-            }
+            switch_at(&mut record, &mut sat_since, mode, to, t1);
             mode = to;
         }
         just_switched = switch_to.is_some();
         t = t1;
     }
-    if mode != 0 {
+    if mode != Mode::Free {
         record.intervals.push((sat_since, t));
     }
     Ok(SatRun {

@@ -104,8 +104,8 @@ test('bad input: clear errors naming the field, nothing traps', () => {
     [{ sampling: { h: 0.1 } }, 'controller.c'], // ideal derivative under tustin
     [{ noise: { std: 0.1 } }, 'noise'],
     [{ sampling: { h: 0.1, method: 'backward' }, noise: { std: -1 } }, 'noise.std'],
-    // continuous limits run (see below); continuous clamping is refused
-    [{ actuator: { u_max: 1, anti_windup: { kind: 'conditional' } } }, 'actuator.anti_windup'],
+    // clamping needs integral action: a PD controller has none
+    [{ controller: { cr: { num: [1, 1], den: [0.1, 1] }, cy: { num: [1, 1], den: [0.1, 1] } }, actuator: { u_max: 1, anti_windup: { kind: 'conditional' } } }, 'actuator.anti_windup'],
   ];
   for (const [extra, path] of cases) {
     assert.throws(
@@ -121,13 +121,15 @@ test('continuous controller with limits: u = sat(v) at every sample, wide limits
   const lin = pidlab.simulate(base);
   const umax = Math.max(...arr(lin.u).map(Math.abs));
   const lim = 0.5 * umax;
-  const res = pidlab.simulate({ ...base, actuator: { u_min: -lim, u_max: lim, anti_windup: { kind: 'tracking' } } });
-  assert.ok(finiteArray(res.y) && finiteArray(res.v));
-  const u = arr(res.u), v = arr(res.v);
-  for (let i = 0; i < u.length; i++) {
-    assert.ok(Math.abs(u[i] - Math.min(Math.max(v[i], -lim), lim)) <= 1e-12, `sample ${i}`);
+  for (const kind of ['tracking', 'conditional']) {
+    const res = pidlab.simulate({ ...base, actuator: { u_min: -lim, u_max: lim, anti_windup: { kind } } });
+    assert.ok(finiteArray(res.y) && finiteArray(res.v), kind);
+    const u = arr(res.u), v = arr(res.v);
+    for (let i = 0; i < u.length; i++) {
+      assert.ok(Math.abs(u[i] - Math.min(Math.max(v[i], -lim), lim)) <= 1e-12, `${kind}: sample ${i}`);
+    }
+    assert.ok(u.some((x) => Math.abs(Math.abs(x) - lim) <= 1e-12), `${kind}: the limit acts`);
   }
-  assert.ok(u.some((x) => Math.abs(Math.abs(x) - lim) <= 1e-12), 'the limit acts');
   const wide = pidlab.simulate({ ...base, actuator: { u_min: -10 * umax, u_max: 10 * umax } });
   // both exact to round-off (tests/saturation.rs measures 1e-13)
   const dy = Math.max(...arr(wide.y).map((y, i) => Math.abs(y - lin.y[i])));
