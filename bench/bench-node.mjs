@@ -67,19 +67,23 @@ console.log('|---|---:|---:|---:|---:|---:|');
 const row = (name, s) => console.log(`| ${name} | ${f(s.median)} | ${f(s.p95)} | ${f(s.min)} | ${f(s.mean)} | ${f(s.cpuMedian)} |`);
 const full = time(update, RUNS);
 row('**update (tune + simulate + analyze)**', full);
-// For scripts/bench.sh: the update's figures and the controller, which the python-control half
-// (bench/python_control_bench.py) simulates the same way.
-if (process.env.BENCH_OUT) {
-  const { writeFileSync } = await import('node:fs');
-  writeFileSync(process.env.BENCH_OUT, JSON.stringify({ update: full, controller: tuneCall ? pidlab.tune(tuneCall).controller : IPD, ms: an0.ms }));
-}
 let ctl = IPD;
+const phases = {};
 if (tuneCall) {
-  row('tune', time(() => pidlab.tune(tuneCall), RUNS));
+  phases.tune = time(() => pidlab.tune(tuneCall), RUNS);
+  row('tune', phases.tune);
   ctl = pidlab.tune(tuneCall).controller;
 }
-row('simulate (3001 points)', time(() => pidlab.simulate({ plant: BOILER, controller: ctl, scenario: SCENARIO }), RUNS));
-row('analyze', time(() => pidlab.analyze({ plant: BOILER, controller: ctl }), RUNS));
+phases.simulate = time(() => pidlab.simulate({ plant: BOILER, controller: ctl, scenario: SCENARIO }), RUNS);
+row('simulate (3001 points)', phases.simulate);
+phases.analyze = time(() => pidlab.analyze({ plant: BOILER, controller: ctl }), RUNS);
+row('analyze', phases.analyze);
+// For scripts/bench.sh: the update's figures, its phases and the controller, which the
+// python-control half (bench/python_control_bench.py) simulates the same way.
+if (process.env.BENCH_OUT) {
+  const { writeFileSync } = await import('node:fs');
+  writeFileSync(process.env.BENCH_OUT, JSON.stringify({ update: full, ...phases, controller: ctl, ms: an0.ms }));
+}
 // Real loops (issue 13): sampled at h = 0.01 (backward Euler, which also takes an ideal
 // derivative), then also with the valve limited to ±1.5 and tracking anti-windup.
 const SAMPLED = { sampling: { h: 0.01, method: 'backward' } };

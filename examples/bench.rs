@@ -218,24 +218,32 @@ fn main() {
             WARMUP,
         ),
     );
-    if tune_call.is_some() {
-        row(
-            "tune",
-            &time(|| drop(black_box(controller(&tune_call))), runs, WARMUP),
-        );
+    let tune_stats = tune_call.as_ref().map(|_| {
+        let s = time(|| drop(black_box(controller(&tune_call))), runs, WARMUP);
+        row("tune", &s);
+        s
+    });
+    let sim_stats = time(
+        || drop(black_box(simulate(&plant, &c0, &scenario).ok())),
+        runs,
+        WARMUP,
+    );
+    row("simulate (3001 points)", &sim_stats);
+    let an_stats = time(|| drop(black_box(analyze(&plant, &c0).ok())), runs, WARMUP);
+    row("analyze", &an_stats);
+    // For scripts/bench.sh: the update and its phases as JSON (the summary table and ratio).
+    if let Ok(path) = std::env::var("BENCH_NATIVE_OUT") {
+        let js = |s: &Stats| serde_json::json!({"median": s.median, "p95": s.p95, "cpuMedian": s.cpu_median});
+        let out = serde_json::json!({
+            "update": js(&full),
+            "tune": tune_stats.as_ref().map(js),
+            "simulate": js(&sim_stats),
+            "analyze": js(&an_stats),
+        });
+        if let Err(e) = std::fs::write(&path, out.to_string()) {
+            eprintln!("BENCH_NATIVE_OUT {path}: {e}");
+        }
     }
-    row(
-        "simulate (3001 points)",
-        &time(
-            || drop(black_box(simulate(&plant, &c0, &scenario).ok())),
-            runs,
-            WARMUP,
-        ),
-    );
-    row(
-        "analyze",
-        &time(|| drop(black_box(analyze(&plant, &c0).ok())), runs, WARMUP),
-    );
     // Real loops (issue 13): the same update with the controller sampled at h = 0.01
     // (backward Euler, which also takes an ideal derivative), then also with the valve
     // limited to ±1.5 and tracking anti-windup (default tt).

@@ -136,6 +136,14 @@ pub fn quadrature(
 ) -> Scan {
     let (k0, _) = traj.locate(a);
     let mut scan = Scan::default();
+    // room for the node samples of the window's pieces (no regrowth on the way)
+    let left = traj.n_pieces.saturating_sub(k0);
+    let est = if traj.starts.is_none() && traj.h > 0.0 && (b - a).is_finite() {
+        (((b - a) / traj.h).ceil() as usize + 2).saturating_mul(traj.offsets.len())
+    } else {
+        left
+    };
+    scan.dense.reserve(est.min(left).saturating_mul(NODES));
     let mut prev_u_end: Option<f64> = if k0 > 0 {
         let (t0p, _) = traj.piece(k0 - 1);
         let vp = traj.v_nodes(k0 - 1);
@@ -143,6 +151,7 @@ pub fn quadrature(
     } else {
         Some(0.0)
     };
+    let basis = GlBasis::new();
     for k in k0..traj.n_pieces {
         let (t0, len) = traj.piece(k);
         if t0 >= b - traj.tol {
@@ -175,6 +184,31 @@ pub fn quadrature(
                 scan.dense.push((t0 + s * len, *y));
             }
         }
+        // A whole piece on which e keeps its sign at the nodes (almost every piece): one
+        // Gauss–Legendre rule on [0, 1], the piece polynomials evaluated at its points by the
+        // precomputed Lagrange basis (the same interpolants as the monomial form below).
+        if s0 == 0.0 && (1.0 - s1).abs() <= 1e-12 && !node_sign_change(r, yv) {
+            let half = 0.5 * len;
+            let pts = basis.s.iter().zip(&basis.l).zip(&basis.dl).zip(&GL_W);
+            for (((s, l), dl), wt) in pts {
+                let mut y = 0.0;
+                let mut u = 0.0;
+                let mut du = 0.0;
+                for ((&lj, &dlj), (&yj, &uj)) in l.iter().zip(dl).zip(yv.iter().zip(&uv)) {
+                    y += lj * yj;
+                    u += lj * uj;
+                    du += dlj * uj;
+                }
+                f(QuadPoint {
+                    t: t0 + s * len - a,
+                    e: r - y,
+                    u,
+                    du: du / len,
+                    w: wt * half,
+                });
+            }
+            continue;
+        }
         // monomial forms once per piece, Horner at the quadrature points
         let yc = monomial_coeffs(yv);
         let uc = monomial_coeffs(&uv);
@@ -196,6 +230,55 @@ pub fn quadrature(
         }
     }
     scan
+}
+
+/// True when `e = r − y` changes sign between consecutive nodes of a piece (node values:
+/// the interpolant passes through them exactly).
+fn node_sign_change(r: f64, yv: &[f64]) -> bool {
+    let mut prev = r - yv[0];
+    for y in &yv[1..NODES] {
+        let e = r - y;
+        if prev * e < 0.0 {
+            return true;
+        }
+        prev = e;
+    }
+    false
+}
+
+/// The Lagrange basis of the piece nodes `σ_j = j/DEG` and its derivative d/dσ at the eight
+/// Gauss–Legendre points of `[0, 1]`: `p(σ_i) = Σ_j l[i][j]·p_j` for the interpolant `p`.
+struct GlBasis {
+    s: [f64; 8],
+    l: [[f64; NODES]; 8],
+    dl: [[f64; NODES]; 8],
+}
+
+impl GlBasis {
+    fn new() -> GlBasis {
+        let mut g = GlBasis {
+            s: [0.0; 8],
+            l: [[0.0; NODES]; 8],
+            dl: [[0.0; NODES]; 8],
+        };
+        let node = |j: usize| j as f64 / DEG as f64;
+        for (i, x) in GL_X.iter().enumerate() {
+            let s = 0.5 + 0.5 * x;
+            g.s[i] = s;
+            for j in 0..NODES {
+                let mut lj = 1.0;
+                let mut sum = 0.0;
+                for m in (0..NODES).filter(|&m| m != j) {
+                    lj *= (s - node(m)) / (node(j) - node(m));
+                    // σ_i is never a node (the Gauss points are interior and irrational)
+                    sum += 1.0 / (s - node(m));
+                }
+                g.l[i][j] = lj;
+                g.dl[i][j] = lj * sum;
+            }
+        }
+        g
+    }
 }
 
 fn horner(c: &[f64; NODES], s: f64) -> f64 {

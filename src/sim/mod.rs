@@ -155,6 +155,9 @@ pub(crate) fn sample(
     };
     let traj = &res.trajectory;
     let t_traj_end = traj.end();
+    for v in [&mut res.t, &mut res.r, &mut res.d, &mut res.y, &mut res.u] {
+        v.reserve_exact(kmax + 1);
+    }
     for k in 0..=kmax {
         let t = k as f64 * sc.dt;
         if t >= t_stop || t > t_traj_end + traj.tol {
@@ -163,8 +166,9 @@ pub(crate) fn sample(
         res.t.push(t);
         res.r.push(traj.step_at(&sc.setpoint, t));
         res.d.push(traj.step_at(&sc.disturbance, t));
-        res.y.push(traj.y_at(t));
-        res.u.push(traj.u_at(t));
+        let (y, u) = traj.y_u_at(t);
+        res.y.push(y);
+        res.u.push(u);
     }
     for t in [sc.setpoint.time, sc.disturbance.time] {
         let key = (

@@ -187,13 +187,28 @@ impl LoopModel {
 /// `z = [x₀ (n); w (6 node values); r; d]` (length `n + 8`), node i = 1..=DEG (τ_i = iℓ/DEG):
 /// `x_i = M_i z`, `v_i = vrow_i·z + E w_i`, `y_i = yrow_i·z + Y_w w_i` (the constant r, d terms
 /// are inside the rows). Only `M_DEG` (the end state) is kept as a matrix.
+///
+/// All `2·DEG + n` rows `[vrow_1..vrow_DEG; yrow_1..yrow_DEG; M_DEG]` are stored column by
+/// column, so one pass over `z` accumulates every row at once (each row's sum is still taken
+/// in the order of `z`, so the values are those of the row-by-row dot products, bit for bit).
 struct Prop {
-    /// `M_DEG`, row-major n × (n + 8).
-    m_end: Vec<f64>,
-    /// `vrow_i`, i = 1..=DEG, each of length n + 8.
-    vrows: Vec<Vec<f64>>,
-    /// `yrow_i`, i = 1..=DEG.
-    yrows: Vec<Vec<f64>>,
+    /// Number of rows, `2·DEG + n`.
+    rows: usize,
+    /// Column-major, `(n + 8) × rows`: `cols[j·rows + r]` is row r's coefficient of `z_j`.
+    cols: Vec<f64>,
+}
+
+impl Prop {
+    /// `out[r] = row_r · z` for every row (summed in the order of `z`).
+    #[inline]
+    fn apply(&self, z: &[f64], out: &mut [f64]) {
+        out.fill(0.0);
+        for (col, &zj) in self.cols.chunks_exact(self.rows).zip(z) {
+            for (o, &c) in out.iter_mut().zip(col) {
+                *o += c * zj;
+            }
+        }
+    }
 }
 
 fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
@@ -201,10 +216,10 @@ fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
     let (ir, id) = (n + NODES, n + NODES + 1);
     let e1 = piece_exponential(&m.a, std::slice::from_ref(&m.bw), &m.br, &m.bd, len)?;
     let width = n + NODES + 2;
+    let rows = 2 * DEG + n;
     let mut p = Prop {
-        m_end: vec![],
-        vrows: vec![],
-        yrows: vec![],
+        rows,
+        cols: vec![0.0; width * rows],
     };
     let mut ei = e1.clone();
     for i in 1..=DEG {
@@ -230,13 +245,16 @@ fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
         vrow[id] += m.hd;
         yrow[ir] += m.yr;
         yrow[id] += m.yd;
-        p.vrows.push(vrow);
-        p.yrows.push(yrow);
+        for j in 0..width {
+            p.cols[j * rows + i - 1] = vrow[j];
+            p.cols[j * rows + DEG + i - 1] = yrow[j];
+        }
         if i == DEG {
-            p.m_end = (0..n)
-                .flat_map(|r| (0..width).map(move |c| (r, c)))
-                .map(|(r, c)| mi[(r, c)])
-                .collect();
+            for r in 0..n {
+                for j in 0..width {
+                    p.cols[j * rows + 2 * DEG + r] = mi[(r, j)];
+                }
+            }
         }
     }
     Ok(p)
@@ -335,10 +353,11 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
     let yxv: Vec<f64> = m.yx.iter().copied().collect();
     // z = [x; w; r; d]
     let mut z = vec![0.0; width];
-    let mut xn = vec![0.0; n];
     let lag = n_delay * pps;
     let mut diverged_at = None;
     let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).fold(0.0, |s, (x, y)| s + x * y);
+    // the rows of a piece: v and y at nodes 1..=DEG, then the end state
+    let mut out = vec![0.0; 2 * DEG + n];
     for k in 0..total {
         let (t0, _) = traj.piece(k);
         let r = traj.step_at(&sc.setpoint, t0);
@@ -355,22 +374,20 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
         let w0 = z[n];
         let v0 = dot(&gx, &z[..n]) + m.h * r + m.hd * d + m.e * w0;
         let y0 = dot(&yxv, &z[..n]) + m.yw * w0 + m.yr * r + m.yd * d;
+        p.apply(&z, &mut out);
+        let (vs, rest) = out.split_at(DEG);
+        let (ys, xn) = rest.split_at(DEG);
         let mut bad = !(v0.abs() <= limit && y0.abs() <= limit);
         traj.v.push(v0);
         traj.y.push(y0);
-        for i in 0..DEG {
-            let v = dot(&p.vrows[i], &z);
-            let y = dot(&p.yrows[i], &z);
+        for (&v, &y) in vs.iter().zip(ys) {
             if !(v.abs() <= limit && y.abs() <= limit) {
                 bad = true;
             }
-            traj.v.push(v);
-            traj.y.push(y);
         }
-        for (row, xr) in xn.iter_mut().enumerate() {
-            *xr = dot(&p.m_end[row * width..(row + 1) * width], &z);
-        }
-        z[..n].copy_from_slice(&xn);
+        traj.v.extend_from_slice(vs);
+        traj.y.extend_from_slice(ys);
+        z[..n].copy_from_slice(xn);
         traj.n_pieces = k + 1;
         if bad || !xn.iter().all(|q| q.is_finite()) {
             diverged_at = Some(t0);

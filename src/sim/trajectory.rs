@@ -151,6 +151,15 @@ impl Trajectory {
         lagrange(self.v_nodes(k), s) - self.step_at(&self.disturbance, t)
     }
 
+    /// `(y(t), u(t))` with one [`Self::locate`] (what [`Self::y_at`] and [`Self::u_at`] give).
+    pub fn y_u_at(&self, t: f64) -> (f64, f64) {
+        let (k, s) = self.locate(t);
+        (
+            lagrange(self.y_nodes(k), s),
+            lagrange(self.v_nodes(k), s) - self.step_at(&self.disturbance, t),
+        )
+    }
+
     /// Keeps only the first `k` pieces (the response before divergence was detected).
     pub fn keep_pieces(&mut self, k: usize) {
         self.n_pieces = k;

@@ -110,9 +110,27 @@ impl LoopTf {
     fn rat(&self, s: C64) -> C64 {
         self.lr.eval_c(s)
     }
-    fn at(&self, w: f64) -> C64 {
-        self.rat(C64::new(0.0, w)) * C64::from_polar(1.0, -w * self.delay)
+    /// `L_rat(jω)`: [`Self::rat`] at `s = jω` with half the multiplications (see [`horner_jw`]).
+    fn rat_jw(&self, w: f64) -> C64 {
+        horner_jw(self.lr.num.asc(), w) / horner_jw(self.lr.den.asc(), w)
     }
+    fn at(&self, w: f64) -> C64 {
+        self.rat_jw(w) * C64::from_polar(1.0, -w * self.delay)
+    }
+}
+
+/// `p(jω)` for ascending coefficients `c`, by Horner with the product by `jω` written out:
+/// `(x + iy)·jω = −yω + ixω`. The general complex Horner (`Poly::eval_c` at `0 + jω`) forms the
+/// same products plus two against the zero real part, which are ±0 and change nothing but,
+/// at most, the sign of a zero: the values are the same, bit for bit.
+fn horner_jw(c: &[f64], w: f64) -> C64 {
+    let (mut re, mut im) = (0.0f64, 0.0f64);
+    for &a in c.iter().rev() {
+        let r = -(im * w) + a;
+        im = re * w;
+        re = r;
+    }
+    C64::new(re, im)
 }
 
 /// `L(jω)` with the exact delay.
@@ -383,4 +401,30 @@ fn nyquist_plot(samples: &[(f64, C64)]) -> Vec<[f64; 3]> {
         .filter(|(_, z)| z.re.is_finite() && z.im.is_finite())
         .map(|(w, z)| [*w, z.re, z.im])
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::poly::Poly;
+
+    /// `horner_jw` is `Poly::eval_c` at `0 + jω`, value for value (== compares ±0 as equal,
+    /// which is the only difference the module docs allow).
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn horner_jw_is_eval_c_on_the_axis() {
+        let polys = [
+            Poly::from_desc(&[1.06, 1.0, 0.0]),
+            Poly::from_desc(&[-0.2286, 0.547]),
+            Poly::from_desc(&[3.7e-3, -2.5, 1e4, 0.3, -7.0, 1e-9]),
+            Poly::constant(2.0),
+        ];
+        for p in &polys {
+            for k in -60..=60 {
+                let w = 10f64.powf(k as f64 / 10.0) * if k % 2 == 0 { 1.0 } else { 1.37 };
+                let a = horner_jw(p.asc(), w);
+                let b = p.eval_c(C64::new(0.0, w));
+                assert!(a.re == b.re && a.im == b.im, "{p:?} at {w}: {a} vs {b}");
+            }
+        }
+    }
 }

@@ -56,7 +56,7 @@ impl Tail {
             }
         }
         w.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
-        let vals: Vec<C64> = w.iter().map(|&x| l.rat(C64::new(0.0, x))).collect();
+        let vals: Vec<C64> = w.iter().map(|&x| l.rat_jw(x)).collect();
         let mut sup = vec![0.0; w.len()];
         let mut m = l_inf;
         for i in (0..w.len()).rev() {
@@ -90,7 +90,10 @@ impl Tail {
     /// Frequency of the largest |L_rat| at or beyond `x`; None when the supremum is only
     /// approached as ω → ∞.
     fn argmax_from(&self, x: f64) -> Option<f64> {
-        let i0 = self.w.iter().position(|&g| g >= x)?;
+        let i0 = self.w.partition_point(|&g| g < x || x.is_nan());
+        if i0 == self.w.len() {
+            return None;
+        }
         let (mut bi, mut bv) = (i0, 0.0);
         for i in i0..self.w.len() {
             let v = self.vals[i].norm();
@@ -102,10 +105,11 @@ impl Tail {
         (bi + 1 < self.w.len() && bv > self.inf_val * (1.0 + 1e-12)).then_some(self.w[bi])
     }
     pub(super) fn at(&self, x: f64) -> f64 {
-        match self.w.iter().position(|&g| g >= x) {
-            Some(0) => self.sup[0],
-            Some(i) => self.sup[i - 1],
-            None => self.inf_val.max(*self.sup.last().unwrap_or(&0.0)),
+        // the first grid point ≥ x (the grid is ascending: a binary search; none for NaN)
+        match self.w.partition_point(|&g| g < x || x.is_nan()) {
+            0 => self.sup[0],
+            i if i < self.w.len() => self.sup[i - 1],
+            _ => self.inf_val.max(*self.sup.last().unwrap_or(&0.0)),
         }
     }
 }
