@@ -18,6 +18,9 @@ trap 'rm -f "$out" "$out.native"' EXIT
 echo "## native (cargo run --release --example bench)"
 BENCH_NATIVE_OUT="$out.native" cargo run --quiet --release --example bench -- "$RUNS"
 echo
+echo "## native real loops (cargo run --release --example bench_loops; simulate only, issue 13)"
+cargo run --quiet --release --example bench_loops -- $(( RUNS / 5 < 50 ? 50 : RUNS / 5 ))
+echo
 echo "## wasm in Node (pkg-node)"
 wasm-pack --quiet build --release --target nodejs --out-dir pkg-node >/dev/null 2>&1 \
   || wasm-pack build --release --target nodejs --out-dir pkg-node
