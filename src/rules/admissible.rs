@@ -212,7 +212,22 @@ struct Judge<'a> {
     /// Grid points and relative accuracy of the ends.
     n: usize,
     rel: f64,
-    seen: std::cell::RefCell<Vec<(String, Outcome)>>,
+    seen: std::cell::RefCell<Vec<(LoopKey, Outcome)>>,
+}
+
+/// What identifies the loop a controller closes around the plant: the exact bit patterns of
+/// Cy's coefficients (the common case, cheap to build and compare) and, for the rare
+/// controller with a model-based set-point loop, that loop's full description (its `Debug`
+/// text: every coefficient printed to round-trip precision). Equal keys mean the same loop.
+#[derive(Debug, Clone, PartialEq, Eq)]
+struct LoopKey(Vec<u64>, Option<String>);
+
+fn loop_key(c: &crate::model::controller::Controller) -> LoopKey {
+    let (num, den) = (c.cy.num.asc(), c.cy.den.asc());
+    let mut bits = Vec::with_capacity(num.len() + den.len() + 1);
+    bits.push(num.len() as u64);
+    bits.extend(num.iter().chain(den).map(|x| x.to_bits()));
+    LoopKey(bits, c.model_loop.as_ref().map(|m| format!("{m:?}")))
 }
 
 impl<'a> Judge<'a> {
@@ -240,7 +255,7 @@ impl<'a> Judge<'a> {
         };
         // The loop is the plant with the feedback path (Cy, and a model loop if any): a
         // parameter that changes only the set-point path is analysed once.
-        let key = format!("{:?}{:?}", t.controller.cy, t.controller.model_loop);
+        let key = loop_key(&t.controller);
         let cached = self
             .seen
             .borrow()

@@ -10,13 +10,35 @@
 
 use crate::analysis::metrics::{quadrature, u_scale, Metrics};
 use crate::analysis::SimResult;
+use crate::sim::Trajectory;
 
 /// ISENSCOD and ISENSDCO of one window of a simulation (`w`: its metrics, for the window's
 /// bounds and u∞), with weights K (`k`) and τ_P (`tau`).
 pub fn isens(res: &SimResult, w: &Metrics, k: f64, tau: f64) -> (f64, Option<f64>) {
-    let u_inf = w.u_final;
+    isens_on(
+        &res.trajectory,
+        (w.t_start, w.t_end),
+        w.u_final,
+        u_scale(&res.u),
+        k,
+        tau,
+    )
+}
+
+/// [`isens`] on a continuous response directly: the window `[a, b]`, the steady-state control
+/// `u_inf` and the scale against which a jump of u is judged (`u_scale` of the samples), as
+/// the metrics would take them. Algorithm III calls it on [`crate::sim::simulate`]'s
+/// response, which skips the generic metrics it does not use (same quadrature, same value).
+pub fn isens_on(
+    traj: &Trajectory,
+    (a, b): (f64, f64),
+    u_inf: f64,
+    u_scale: f64,
+    k: f64,
+    tau: f64,
+) -> (f64, Option<f64>) {
     let (mut cod, mut dco) = (0.0, 0.0);
-    let scan = quadrature(&res.trajectory, w.t_start, w.t_end, u_scale(&res.u), |q| {
+    let scan = quadrature(traj, a, b, u_scale, |q| {
         let e2 = q.e * q.e;
         cod += q.w * (e2 + k * k * (q.u - u_inf).powi(2));
         dco += q.w * (e2 + k * k * tau * tau * q.du * q.du);

@@ -535,7 +535,7 @@ impl super::Rule for Alg3 {
             let warnings = paper_range_warning(&p);
             let zeta = params.number(decl, "zeta")?;
             let crit = params.text(decl, "criterion")?;
-            let (s, a3) = algorithm3(&p, zeta, &crit, None)?;
+            let (s, a3) = alg3_cached(&p, zeta, &crit)?;
             let algorithm = Algorithm::III {
                 criterion: crit,
                 j: a3.j,
@@ -545,10 +545,52 @@ impl super::Rule for Alg3 {
         })()
         .map_err(plant_error)
     }
-    /// Each design simulates the load response for every candidate τ_D (0.1–1 s natively).
+    /// Each design simulates the load response for each trial τ_D (10-50 simulations).
     fn slow_to_tune(&self) -> bool {
         true
     }
+}
+
+/// How many Algorithm III solutions [`alg3_cached`] keeps.
+const ALG3_CACHE_SIZE: usize = 16;
+
+/// An Algorithm III design's cache key: the exact bit patterns of K̄, τ̄_P, τ̄_Z, d̄, ζ and the
+/// criterion (a hit is the same design, never a neighbour's).
+type Alg3Key = ([u64; 5], bool);
+
+std::thread_local! {
+    /// The last Algorithm III solutions: (key, solution). The solve is deterministic, so a hit
+    /// is bit-identical to solving again.
+    static ALG3_CACHE: std::cell::RefCell<Vec<(Alg3Key, (MethodISolution, Alg3Info))>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+fn alg3_key(p: &Process, zeta: f64, criterion: &str) -> Alg3Key {
+    (
+        [p.k, p.tau_p, p.tau_z, p.theta, zeta].map(f64::to_bits),
+        criterion == "isensdco",
+    )
+}
+
+/// Algorithm III through a small cache: an exact hit (same plant, ζ and criterion, bit for bit)
+/// returns the stored solution, anything else is solved ([`algorithm3`]). Starting the solve
+/// from the nearest stored design's τ_D ([`algorithm3_near`]) was measured and not kept: on the
+/// boiler a ζ drag went from 13 to 10 ms per tune, on issue 15's plant from 90 to 120 ms (its
+/// minimum sits against the edge where the phase peak of Eq. 10 disappears, and a start there
+/// makes the first parabolic step poor).
+pub fn alg3_cached(p: &Process, zeta: f64, criterion: &str) -> Result<(MethodISolution, Alg3Info)> {
+    let key = alg3_key(p, zeta, criterion);
+    let hit = ALG3_CACHE.with(|c| c.borrow().iter().find(|e| e.0 == key).map(|e| e.1.clone()));
+    if let Some(r) = hit {
+        return Ok(r);
+    }
+    let r = algorithm3(p, zeta, criterion, None)?;
+    ALG3_CACHE.with(|c| {
+        let mut c = c.borrow_mut();
+        c.insert(0, (key, r.clone()));
+        c.truncate(ALG3_CACHE_SIZE);
+    });
+    Ok(r)
 }
 
 impl super::Rule for M2Xi {

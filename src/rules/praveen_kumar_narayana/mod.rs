@@ -808,6 +808,61 @@ std::thread_local! {
         const { std::cell::RefCell::new(Vec::new()) };
 }
 
+/// How many solved targets [`lambda_for_ms`] keeps (a drag's recent values).
+const MS_SOLVED_SIZE: usize = 16;
+
+std::thread_local! {
+    /// The last λ solved for a target Ms: (loop key, target Ms, λ). A new target of the same
+    /// loop starts from the nearest one ([`lambda_near`]).
+    static MS_SOLVED: std::cell::RefCell<Vec<([u64; 7], f64, f64)>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// λ for the target Ms `ms` starting from a solved neighbour `(ms0, l0)` of the same loop on
+/// the rising branch (λ above the Ms minimum, inside `(l_min, top)`): steps in ln λ from l0
+/// towards the target (0.01, doubling) until Ms − target changes sign, then Brent's method to
+/// 1e-13 in ln λ (the cold solve's 1e-12 relative bracket or |Ms − target| ≤ 1e-12). On the
+/// rising branch Ms increases with λ, so the root is the one the cold solve
+/// ([`crate::analysis::freq::solve_for_ms`]: first crossing above the minimum) finds; an
+/// unstable design counts as Ms above any target, as there. `None` when no bracket is found
+/// inside the branch (the cold solve runs instead). 5-10 Ms evaluations per drag step instead
+/// of the cold solve's scan and narrowing.
+fn lambda_near(
+    ms: f64,
+    (ms0, l0): (f64, f64),
+    (l_min, top): (f64, f64),
+    ms_of: &dyn Fn(f64) -> f64,
+) -> Option<f64> {
+    let (lo_b, hi_b) = (l_min.ln(), top.ln());
+    // a large finite value for unstable designs keeps Brent's interpolation finite
+    let f = |x: f64| (ms_of(x.exp()).min(1e6)) - ms;
+    let up = ms > ms0;
+    let (mut xa, mut fa) = (l0.ln(), ms0 - ms);
+    let mut step = 0.01;
+    for _ in 0..40 {
+        let xb = if up {
+            (xa + step).min(hi_b)
+        } else {
+            (xa - step).max(lo_b)
+        };
+        let fb = f(xb);
+        if fa * fb <= 0.0 {
+            let (a, b, ga, gb) = if up {
+                (xa, xb, fa, fb)
+            } else {
+                (xb, xa, fb, fa)
+            };
+            return crate::numerics::brent(f, a, b, ga, gb, 1e-13, 100).map(|r| r.0.exp());
+        }
+        if xb == hi_b || xb == lo_b {
+            return None;
+        }
+        (xa, fa) = (xb, fb);
+        step *= 2.0;
+    }
+    None
+}
+
 /// The cache key of a loop: the plant's, ε's and the derivative's exact bit patterns.
 fn ms_min_key(p: &IpdtIr, epsilon: f64, deriv: Derivative) -> [u64; 7] {
     let (kind, n) = match deriv {
@@ -839,11 +894,12 @@ fn lambda_for_ms(p: &IpdtIr, ms: f64, epsilon: f64, deriv: Derivative) -> Result
         let d = design(p, l)?;
         Ok((plant.clone(), controller(&d, epsilon, deriv)?))
     };
+    // `stability_and_ms` is `analyze`'s own verdict and Ms without the margins (same values)
     let ms_of = |l: f64| -> f64 {
         loop_of(l)
             .ok()
-            .and_then(|(pl, c)| crate::analysis::freq::analyze(&pl, &c).ok())
-            .and_then(|a| if a.stable { a.ms } else { None })
+            .and_then(|(pl, c)| crate::analysis::freq::stability_and_ms(&pl, &c).ok())
+            .and_then(|(stable, ms)| if stable { ms } else { None })
             .unwrap_or(f64::INFINITY)
     };
     // Golden-section search for the minimum of Ms on log λ (inner 99.99 % of the interval),
@@ -880,7 +936,31 @@ fn lambda_for_ms(p: &IpdtIr, ms: f64, epsilon: f64, deriv: Derivative) -> Result
             ),
         ));
     }
-    let l = crate::analysis::freq::solve_for_ms(ms, l_min, hi * 0.9999, loop_of)?;
+    let top = hi * 0.9999;
+    let near = MS_SOLVED.with(|c| {
+        c.borrow()
+            .iter()
+            .filter(|e| e.0 == key && e.1 > ms_min)
+            .min_by(|a, b| (a.1 - ms).abs().total_cmp(&(b.1 - ms).abs()))
+            .map(|e| (e.1, e.2))
+    });
+    let warm = near.and_then(|(ms0, l0)| {
+        if ms0 == ms {
+            Some(l0)
+        } else {
+            lambda_near(ms, (ms0, l0), (l_min, top), &ms_of)
+        }
+    });
+    let l = match warm {
+        Some(l) => l,
+        None => crate::analysis::freq::solve_for_ms(ms, l_min, top, loop_of)?,
+    };
+    MS_SOLVED.with(|c| {
+        let mut c = c.borrow_mut();
+        c.retain(|e| !(e.0 == key && e.1 == ms));
+        c.insert(0, (key, ms, l));
+        c.truncate(MS_SOLVED_SIZE);
+    });
     Ok((
         l,
         MsSearch {

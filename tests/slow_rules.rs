@@ -1,0 +1,161 @@
+//! The faster solves of the slow rules (issue 15) give the answers of the solves they replace,
+//! to those solvers' tolerances, and their caches never answer for another design:
+//! - Arvanitis 2012 Algorithm III: the root solve ([`algorithm3`]) against the paper's outer
+//!   iteration ([`algorithm3_reference`]), a warm start ([`algorithm3_near`]) against a cold
+//!   one, and the rule's cache against fresh solves;
+//! - Praveen Kumar & Narayana's target Ms: a drag (each solve warm-started from the last one)
+//!   against cold solves, and the cache against a fresh solve for another plant.
+//!
+//! Thread-local caches start empty in a new thread: `cold(...)` runs there.
+
+use pidlab::model::plant::{family_infos, Family, Plant};
+use pidlab::rules::arvanitis2012::{algorithm3, algorithm3_near, algorithm3_reference, Process};
+use pidlab::rules::{self, Params, Tuning};
+
+/// Runs `f` in a fresh thread (empty caches).
+fn cold<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+    std::thread::spawn(f).join().unwrap()
+}
+
+fn ipdt_ir(k: f64, tau: f64, tau_z: f64, theta: f64) -> Plant {
+    Family::IpdtIr {
+        k,
+        tau,
+        tau_z,
+        theta,
+    }
+    .plant()
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+fn gains(t: &Tuning) -> Vec<u64> {
+    t.named.iter().map(|(_, v)| v.to_bits()).collect()
+}
+
+/// The root solve lands on the paper's iteration's fixed point: that iteration stops when a
+/// pass moves τ_D by ≤ 1e-5 relative (its inner Brent minimization to ~1e-7), so the two agree
+/// to 1e-5 in τ_D, and τ_I, K_C follow from τ_D through the same fixed point of Eqs. (10),
+/// (11), (20) (their sensitivity to τ_D is O(1) here: 1e-5 again). J is flat at its minimum:
+/// a τ_D error δ moves it by O(δ²), far below 1e-6.
+#[test]
+fn algorithm3_root_solve_is_the_papers_fixed_point() {
+    for (p, zeta) in [
+        (Process::new(0.547, 1.06, 0.418, 0.1).unwrap(), 0.6),
+        (Process::new(1.0, 2.0, 0.8, 1.0).unwrap(), 0.707),
+    ] {
+        let (a, ia) = algorithm3(&p, zeta, "isenscod", None).unwrap();
+        let (b, ib) = algorithm3_reference(&p, zeta, "isenscod", None).unwrap();
+        println!(
+            "{p:?} ζ {zeta}: τ_D {} vs {} ({:.1e}), sims {} vs {}",
+            a.td,
+            b.td,
+            rel(a.td, b.td),
+            ia.simulations,
+            ib.simulations
+        );
+        assert!(rel(a.td, b.td) <= 1e-5, "τ_D {} vs {}", a.td, b.td);
+        assert!(rel(a.ti, b.ti) <= 1e-5, "τ_I {} vs {}", a.ti, b.ti);
+        assert!(rel(a.kc, b.kc) <= 1e-5, "K_C {} vs {}", a.kc, b.kc);
+        assert!(rel(ia.j, ib.j) <= 1e-6, "J {} vs {}", ia.j, ib.j);
+        assert!(ia.simulations < ib.simulations);
+    }
+}
+
+/// A warm start (a τ_D 3 % off, as after a small slider move) converges to the cold solve's
+/// root: both stop at 1e-9 relative steps of a superlinear iteration, and both take g from the
+/// same central difference (step 1e-4 τ_D, whose bias moves the root by ~1e-9); 1e-7 leaves
+/// room for the difference of two such stops.
+#[test]
+fn algorithm3_warm_start_gives_the_cold_root() {
+    let p = Process::new(0.547, 1.06, 0.418, 0.1).unwrap();
+    let (a, _) = algorithm3(&p, 0.6, "isenscod", None).unwrap();
+    for f in [0.97, 1.03] {
+        let (b, _) = algorithm3_near(&p, 0.6, "isenscod", None, Some(f * a.td)).unwrap();
+        println!(
+            "hint ×{f}: τ_D {} vs {} ({:.1e})",
+            b.td,
+            a.td,
+            rel(b.td, a.td)
+        );
+        assert!(rel(b.td, a.td) <= 1e-7, "{} vs {}", b.td, a.td);
+        assert!(rel(b.ti, a.ti) <= 1e-7 && rel(b.kc, a.kc) <= 1e-7);
+    }
+}
+
+/// The rule's cache answers only for the same plant, ζ and criterion bit for bit: after
+/// designs for the boiler, designs for other plants (one with θ one ulp away) and another ζ
+/// are exactly what a fresh thread computes, and the boiler's is served again unchanged.
+#[test]
+fn algorithm3_cache_never_answers_for_another_design() {
+    let theta_ulp = f64::from_bits(0.1f64.to_bits() + 1);
+    let designs = [
+        (ipdt_ir(0.547, 1.06, 0.418, 0.1), 0.6),
+        (ipdt_ir(0.547, 1.06, 0.418, theta_ulp), 0.6),
+        (ipdt_ir(0.547, 1.06, 0.418, 0.12), 0.6),
+        (ipdt_ir(0.547, 1.06, 0.418, 0.1), 0.65),
+    ];
+    let tune = |plant: &Plant, zeta: f64| {
+        rules::tune(
+            "arvanitis_alg3",
+            plant,
+            &Params::default().with("zeta", zeta),
+        )
+        .unwrap()
+    };
+    let first = tune(&designs[0].0, designs[0].1);
+    for (plant, zeta) in designs.iter().cloned() {
+        let warm = tune(&plant, zeta);
+        let (pc, zc) = (plant.clone(), zeta);
+        let fresh = cold(move || tune(&pc, zc));
+        assert_eq!(gains(&warm), gains(&fresh), "{plant:?} ζ {zeta}");
+    }
+    assert_eq!(gains(&tune(&designs[0].0, 0.6)), gains(&first));
+    assert_ne!(
+        gains(&tune(&designs[2].0, 0.6)),
+        gains(&first),
+        "another plant, another design"
+    );
+}
+
+/// A target-Ms drag (each solve starts from the previous λ) gives the cold solves' λ: both
+/// locate the single crossing of Ms(λ) = target on the rising branch, the cold one to a 1e-12
+/// relative bracket or |Ms − target| ≤ 1e-12, the warm one to 1e-13 in ln λ; with dMs/d ln λ
+/// of order one here, 1e-10 relative bounds their difference with room.
+#[test]
+fn target_ms_drag_gives_the_cold_lambda() {
+    // the page's default ipdt_ir plant
+    let info = family_infos()
+        .into_iter()
+        .find(|f| f.id == "ipdt_ir")
+        .unwrap();
+    let get = |n: &str| info.params.iter().find(|p| p.name == n).map(|p| p.default);
+    let plant = Family::from_params("ipdt_ir", get).unwrap().plant();
+    let lam = |t: &Tuning| t.named("lambda").unwrap();
+    let tune = |plant: &Plant, ms: f64| {
+        rules::tune(
+            "praveen_kumar",
+            plant,
+            &Params::default().with("target_ms", ms),
+        )
+        .unwrap()
+    };
+    let drag: Vec<f64> = (0..8)
+        .map(|i| 1.6 + 0.013 * i as f64)
+        .chain([1.62])
+        .collect();
+    let warm: Vec<f64> = drag.iter().map(|&ms| lam(&tune(&plant, ms))).collect();
+    for (ms, lw) in drag.iter().zip(&warm) {
+        let (pc, m) = (plant.clone(), *ms);
+        let lc = cold(move || lam(&tune(&pc, m)));
+        println!("Ms {ms}: λ {lw} vs cold {lc} ({:.1e})", rel(*lw, lc));
+        assert!(rel(*lw, lc) <= 1e-10, "Ms {ms}: λ {lw} vs cold {lc}");
+    }
+    // another plant after the drag: its own λ, exactly what a fresh thread finds
+    let other = ipdt_ir(0.547, 1.06, 0.418, 0.12);
+    let lo = lam(&tune(&other, 1.62));
+    let oc = other.clone();
+    assert_eq!(lo.to_bits(), cold(move || lam(&tune(&oc, 1.62))).to_bits());
+}
