@@ -23,7 +23,7 @@ pub struct Figure {
 }
 
 /// Figures of the papers' lists that are not regenerated, with the reason.
-pub const MISSING: [(&str, &str, &str); 5] = [
+pub const MISSING: [(&str, &str, &str); 4] = [
     (
         "Arvanitis et al. 2012",
         "Figs. 2–7",
@@ -36,16 +36,9 @@ pub const MISSING: [(&str, &str, &str); 5] = [
          their data yet",
     ),
     (
-        "Medarametla & Manimozhi 2018",
-        "Figs. 3–12",
-        "Examples 1–5 nominal and perturbed responses: the tables are reproduced, the time series \
-         are not written yet",
-    ),
-    (
         "Praveen Kumar & Narayana",
-        "Figs. 2–15",
-        "the λτ map and the responses of Examples 1–2: the tables are reproduced, the time series \
-         are not written yet",
+        "Fig. 2",
+        "the λτ map over z/τ and θ/τ: the report prints its grid as a table, no CSV yet",
     ),
     (
         "Shamsuzzoha & Lee 2008",
@@ -130,7 +123,8 @@ fn chart(title: String, x_label: &str, x_range: Option<(f64, f64)>, panels: Vec<
 }
 
 /// Wide CSV: every column whose name starts with `prefix` (all but `t` when empty) against t,
-/// labelled by `label(name)`.
+/// labelled by `label(name)`; a column with no finite value (a loop the study could not run,
+/// e.g. Ajmeri & Ali's Example 4) is left out.
 fn wide(csv: &Csv, prefix: &str, label: impl Fn(&str) -> String) -> Result<Vec<Curve>, String> {
     let t = csv.col("t")?;
     Ok(csv
@@ -139,6 +133,7 @@ fn wide(csv: &Csv, prefix: &str, label: impl Fn(&str) -> String) -> Result<Vec<C
         .enumerate()
         .filter(|(i, h)| *i != t && h.starts_with(prefix) && h.as_str() != "r")
         .map(|(i, h)| curve(&label(h), csv.xy(t, i, |_| true)))
+        .filter(|c| c.points.iter().any(|p| p.1.is_finite()))
         .collect())
 }
 
@@ -449,7 +444,133 @@ pub fn figures(dir: &Path) -> Result<Vec<Figure>, String> {
             ),
         );
     }
+    medarametla(dir, &mut v)?;
+    praveen_kumar(dir, &mut v)?;
     Ok(v)
+}
+
+fn medarametla_label(col: &str) -> String {
+    let k = &col[2..];
+    let (k, tail) = match k.strip_suffix("_load_only") {
+        Some(k) => (k, " (load step only)"),
+        None => (k, ""),
+    };
+    let name = match k {
+        "proposed" => "proposed",
+        "anil_padma_sree" => "Anil & Padma Sree",
+        "ajmeri_ali" => "Ajmeri & Ali",
+        other => other,
+    };
+    format!("{name}{tail}")
+}
+
+/// Medarametla & Manimozhi 2018, Figs. 3–12: Examples 1–5, nominal (odd) and gain and delay
+/// +20 % (even), output and control signal (`medarametla_ex*_*.csv`).
+fn medarametla(dir: &Path, v: &mut Vec<Figure>) -> Result<(), String> {
+    const MED: &str = "Medarametla & Manimozhi 2018";
+    const NUMBERS: [&str; 10] = [
+        "Fig. 3", "Fig. 4", "Fig. 5", "Fig. 6", "Fig. 7", "Fig. 8", "Fig. 9", "Fig. 10", "Fig. 11",
+        "Fig. 12",
+    ];
+    for ex in 1..=5 {
+        for (j, cond) in ["nominal", "perturbed"].iter().enumerate() {
+            let number = NUMBERS[2 * (ex - 1) + j];
+            let src = format!("medarametla_ex{ex}_{cond}.csv");
+            let csv = Csv::read(dir, &src)?;
+            let what = if j == 0 {
+                "nominal response"
+            } else {
+                "perturbed response (gain and delay +20 %)"
+            };
+            v.push(Figure {
+                paper: MED,
+                number,
+                file: format!("medarametla_fig{}.svg", 3 + 2 * (ex - 1) + j),
+                sources: vec![src],
+                chart: chart(
+                    format!("Medarametla & Manimozhi 2018, {number}: {what} of Example {ex}"),
+                    "time (s)",
+                    None,
+                    vec![
+                        panel("output y", wide(&csv, "y_", medarametla_label)?),
+                        panel("control signal u", wide(&csv, "u_", medarametla_label)?),
+                    ],
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Praveen Kumar & Narayana, Figs. 3–15: servo and regulatory runs (0.2 steps) of Examples 1–2,
+/// output and manipulated variable, nominal and with the dead time +40 %, proposed and Pai et
+/// al. 2010 (`praveen_kumar_ex*_*.csv`).
+fn praveen_kumar(dir: &Path, v: &mut Vec<Figure>) -> Result<(), String> {
+    const PK: &str = "Praveen Kumar & Narayana";
+    let list: [(&str, usize, &str, &str, &str); 13] = [
+        ("Fig. 3", 1, "nominal", "servo", "y"),
+        ("Fig. 4", 1, "nominal", "servo", "u"),
+        ("Fig. 5", 1, "nominal", "regulatory", "y"),
+        ("Fig. 6", 1, "nominal", "regulatory", "u"),
+        ("Fig. 7", 1, "perturbed", "servo", "y"),
+        ("Fig. 8", 2, "nominal", "servo", "y"),
+        ("Fig. 9", 2, "nominal", "servo", "u"),
+        ("Fig. 10", 2, "nominal", "regulatory", "y"),
+        ("Fig. 11", 2, "nominal", "regulatory", "u"),
+        ("Fig. 12", 2, "perturbed", "servo", "y"),
+        ("Fig. 13", 2, "perturbed", "servo", "u"),
+        ("Fig. 14", 2, "perturbed", "regulatory", "y"),
+        ("Fig. 15", 2, "perturbed", "regulatory", "u"),
+    ];
+    for (number, ex, cond, run, sig) in list {
+        let src = format!("praveen_kumar_ex{ex}_{cond}.csv");
+        let csv = Csv::read(dir, &src)?;
+        let t = csv.col("t")?;
+        let curves = [("proposed", "proposed"), ("pai2010", "Pai et al. 2010")]
+            .iter()
+            .map(|(k, label)| -> Result<Curve, String> {
+                let c = csv.col(&format!("{sig}_{run}_{k}"))?;
+                Ok(curve(label, csv.xy(t, c, |_| true)))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let what = match (sig, run) {
+            ("y", "servo") => "servo response",
+            ("u", "servo") => "manipulated variable for servo response",
+            ("y", _) => "regulatory response",
+            _ => "manipulated variable for regulatory response",
+        };
+        let cond_text = if cond == "nominal" {
+            "nominal conditions"
+        } else {
+            "perturbed conditions (dead time +40 %)"
+        };
+        let file = format!(
+            "praveen_kumar_fig{}.svg",
+            number.trim_start_matches("Fig. ")
+        );
+        v.push(Figure {
+            paper: PK,
+            number,
+            file,
+            sources: vec![src],
+            chart: chart(
+                format!(
+                    "Praveen Kumar & Narayana, {number}: {what} of example {ex} under {cond_text}"
+                ),
+                "time (s)",
+                None,
+                vec![panel(
+                    if sig == "y" {
+                        "output y"
+                    } else {
+                        "manipulated variable u"
+                    },
+                    curves,
+                )],
+            ),
+        });
+    }
+    Ok(())
 }
 
 /// Width and per-panel height of every SVG (pixels).
@@ -475,7 +596,14 @@ pub fn section(figs: &[Figure]) -> String {
     }
     for p in papers {
         let _ = write!(o, "- {p}:");
-        for f in figs.iter().filter(|f| f.paper == p) {
+        let mut of_paper: Vec<&Figure> = figs.iter().filter(|f| f.paper == p).collect();
+        of_paper.sort_by_key(|f| {
+            f.number
+                .trim_start_matches("Fig. ")
+                .parse::<u32>()
+                .unwrap_or(0)
+        });
+        for f in of_paper {
             let srcs: Vec<String> = f
                 .sources
                 .iter()
