@@ -4,11 +4,13 @@
 
 mod arvanitis2012;
 mod engine;
+mod figures;
 mod kaya2020;
 mod ledger;
 mod medarametla_manimozhi2018;
 mod praveen_kumar_narayana;
 mod shamsuzzoha_lee2008;
+mod svg;
 
 fn main() {
     let only: Vec<String> = std::env::args().skip(1).collect();
@@ -43,6 +45,8 @@ fn main() {
         eprint!("{}", ledger::csv(&cells));
     }
     if only.is_empty() {
+        doc.push_str(&write_figures());
+        doc.push('\n');
         let cells = ledger::take();
         doc.push_str(&ledger::summary(&cells));
         std::fs::create_dir_all("docs").expect("create docs/");
@@ -55,4 +59,17 @@ fn main() {
         std::fs::write("docs/reproduction.md", doc).expect("write docs/reproduction.md");
         eprintln!("wrote docs/reproduction.md");
     }
+}
+
+/// Draws every figure as SVG from the CSVs the sections just wrote, and returns the report's
+/// figure section.
+fn write_figures() -> String {
+    let dir = std::path::Path::new("docs/figures");
+    let figs = figures::figures(dir).expect("figure data (docs/figures/*.csv)");
+    for f in &figs {
+        let svg = figures::svg(f).expect("render figure");
+        ledger::write_file(&format!("docs/figures/{}", f.file), &svg).expect("write figure");
+    }
+    eprintln!("wrote {} figures (docs/figures/*.svg)", figs.len());
+    figures::section(&figs)
 }

@@ -153,6 +153,7 @@ pub fn report() -> String {
     o.push_str(&ms_section());
     o.push_str(&tables45_section());
     o.push_str(&cstr_section());
+    figure_data();
     o
 }
 
@@ -930,4 +931,69 @@ fn cstr_runs(o: &mut String, p: &CstrParams, op: &OperatingPoint) -> Vec<Vec<Vec
         }
     }
     csv_rows
+}
+
+/// Time series of Figs. 3-12 (CSV for the SVG figures): Examples 1-5, nominal and perturbed
+/// (gain and delay +20 %), every method's loop as Tables 4-5 simulate it (`studies::row_loop`,
+/// `studies::performance_sim` at the paper's 0.1 s; Anil & Padma Sree's run is the load step
+/// alone where their set-point path is improper), every second sample. A loop that fails or
+/// diverges is written as empty cells.
+fn figure_data() {
+    let methods = [
+        (Method::Proposed, "proposed"),
+        (Method::AnilPadmaSree, "anil_padma_sree"),
+        (Method::AjmeriAli, "ajmeri_ali"),
+    ];
+    for e in mm::examples().iter().filter(|e| e.id != "ex6") {
+        for (cond, name) in [
+            (Condition::Nominal, "nominal"),
+            (Condition::Perturbed, "perturbed"),
+        ] {
+            let mut t: Vec<f64> = vec![];
+            let mut cols: Vec<(String, Vec<f64>)> = vec![];
+            for (m, key) in methods {
+                let r = studies::row_loop(e, m, cond).and_then(|(plant, c, servo)| {
+                    studies::performance_sim(&plant, &c, e, servo, 0.1).map(|r| (r, servo))
+                });
+                let (y, u, tag) = match &r {
+                    Some((r, servo)) => {
+                        if t.is_empty() {
+                            t = r.t.iter().step_by(2).copied().collect();
+                        }
+                        let pick = |v: &Vec<f64>| v.iter().step_by(2).copied().collect();
+                        (
+                            pick(&r.y),
+                            pick(&r.u),
+                            if *servo { "" } else { "_load_only" },
+                        )
+                    }
+                    None => (vec![], vec![], ""),
+                };
+                cols.push((format!("y_{key}{tag}"), y));
+                cols.push((format!("u_{key}{tag}"), u));
+            }
+            let mut csv = String::from("t");
+            for (h, _) in &cols {
+                csv.push(',');
+                csv.push_str(h);
+            }
+            csv.push('\n');
+            for (i, ti) in t.iter().enumerate() {
+                let _ = write!(csv, "{ti:.2}");
+                for (_, v) in &cols {
+                    match v.get(i) {
+                        Some(x) => {
+                            let _ = write!(csv, ",{x:.6}");
+                        }
+                        None => csv.push(','),
+                    }
+                }
+                csv.push('\n');
+            }
+            let _ = ledger::write_file(
+                &format!("docs/figures/medarametla_{}_{name}.csv", e.id),
+                &csv,
+            );
+        }
+    }
 }

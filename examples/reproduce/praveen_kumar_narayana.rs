@@ -47,6 +47,7 @@ pub fn report() -> String {
     reduced_model(&mut s);
     tables_2_to_5(&mut s);
     fig2(&mut s);
+    figure_data();
     s
 }
 
@@ -599,4 +600,70 @@ fn fig2(s: &mut String) {
         s,
         "\n(— : Ms = 2 not reachable: the smallest Ms of the admissible λ interval exceeds 2.)\n"
     );
+}
+
+/// Time series of Figs. 3-15 (CSV for the SVG figures): per example and condition (nominal,
+/// +40 % delay), separate servo (r = 0.2 at 0) and regulatory (d = 0.2 at 0) runs at dt = 0.01
+/// as in Tables 2-5, of the proposed controller and Pai et al.'s (our mapping), written every
+/// 20th (Example 1, window 100) or 50th (Example 2, window 600) sample. A run that fails or
+/// diverges is written as empty cells.
+fn figure_data() {
+    use pidlab::analysis::simulate;
+    use pidlab::sim::Scenario;
+    for (ex, t_end, every) in [(1usize, 100.0, 20usize), (2, 600.0, 50)] {
+        for (cond, plus40) in [("nominal", false), ("perturbed", true)] {
+            let plant = studies::simulated_plant(ex, plus40);
+            let pai = tables::TABLE1_PAI2010[ex - 1];
+            let ctrls = [
+                ("proposed", studies::proposed_controller(ex).ok()),
+                (
+                    "pai2010",
+                    pk::pai2010_controller(pai.kc, pai.ti, pai.td).ok(),
+                ),
+            ];
+            let mut cols: Vec<(String, Vec<f64>)> = vec![];
+            let mut t: Vec<f64> = vec![];
+            for (name, c) in &ctrls {
+                for (run, sp, d) in [("servo", 0.2, 0.0), ("regulatory", 0.0, 0.2)] {
+                    let sc = Scenario::steps(t_end, 0.01, 0.0, sp, 0.0, d);
+                    let r = c
+                        .as_ref()
+                        .and_then(|c| simulate(&plant, c, &sc).ok())
+                        .filter(|r| !r.diverged);
+                    if let Some(r) = &r {
+                        if t.is_empty() {
+                            t = r.t.iter().step_by(every).copied().collect();
+                        }
+                    }
+                    let pick = |v: Option<&Vec<f64>>| -> Vec<f64> {
+                        v.map_or(vec![], |v| v.iter().step_by(every).copied().collect())
+                    };
+                    cols.push((format!("y_{run}_{name}"), pick(r.as_ref().map(|r| &r.y))));
+                    cols.push((format!("u_{run}_{name}"), pick(r.as_ref().map(|r| &r.u))));
+                }
+            }
+            let mut csv = String::from("t");
+            for (h, _) in &cols {
+                csv.push(',');
+                csv.push_str(h);
+            }
+            csv.push('\n');
+            for (i, ti) in t.iter().enumerate() {
+                let _ = write!(csv, "{ti:.2}");
+                for (_, v) in &cols {
+                    match v.get(i) {
+                        Some(x) => {
+                            let _ = write!(csv, ",{x:.6}");
+                        }
+                        None => csv.push(','),
+                    }
+                }
+                csv.push('\n');
+            }
+            let _ = ledger::write_file(
+                &format!("docs/figures/praveen_kumar_ex{ex}_{cond}.csv"),
+                &csv,
+            );
+        }
+    }
 }

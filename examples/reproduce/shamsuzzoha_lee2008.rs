@@ -45,6 +45,7 @@ pub fn report() -> String {
     simulations(&mut o);
     weighting_filters(&mut o);
     guidelines(&mut o);
+    chen_seborg_fig7(&mut o);
     o
 }
 
@@ -637,8 +638,8 @@ fn guidelines(o: &mut String) {
          paper recommends an overdamped filter, ζ > 1). Fig. 7's Zhang et al. curve uses their rule \
          as derived in `zhang1999_pid` (IMC with β = 3λ + θ and e^(-θs) ≈ 1 − θs; it reproduces all \
          four numbers of Table 1's row: 2.038, 2.991, 0.665 and F_t 0.145), ideal PID × F_t on the \
-         error, λ solved for Ms = 2. Chen & Seborg's curve needs their rule, which the paper neither \
-         states nor quotes a setting of, so it is not regenerated. λ for any target Ms is exposed \
+         error, λ solved for Ms = 2. Chen & Seborg's curve is below (their rule as reconstructed in \
+         `chen_seborg2002`). λ for any target Ms is exposed \
          as the `target_ms` parameter of `shamsuzzoha_lee`.\n"
     );
 }
@@ -697,4 +698,37 @@ fn differences(o: &mut String) {
             let _ = writeln!(o, "  Liu et al. load response: failed: {e}\n");
         }
     }
+}
+
+/// Fig. 7's Chen & Seborg (2002) curve: τ_c for Ms = 2.0 and the load IAE, beside the proposed
+/// and Zhang et al. curves (`shamsuzzoha_lee2008_fig7_chen_seborg.csv`).
+fn chen_seborg_fig7(o: &mut String) {
+    use pidlab::rules::chen_seborg2002::studies::fig7_point;
+    let _ = writeln!(
+        o,
+        "\nFig. 7, Chen & Seborg (2002) (method `chen_seborg2002`, src/rules/chen_seborg2002/): the \
+         paper's full text was not available; the rule is the direct-synthesis-for-disturbances PI \
+         for k·e^(-θs)/s, K_c = (2τ_c + θ)/(k(τ_c + θ)²), τ_I = 2τ_c + θ, in series with (τs + 1) \
+         for the lag, reconstructed from the FOPTD DS-d PI that reproduces the one printed Chen & \
+         Seborg setting found (Seborg et al.'s 100e^(-s)/(100s + 1): K_c 0.551, τ_I 4.91 at τ_c = 2). \
+         Ideal PID, no filter, τ_c solved for Ms = 2.0, unit load step.\n"
+    );
+    let _ = writeln!(
+        o,
+        "| θ/τ | τ_c (Ms 2.0) | Chen & Seborg load IAE |\n|---|---|---|"
+    );
+    let mut csv =
+        String::from("theta_over_tau,chen_seborg_tau_c_ms2.0,chen_seborg_load_iae_ms2.0\n");
+    let fmt = |x: &Option<f64>| x.map_or("—".into(), |v| format!("{v:.4}"));
+    for r in [0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 1.0, 1.5, 2.0] {
+        let p = fig7_point(r);
+        let _ = writeln!(o, "| {r} | {} | {} |", fmt(&p.tau_c), fmt(&p.load_iae));
+        let _ = writeln!(
+            csv,
+            "{r},{},{}",
+            p.tau_c.unwrap_or(f64::NAN),
+            p.load_iae.unwrap_or(f64::NAN)
+        );
+    }
+    write_csv("shamsuzzoha_lee2008_fig7_chen_seborg.csv", &csv);
 }

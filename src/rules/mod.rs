@@ -21,6 +21,7 @@ mod params;
 pub use params::{ParamDefault, ParamInfo, ParamValue, Params};
 
 pub mod arvanitis2012;
+pub mod chen_seborg2002;
 pub mod classic;
 pub mod kaya2020;
 pub mod medarametla_manimozhi2018;
@@ -106,6 +107,8 @@ pub enum Details {
     Medarametla2018(Box<medarametla_manimozhi2018::Details>),
     /// Classic baselines (SIMC, AMIGO, IMC, Ziegler–Nichols).
     Classic(Box<classic::Details>),
+    /// Chen & Seborg (2002), a comparison rule of Shamsuzzoha & Lee.
+    ChenSeborg2002(Box<chen_seborg2002::Details>),
 }
 
 /// How a preset designs its controller.
@@ -208,6 +211,7 @@ pub fn registry() -> Vec<Box<dyn Rule>> {
     v.extend(medarametla_manimozhi2018::rules());
     v.extend(praveen_kumar_narayana::rules());
     v.extend(classic::rules());
+    v.extend(chen_seborg2002::rules());
     v
 }
 

@@ -1,0 +1,628 @@
+//! The papers' simulation figures as SVG (`docs/figures/*.svg`), drawn from the figure data the
+//! sections write as CSV (`docs/figures/*.csv`) in the same run, and the report's figure list.
+//!
+//! Each SVG is a function of its CSV files only (see `svg.rs`: no fonts, integer pixels), so
+//! `tests/figures.rs` re-renders them from the committed CSVs and compares bytes.
+
+use crate::svg::{render, Chart, Curve, Panel};
+use std::fmt::Write;
+use std::path::Path;
+
+/// A figure: where it is from, its file name and how it is drawn.
+pub struct Figure {
+    /// Paper (report section title).
+    pub paper: &'static str,
+    /// The paper's figure number(s), e.g. "Fig. 8".
+    pub number: &'static str,
+    /// SVG file name under docs/figures/.
+    pub file: String,
+    /// The CSV files it is drawn from.
+    pub sources: Vec<String>,
+    /// The chart.
+    pub chart: Chart,
+}
+
+/// Figures of the papers' lists that are not regenerated, with the reason.
+pub const MISSING: [(&str, &str, &str); 4] = [
+    (
+        "Arvanitis et al. 2012",
+        "Figs. 2–7",
+        "Nyquist plots and PM/GM/τ_D maps of the Method I analysis: no study writes their data yet",
+    ),
+    (
+        "Kaya 2020",
+        "Figs. 2–3",
+        "curves of the I-PD optimum over θ/T (the fitted rules against the optima): no study writes \
+         their data yet",
+    ),
+    (
+        "Praveen Kumar & Narayana",
+        "Fig. 2",
+        "the λτ map over z/τ and θ/τ: the report prints its grid as a table, no CSV yet",
+    ),
+    (
+        "Shamsuzzoha & Lee 2008",
+        "—",
+        "all simulation figures (2–9) are drawn",
+    ),
+];
+
+/// A CSV file: header and rows of fields (quoted fields unquoted).
+struct Csv {
+    header: Vec<String>,
+    rows: Vec<Vec<String>>,
+}
+
+fn split(line: &str) -> Vec<String> {
+    let mut out = vec![];
+    let mut cur = String::new();
+    let mut quoted = false;
+    for ch in line.chars() {
+        match ch {
+            '"' => quoted = !quoted,
+            ',' if !quoted => out.push(std::mem::take(&mut cur)),
+            c => cur.push(c),
+        }
+    }
+    out.push(cur);
+    out
+}
+
+impl Csv {
+    fn read(dir: &Path, name: &str) -> Result<Csv, String> {
+        let text = std::fs::read_to_string(dir.join(name)).map_err(|e| format!("{name}: {e}"))?;
+        let mut lines = text.lines();
+        let header = split(lines.next().ok_or(format!("{name}: empty"))?);
+        let rows = lines.filter(|l| !l.is_empty()).map(split).collect();
+        Ok(Csv { header, rows })
+    }
+    fn col(&self, name: &str) -> Result<usize, String> {
+        self.header
+            .iter()
+            .position(|h| h == name)
+            .ok_or(format!("no column {name}"))
+    }
+    fn num(row: &[String], i: usize) -> f64 {
+        row.get(i)
+            .and_then(|s| s.trim().parse::<f64>().ok())
+            .unwrap_or(f64::NAN)
+    }
+    /// Column `y` against column `x`, over the rows `keep` accepts.
+    fn xy(&self, x: usize, y: usize, keep: impl Fn(&[String]) -> bool) -> Vec<(f64, f64)> {
+        self.rows
+            .iter()
+            .filter(|r| keep(r))
+            .map(|r| (Csv::num(r, x), Csv::num(r, y)))
+            .collect()
+    }
+}
+
+fn curve(label: &str, points: Vec<(f64, f64)>) -> Curve {
+    Curve {
+        label: label.to_string(),
+        points,
+    }
+}
+
+fn panel(y_label: &str, curves: Vec<Curve>) -> Panel {
+    Panel {
+        title: String::new(),
+        y_label: y_label.into(),
+        curves,
+    }
+}
+
+fn chart(title: String, x_label: &str, x_range: Option<(f64, f64)>, panels: Vec<Panel>) -> Chart {
+    Chart {
+        title,
+        x_label: x_label.into(),
+        x_range,
+        x_log: false,
+        panels,
+    }
+}
+
+/// Wide CSV: every column whose name starts with `prefix` (all but `t` when empty) against t,
+/// labelled by `label(name)`; a column with no finite value (a loop the study could not run,
+/// e.g. Ajmeri & Ali's Example 4) is left out.
+fn wide(csv: &Csv, prefix: &str, label: impl Fn(&str) -> String) -> Result<Vec<Curve>, String> {
+    let t = csv.col("t")?;
+    Ok(csv
+        .header
+        .iter()
+        .enumerate()
+        .filter(|(i, h)| *i != t && h.starts_with(prefix) && h.as_str() != "r")
+        .map(|(i, h)| curve(&label(h), csv.xy(t, i, |_| true)))
+        .filter(|c| c.points.iter().any(|p| p.1.is_finite()))
+        .collect())
+}
+
+fn arvanitis_label(col: &str) -> String {
+    let k = col.trim_start_matches("y_");
+    match k {
+        "alg1" => "proposed (Method I, Algorithm I)".into(),
+        "alg1_125" => "proposed, 1.25 τ_D".into(),
+        "alg2" => "proposed (Algorithm II, ζ = 0.6)".into(),
+        "alg3" => "proposed (Algorithm III)".into(),
+        "m2_xi" => "proposed (Method II, ξ = 0.707)".into(),
+        "m2_beta" => "proposed (Method II, min. (13))".into(),
+        "gu2006" => "Gu et al. 2006".into(),
+        "luyben2003" => "Luyben 2003".into(),
+        "shamsuzzoha_lee2006" => "Shamsuzzoha & Lee 2006".into(),
+        other => other.into(),
+    }
+}
+
+fn sl_label(m: &str) -> String {
+    match m {
+        "proposed" => "proposed".into(),
+        "wang_cai" => "Wang & Cai".into(),
+        "zhang" => "Zhang et al.".into(),
+        "skogestad" => "Skogestad".into(),
+        "gu" => "Gu et al.".into(),
+        "luyben" => "Luyben".into(),
+        "wang_cluett" => "Wang & Cluett".into(),
+        "rivera" => "Rivera et al.".into(),
+        "chidambaram_sree" => "Chidambaram & Sree".into(),
+        other => other.replace('_', " "),
+    }
+}
+
+/// Long CSV `method,case,t,y,u`: y against t of `case`, one curve per method (first-seen order).
+fn long_responses(csv: &Csv, case: &str, col: &str) -> Result<Vec<Curve>, String> {
+    let (m, c, t, y) = (
+        csv.col("method")?,
+        csv.col("case")?,
+        csv.col("t")?,
+        csv.col(col)?,
+    );
+    let mut methods: Vec<String> = vec![];
+    for r in &csv.rows {
+        if r[c] == case && !methods.contains(&r[m]) {
+            methods.push(r[m].clone());
+        }
+    }
+    Ok(methods
+        .iter()
+        .map(|name| {
+            curve(
+                &sl_label(name),
+                csv.xy(t, y, |r| r[m] == *name && r[c] == case),
+            )
+        })
+        .collect())
+}
+
+/// Every regenerated figure, drawn from the CSVs in `dir`.
+pub fn figures(dir: &Path) -> Result<Vec<Figure>, String> {
+    let mut v = vec![];
+    let mut add = |paper, number, file: &str, sources: &[&str], chart| {
+        v.push(Figure {
+            paper,
+            number,
+            file: file.into(),
+            sources: sources.iter().map(|s| s.to_string()).collect(),
+            chart,
+        })
+    };
+    // Arvanitis et al. 2012, Figs. 8–12: boiler steam drum, set point at 0, load at 30.
+    const ARV: &str = "Arvanitis et al. 2012";
+    for (n, what) in [
+        (8, "Algorithm I of Method I"),
+        (9, "Algorithm II of Method I, ζ_des = 0.6"),
+        (10, "Algorithm III (min. of (13))"),
+        (11, "Method II, ξ_des = 0.707"),
+        (12, "Method II minimizing (13)"),
+    ] {
+        let src = format!("arvanitis2012_fig{n}.csv");
+        let csv = Csv::read(dir, &src)?;
+        let ys = wide(&csv, "y_", arvanitis_label)?;
+        let us = wide(&csv, "u_", |c| arvanitis_label(c.trim_start_matches("u_")))?;
+        let number = ["Fig. 8", "Fig. 9", "Fig. 10", "Fig. 11", "Fig. 12"][n - 8];
+        add(
+            ARV,
+            number,
+            &format!("arvanitis2012_fig{n}.svg"),
+            &[src.as_str()],
+            chart(
+                format!("Arvanitis et al. 2012, {number}: boiler steam drum, {what} (set point at 0, load at 30)"),
+                "time",
+                Some((0.0, 60.0)),
+                vec![panel("output y", ys), panel("control u", us)],
+            ),
+        );
+    }
+    // Shamsuzzoha & Lee 2008, Figs. 2–6: nominal set-point and load responses.
+    const SL: &str = "Shamsuzzoha & Lee 2008";
+    for ex in 1..=5 {
+        let src = format!("shamsuzzoha_lee2008_ex{ex}_responses.csv");
+        let csv = Csv::read(dir, &src)?;
+        let number = ["Fig. 2", "Fig. 3", "Fig. 4", "Fig. 5", "Fig. 6"][ex - 1];
+        add(
+            SL,
+            number,
+            &format!("shamsuzzoha_lee2008_fig{}.svg", ex + 1),
+            &[src.as_str()],
+            chart(
+                format!("Shamsuzzoha & Lee 2008, {number}: response of the nominal system, Example {ex}"),
+                "time",
+                None,
+                vec![
+                    panel("output y", long_responses(&csv, "nominal", "y")?),
+                    panel("control u", long_responses(&csv, "nominal", "u")?),
+                ],
+            ),
+        );
+    }
+    {
+        let f = "shamsuzzoha_lee2008_fig8_fig7.csv";
+        let g = "shamsuzzoha_lee2008_fig7_chen_seborg.csv";
+        let csv = Csv::read(dir, f)?;
+        let cs = Csv::read(dir, g)?;
+        let x = csv.col("theta_over_tau")?;
+        let curves = vec![
+            curve("proposed", csv.xy(x, csv.col("load_iae_ms2.0")?, |_| true)),
+            curve(
+                "Zhang et al.",
+                csv.xy(x, csv.col("zhang_load_iae_ms2.0")?, |_| true),
+            ),
+            curve(
+                "Chen & Seborg",
+                cs.xy(
+                    cs.col("theta_over_tau")?,
+                    cs.col("chen_seborg_load_iae_ms2.0")?,
+                    |_| true,
+                ),
+            ),
+        ];
+        add(
+            SL,
+            "Fig. 7",
+            "shamsuzzoha_lee2008_fig7.svg",
+            &[f, g],
+            chart(
+                "Shamsuzzoha & Lee 2008, Fig. 7: load IAE at Ms = 2.0, FODIP e^(-θs)/(s(s+1))"
+                    .into(),
+                "θ/τ",
+                None,
+                vec![panel("IAE (unit load step)", curves)],
+            ),
+        );
+        let lam = |c: &str, l: &str| -> Result<Curve, String> {
+            Ok(curve(l, csv.xy(x, csv.col(c)?, |_| true)))
+        };
+        add(
+            SL,
+            "Fig. 8",
+            "shamsuzzoha_lee2008_fig8.svg",
+            &[f],
+            chart(
+                "Shamsuzzoha & Lee 2008, Fig. 8: λ guidelines for FODIP".into(),
+                "θ/τ",
+                None,
+                vec![panel(
+                    "λ",
+                    vec![
+                        lam("lambda_ms1.6", "Ms = 1.6")?,
+                        lam("lambda_ms1.8", "Ms = 1.8")?,
+                        lam("lambda_ms2.0", "Ms = 2.0")?,
+                    ],
+                )],
+            ),
+        );
+        let f9 = "shamsuzzoha_lee2008_fig9.csv";
+        let c9 = Csv::read(dir, f9)?;
+        let x9 = c9.col("theta")?;
+        let l9 = |c: &str, l: &str| -> Result<Curve, String> {
+            Ok(curve(l, c9.xy(x9, c9.col(c)?, |_| true)))
+        };
+        add(
+            SL,
+            "Fig. 9",
+            "shamsuzzoha_lee2008_fig9.svg",
+            &[f9],
+            chart(
+                "Shamsuzzoha & Lee 2008, Fig. 9: λ guidelines for DIP".into(),
+                "θ",
+                None,
+                vec![panel(
+                    "λ",
+                    vec![
+                        l9("lambda_ms1.6", "Ms = 1.6")?,
+                        l9("lambda_ms1.8", "Ms = 1.8")?,
+                        l9("lambda_ms2.0", "Ms = 2.0")?,
+                    ],
+                )],
+            ),
+        );
+    }
+    // Kaya 2020, Figs. 4–9.
+    const KAYA: &str = "Kaya 2020";
+    for (n, what, ylab) in [
+        (4, "closed-loop responses, Example 1", "output y"),
+        (5, "closed-loop responses, perturbed Example 1", "output y"),
+        (6, "output responses, Example 2", "output y"),
+        (7, "process inputs, Example 2", "input u"),
+        (8, "output responses, Example 3", "output y"),
+        (9, "process inputs, Example 3", "input u"),
+    ] {
+        let src = format!("kaya2020_fig{n}.csv");
+        let csv = Csv::read(dir, &src)?;
+        let number = ["Fig. 4", "Fig. 5", "Fig. 6", "Fig. 7", "Fig. 8", "Fig. 9"][n - 4];
+        add(
+            KAYA,
+            number,
+            &format!("kaya2020_fig{n}.svg"),
+            &[src.as_str()],
+            chart(
+                format!("Kaya 2020, {number}: {what}"),
+                "time (s)",
+                None,
+                vec![panel(ylab, wide(&csv, "", |c| c.to_string())?)],
+            ),
+        );
+    }
+    // Medarametla & Manimozhi 2018: Fig. 2 (Ms against λ/θ), Figs. 13–14 (CSTR).
+    const MED: &str = "Medarametla & Manimozhi 2018";
+    {
+        let f = "medarametla_fig2_ms_lambda.csv";
+        let csv = Csv::read(dir, f)?;
+        let (c, x, y) = (
+            csv.col("curve")?,
+            csv.col("lambda_over_theta")?,
+            csv.col("ms")?,
+        );
+        let mut ids: Vec<String> = vec![];
+        for r in &csv.rows {
+            if !ids.contains(&r[c]) {
+                ids.push(r[c].clone());
+            }
+        }
+        let curves = ids
+            .iter()
+            .map(|id| curve(&format!("curve {id}"), csv.xy(x, y, |r| r[c] == *id)))
+            .collect();
+        let mut ch = chart(
+            "Medarametla & Manimozhi 2018, Fig. 2: Ms against λ/θ (curves as listed in the report)"
+                .into(),
+            "λ/θ",
+            None,
+            vec![panel("Ms", curves)],
+        );
+        ch.x_log = true;
+        add(MED, "Fig. 2", "medarametla_fig2.svg", &[f], ch);
+        let s = "medarametla_cstr_servo.csv";
+        let csv = Csv::read(dir, s)?;
+        let t = csv.col("t")?;
+        let mut a = panel(
+            "reactor temperature T (K)",
+            vec![
+                curve("set point", csv.xy(t, csv.col("r")?, |_| true)),
+                curve(
+                    "proposed, nonlinear CSTR",
+                    csv.xy(t, csv.col("T")?, |_| true),
+                ),
+            ],
+        );
+        a.title = "(a) nominal servo response".into();
+        let mut b = panel(
+            "jacket temperature T_j (K)",
+            vec![curve("proposed", csv.xy(t, csv.col("Tj")?, |_| true))],
+        );
+        b.title = "(b) control signal".into();
+        add(
+            MED,
+            "Fig. 13",
+            "medarametla_fig13.svg",
+            &[s],
+            chart(
+                "Medarametla & Manimozhi 2018, Fig. 13: jacketed CSTR (Example 6), set point 344 → 346 K".into(),
+                "time (s)",
+                None,
+                vec![a, b],
+            ),
+        );
+        let g = "medarametla_cstr_regulatory.csv";
+        let csv = Csv::read(dir, g)?;
+        let t = csv.col("t")?;
+        add(
+            MED,
+            "Fig. 14",
+            "medarametla_fig14.svg",
+            &[g],
+            chart(
+                "Medarametla & Manimozhi 2018, Fig. 14: nominal regulatory response of Example 6 (T_j 317.4 → 310 K)".into(),
+                "time (s)",
+                None,
+                vec![panel(
+                    "reactor temperature T (K)",
+                    vec![
+                        curve("set point", csv.xy(t, csv.col("r")?, |_| true)),
+                        curve("proposed, nonlinear CSTR", csv.xy(t, csv.col("T")?, |_| true)),
+                    ],
+                )],
+            ),
+        );
+    }
+    medarametla(dir, &mut v)?;
+    praveen_kumar(dir, &mut v)?;
+    Ok(v)
+}
+
+fn medarametla_label(col: &str) -> String {
+    let k = &col[2..];
+    let (k, tail) = match k.strip_suffix("_load_only") {
+        Some(k) => (k, " (load step only)"),
+        None => (k, ""),
+    };
+    let name = match k {
+        "proposed" => "proposed",
+        "anil_padma_sree" => "Anil & Padma Sree",
+        "ajmeri_ali" => "Ajmeri & Ali",
+        other => other,
+    };
+    format!("{name}{tail}")
+}
+
+/// Medarametla & Manimozhi 2018, Figs. 3–12: Examples 1–5, nominal (odd) and gain and delay
+/// +20 % (even), output and control signal (`medarametla_ex*_*.csv`).
+fn medarametla(dir: &Path, v: &mut Vec<Figure>) -> Result<(), String> {
+    const MED: &str = "Medarametla & Manimozhi 2018";
+    const NUMBERS: [&str; 10] = [
+        "Fig. 3", "Fig. 4", "Fig. 5", "Fig. 6", "Fig. 7", "Fig. 8", "Fig. 9", "Fig. 10", "Fig. 11",
+        "Fig. 12",
+    ];
+    for ex in 1..=5 {
+        for (j, cond) in ["nominal", "perturbed"].iter().enumerate() {
+            let number = NUMBERS[2 * (ex - 1) + j];
+            let src = format!("medarametla_ex{ex}_{cond}.csv");
+            let csv = Csv::read(dir, &src)?;
+            let what = if j == 0 {
+                "nominal response"
+            } else {
+                "perturbed response (gain and delay +20 %)"
+            };
+            v.push(Figure {
+                paper: MED,
+                number,
+                file: format!("medarametla_fig{}.svg", 3 + 2 * (ex - 1) + j),
+                sources: vec![src],
+                chart: chart(
+                    format!("Medarametla & Manimozhi 2018, {number}: {what} of Example {ex}"),
+                    "time (s)",
+                    None,
+                    vec![
+                        panel("output y", wide(&csv, "y_", medarametla_label)?),
+                        panel("control signal u", wide(&csv, "u_", medarametla_label)?),
+                    ],
+                ),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Praveen Kumar & Narayana, Figs. 3–15: servo and regulatory runs (0.2 steps) of Examples 1–2,
+/// output and manipulated variable, nominal and with the dead time +40 %, proposed and Pai et
+/// al. 2010 (`praveen_kumar_ex*_*.csv`).
+fn praveen_kumar(dir: &Path, v: &mut Vec<Figure>) -> Result<(), String> {
+    const PK: &str = "Praveen Kumar & Narayana";
+    let list: [(&str, usize, &str, &str, &str); 13] = [
+        ("Fig. 3", 1, "nominal", "servo", "y"),
+        ("Fig. 4", 1, "nominal", "servo", "u"),
+        ("Fig. 5", 1, "nominal", "regulatory", "y"),
+        ("Fig. 6", 1, "nominal", "regulatory", "u"),
+        ("Fig. 7", 1, "perturbed", "servo", "y"),
+        ("Fig. 8", 2, "nominal", "servo", "y"),
+        ("Fig. 9", 2, "nominal", "servo", "u"),
+        ("Fig. 10", 2, "nominal", "regulatory", "y"),
+        ("Fig. 11", 2, "nominal", "regulatory", "u"),
+        ("Fig. 12", 2, "perturbed", "servo", "y"),
+        ("Fig. 13", 2, "perturbed", "servo", "u"),
+        ("Fig. 14", 2, "perturbed", "regulatory", "y"),
+        ("Fig. 15", 2, "perturbed", "regulatory", "u"),
+    ];
+    for (number, ex, cond, run, sig) in list {
+        let src = format!("praveen_kumar_ex{ex}_{cond}.csv");
+        let csv = Csv::read(dir, &src)?;
+        let t = csv.col("t")?;
+        let curves = [("proposed", "proposed"), ("pai2010", "Pai et al. 2010")]
+            .iter()
+            .map(|(k, label)| -> Result<Curve, String> {
+                let c = csv.col(&format!("{sig}_{run}_{k}"))?;
+                Ok(curve(label, csv.xy(t, c, |_| true)))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let what = match (sig, run) {
+            ("y", "servo") => "servo response",
+            ("u", "servo") => "manipulated variable for servo response",
+            ("y", _) => "regulatory response",
+            _ => "manipulated variable for regulatory response",
+        };
+        let cond_text = if cond == "nominal" {
+            "nominal conditions"
+        } else {
+            "perturbed conditions (dead time +40 %)"
+        };
+        let file = format!(
+            "praveen_kumar_fig{}.svg",
+            number.trim_start_matches("Fig. ")
+        );
+        v.push(Figure {
+            paper: PK,
+            number,
+            file,
+            sources: vec![src],
+            chart: chart(
+                format!(
+                    "Praveen Kumar & Narayana, {number}: {what} of example {ex} under {cond_text}"
+                ),
+                "time (s)",
+                None,
+                vec![panel(
+                    if sig == "y" {
+                        "output y"
+                    } else {
+                        "manipulated variable u"
+                    },
+                    curves,
+                )],
+            ),
+        });
+    }
+    Ok(())
+}
+
+/// Width and per-panel height of every SVG (pixels).
+pub const SIZE: (u32, u32) = (760, 340);
+
+/// The SVG of `f`.
+pub fn svg(f: &Figure) -> Result<String, String> {
+    render(&f.chart, SIZE.0, SIZE.1).map_err(|e| format!("{}: {e}", f.file))
+}
+
+/// The report's figure section: per paper, links to the SVGs (and their CSVs), then the figures
+/// not regenerated.
+pub fn section(figs: &[Figure]) -> String {
+    let mut o = String::from(
+        "## Figures\n\nEvery regenerated simulation figure, as SVG drawn from the CSV beside it \
+         (plotters' SVG backend, same bytes every run; `tests/figures.rs` checks them).\n\n",
+    );
+    let mut papers: Vec<&str> = vec![];
+    for f in figs {
+        if !papers.contains(&f.paper) {
+            papers.push(f.paper);
+        }
+    }
+    for p in papers {
+        let _ = write!(o, "- {p}:");
+        let mut of_paper: Vec<&Figure> = figs.iter().filter(|f| f.paper == p).collect();
+        of_paper.sort_by_key(|f| {
+            f.number
+                .trim_start_matches("Fig. ")
+                .parse::<u32>()
+                .unwrap_or(0)
+        });
+        for f in of_paper {
+            let srcs: Vec<String> = f
+                .sources
+                .iter()
+                .map(|s| format!("[csv](figures/{s})"))
+                .collect();
+            let _ = write!(
+                o,
+                " [{}](figures/{}) ({});",
+                f.number,
+                f.file,
+                srcs.join(", ")
+            );
+        }
+        o.pop();
+        o.push('\n');
+    }
+    o.push_str("\nNot regenerated yet:\n\n");
+    for (p, n, why) in MISSING.iter().filter(|m| m.1 != "—") {
+        let _ = writeln!(o, "- {p}, {n}: {why}.");
+    }
+    o
+}
