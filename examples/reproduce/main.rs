@@ -9,6 +9,7 @@ mod ledger;
 mod medarametla_manimozhi2018;
 mod praveen_kumar_narayana;
 mod shamsuzzoha_lee2008;
+mod simulink;
 
 fn main() {
     let only: Vec<String> = std::env::args().skip(1).collect();
