@@ -30,6 +30,8 @@ mod medarametla_manimozhi2018;
 mod praveen_kumar_narayana;
 #[path = "../examples/reproduce/shamsuzzoha_lee2008.rs"]
 mod shamsuzzoha_lee2008;
+#[path = "../examples/reproduce/simulink.rs"]
+mod simulink;
 
 /// The rows, regenerated in the example's order (engine: no rows; Arvanitis: Section 6 then
 /// Section 3, the only parts that record rows; then the other papers).

@@ -10,6 +10,7 @@ mod ledger;
 mod medarametla_manimozhi2018;
 mod praveen_kumar_narayana;
 mod shamsuzzoha_lee2008;
+mod simulink;
 mod svg;
 
 fn main() {

@@ -93,6 +93,12 @@ fn tv_options(
             ));
         }
     }
+    // The log of a Simulink run with its default ode45 settings (see `simulink.rs`).
+    out.extend(
+        crate::simulink::tv_options(&plant, c, &sc, &[(0.0, t_end)])
+            .into_iter()
+            .flatten(),
+    );
     out
 }
 

@@ -449,6 +449,12 @@ fn tv_options(
             Some(tv_on_grid(&r, t0, td, grid, TvSignal::U) - jump),
         ));
     }
+    // The log of a Simulink run with its default ode45 settings (see `simulink.rs`).
+    let sim =
+        crate::simulink::tv_options(&st.plant.plant(), c, &st.scenario, &[(t0, td), (td, te)]);
+    for (o, v) in out.iter_mut().zip(sim) {
+        o.extend(v);
+    }
     out
 }
 
