@@ -129,10 +129,40 @@ pub fn admissible(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::admissible)
 }
 
-/// `simulate({plant, controller, scenario})`.
+/// `simulate({plant, controller, scenario, typed?, every?})`. The sample arrays go from the
+/// result's `Vec<f64>`s straight into JS (no `serde_json` numbers in between): with `typed:
+/// true` as `Float64Array`s, otherwise as plain `number[]` exactly as [`to_js`] makes them
+/// (a non-finite sample is `null` there, as JSON has it; the samples are finite: a diverging
+/// run stops them).
 #[wasm_bindgen]
 pub fn simulate(input: JsValue) -> Result<JsValue, JsError> {
-    call(input, api::simulate)
+    let v = from_js(input)?;
+    let (r, opt) = api::simulate_result(&v).map_err(err)?;
+    let (meta, arrays) = api::sim_json_parts(&r);
+    let out = to_js(&meta)?;
+    for (k, xs) in arrays {
+        let typed = js_sys::Float64Array::from(xs);
+        let a: JsValue = if opt.typed {
+            typed.into()
+        } else if xs.iter().all(|x| x.is_finite()) {
+            js_sys::Array::from(&typed).into()
+        } else {
+            xs.iter()
+                .map(|x| {
+                    if x.is_finite() {
+                        JsValue::from_f64(*x)
+                    } else {
+                        JsValue::NULL
+                    }
+                })
+                .collect::<js_sys::Array>()
+                .into()
+        };
+        // the key exists (a null placeholder): setting it keeps the property order
+        js_sys::Reflect::set(&out, &JsValue::from_str(k), &a)
+            .map_err(|_| JsError::new(&format!("output: cannot set field {k}")))?;
+    }
+    Ok(out)
 }
 
 /// `analyze({plant, controller})`.

@@ -497,6 +497,13 @@ pub struct SimulateIn {
     /// Measurement noise ([`real_loop`]).
     #[serde(default)]
     pub noise: Value,
+    /// Output option (wasm): the sample arrays as `Float64Array`s instead of `number[]`.
+    #[serde(default)]
+    pub typed: Option<bool>,
+    /// Output option: every `every`-th sample (and the last); the metrics stay those of the
+    /// full `dt` grid.
+    #[serde(default)]
+    pub every: Option<f64>,
 }
 
 /// `analyze` input.

@@ -328,7 +328,99 @@ pub fn reduce(input: &Value) -> Result<Value> {
 
 /// `simulate({plant, controller, scenario})` of API.md.
 pub fn simulate(input: &Value) -> Result<Value> {
+    simulate_result(input).map(|(r, _)| sim_json(&r))
+}
+
+/// `simulate`'s output options (docs/API.md, "Output options"): `typed` (the wasm boundary
+/// returns `Float64Array`s; natively the JSON is the same either way) and `every`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SimOutput {
+    /// Sample arrays as `Float64Array` (wasm).
+    pub typed: bool,
+    /// Every `every`-th sample is returned (and the last one).
+    pub every: usize,
+}
+
+/// `simulate` up to the typed result: validated input, simulated, the samples thinned per
+/// `every` (the metrics are computed before, on the full `dt` grid), and the output options.
+pub fn simulate_result(input: &Value) -> Result<(SimResult, SimOutput)> {
     let inp: SimulateIn = from_json(input, "")?;
+    let mut r = simulate_in(&inp)?;
+    // the output options come last in the input's field order, so they are checked last
+    let out = SimOutput {
+        typed: inp.typed.unwrap_or(false),
+        every: match inp.every {
+            Some(x) => input::count(x, "every", 1, 1_000_000)?,
+            None => 1,
+        },
+    };
+    thin(&mut r, out.every);
+    Ok((r, out))
+}
+
+/// Keeps the samples `0, k, 2k, …` and the last one of the sample arrays on the `dt` grid
+/// (`t, r, d, y, u`, and `v`); `noise` is on the controller's sampling grid and stays whole.
+/// Metrics, `diverged_at` and the trajectory are untouched: they come from the full run.
+fn thin(r: &mut SimResult, k: usize) {
+    let n = r.t.len();
+    if k <= 1 || n <= 2 {
+        return;
+    }
+    let keep = |i: usize| i.is_multiple_of(k) || i + 1 == n;
+    let pick = |xs: &mut Vec<f64>| {
+        if xs.len() == n {
+            let mut i = 0;
+            xs.retain(|_| {
+                let kept = keep(i);
+                i += 1;
+                kept
+            });
+        }
+    };
+    pick(&mut r.t);
+    pick(&mut r.r);
+    pick(&mut r.d);
+    pick(&mut r.y);
+    pick(&mut r.u);
+    if let Some(v) = r.v.as_mut() {
+        pick(v);
+    }
+}
+
+/// [`sim_json`] in two parts, for a boundary that converts the sample arrays itself (e.g. to
+/// `Float64Array`): the JSON with `null` in place of each array (same keys, same order), and
+/// the arrays by key.
+pub fn sim_json_parts(r: &SimResult) -> (Value, Vec<(&'static str, &[f64])>) {
+    let mut arrays: Vec<(&'static str, &[f64])> = vec![
+        ("t", &r.t),
+        ("r", &r.r),
+        ("d", &r.d),
+        ("y", &r.y),
+        ("u", &r.u),
+    ];
+    if let Some(v) = &r.v {
+        arrays.push(("v", v));
+    }
+    if let Some(n) = &r.noise {
+        arrays.push(("noise", n));
+    }
+    // the keys in sim_json's order (which is the order of the JS object's properties)
+    let mut j = json!({
+        "t": null, "r": null, "d": null, "y": null, "u": null,
+        "diverged": r.diverged, "diverged_at": num_or_null(r.diverged_at),
+        "internal_step": r.internal_step,
+        "metrics": {
+            "servo": r.metrics.servo.as_ref().map(metrics_json),
+            "regulatory": r.metrics.regulatory.as_ref().map(metrics_json),
+        }
+    });
+    for (k, _) in &arrays {
+        j[*k] = Value::Null;
+    }
+    (j, arrays)
+}
+
+fn simulate_in(inp: &SimulateIn) -> Result<SimResult> {
     let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
     let c = input::controller(
         input::required(&inp.controller, "controller")?,
@@ -336,8 +428,7 @@ pub fn simulate(input: &Value) -> Result<Value> {
     )?;
     let sc = input::scenario(input::required(&inp.scenario, "scenario")?, "scenario")?;
     let rl = input::real_loop(&inp.actuator, &inp.sampling, &inp.noise, sc.t_end)?;
-    let r = crate::analysis::simulate_real(&plant, &c, &sc, &rl)?;
-    Ok(sim_json(&r))
+    crate::analysis::simulate_real(&plant, &c, &sc, &rl)
 }
 
 /// `analyze({plant, controller})` of API.md.
