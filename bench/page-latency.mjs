@@ -22,6 +22,9 @@
 // committed). Times are the page's performance.now(). Needs dist/pidlab.html (bash
 // scripts/page.sh --no-serve) and Debian's /usr/bin/chromium (PIDLAB_CHROMIUM overrides).
 import { existsSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { readFile } from 'node:fs/promises';
+import { normalize, extname } from 'node:path';
 import { cpus, loadavg } from 'node:os';
 import { join, resolve, dirname } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -119,13 +122,17 @@ async function openPage(hash) {
   await page.route('**/*', (route) => (/^(file|data|blob):/.test(route.request().url()) ? route.continue() : route.abort()));
   await page.goto(pathToFileURL(dist).href + hash);
   await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
-  await page.evaluate(() => window.__pidlab.settled(true));
+  // (a build without the worker, e.g. main before it, renders synchronously: two frames do)
+  await page.evaluate(() => (window.__pidlab.settled ? window.__pidlab.settled(true) : new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))));
   return { page, errors };
 }
 
 // In the page: the measurement helpers (installed once per page).
 const HELPERS = () => {
   const P = window.__pidlab;
+  // a build without the worker computes in the input's own task: its result is in the next frame
+  if (!P.current) { P.current = () => true; P.perf.shown = 0; P.worker = () => ({ cancelled: 0, dropped: 0 }); }
+  const sync = P.perf.inputs === undefined;
   const painted = () => new Promise((res) => requestAnimationFrame(() => { const ch = new MessageChannel(); ch.port1.onmessage = () => res(performance.now()); ch.port2.postMessage(0); }));
   /** Waits, frame by frame, until `ok()` holds at a frame; resolves to that frame's paint time. */
   const until = async (ok, limit = 60000) => {
@@ -158,7 +165,7 @@ const HELPERS = () => {
       const frame = (await painted()) - t0;
       // a result: a render for an input after this one's start has been applied (and, for the
       // async preset load, its input counted); settled: nothing more pending for it
-      const result = (await until(() => P.perf.shown > shown0 && P.current())) - t0;
+      const result = (await until(() => (sync || P.perf.shown > shown0) && P.current())) - t0;
       const settled = (await until(() => P.current(true))) - t0;
       return { frame, result, settled };
     },
@@ -221,20 +228,40 @@ async function run(c) {
   return out;
 }
 
-/** Navigation -> the first plots painted (the servo plot drawn), `count` loads. */
-async function firstPlots(count) {
+const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm' };
+/** Serves www/ on 127.0.0.1 (an ephemeral port): { url, close }. */
+function serveWww() {
+  const www = join(root, 'www');
+  const server = createServer(async (req, res) => {
+    const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^([/\\])+/, '');
+    const file = join(www, path || 'index.html');
+    if (!file.startsWith(www)) { res.writeHead(403).end(); return; }
+    try {
+      res.writeHead(200, { 'content-type': MIME[extname(file)] || 'application/octet-stream' }).end(await readFile(file));
+    } catch {
+      res.writeHead(404).end();
+    }
+  });
+  return new Promise((ok) => server.listen(0, '127.0.0.1', () => ok({ url: `http://127.0.0.1:${server.address().port}/index.html`, close: () => new Promise((r) => server.close(r)) })));
+}
+
+/** Navigation -> the first plots painted (the servo plot drawn), `count` loads of `url`. */
+async function firstPlots(count, url) {
   const times = [];
   for (let i = 0; i < count; i++) {
     const page = await ctx.newPage();
-    await page.route('**/*', (route) => (/^(file|data|blob):/.test(route.request().url()) ? route.continue() : route.abort()));
-    await page.goto(pathToFileURL(dist).href, { waitUntil: 'commit' });
+    await page.route('**/*', (route) => (/^(file|data|blob):|^http:\/\/127\.0\.0\.1:/.test(route.request().url()) ? route.continue() : route.abort()));
+    await page.goto(url, { waitUntil: 'commit' });
     const t = await page.evaluate(() => new Promise((res) => {
       const look = () => requestAnimationFrame(() => {
         const P = window.__pidlab;
-        if (P && P.perf && P.perf.firstPlotsAt) {
-          const at = P.perf.firstPlotsAt;
+        // (a build without the worker draws its first plots before it sets data-ready)
+        const at = P && P.perf ? (P.perf.firstPlotsAt ?? (document.body.dataset.ready === '1' ? performance.now() : 0)) : 0;
+        if (at) {
           const ch = new MessageChannel();
-          ch.port1.onmessage = () => res({ drawn: at, painted: performance.now(), marks: P.perf.startup });
+          const marks = { ...P.perf.startup, plotsDrawn: at };
+          for (const m of performance.getEntriesByType('mark')) if (m.name.startsWith('pidlab-')) marks[m.name.slice(7)] = m.startTime;
+          ch.port1.onmessage = () => res({ drawn: at, painted: performance.now(), marks });
           ch.port2.postMessage(0);
         } else look();
       });
@@ -280,12 +307,16 @@ if (rows.length) {
 }
 
 if (first > 0) {
-  const t = await firstPlots(first);
-  const d = t.map((x) => x.painted);
-  console.log(`\n## navigation → first plots painted (${first} loads of ${dist.split('/').pop()}): p50 ${f(q(d, 0.5))} / p95 ${f(q(d, 0.95))} / max ${f(Math.max(...d))} ms`);
-  const keys = Object.keys(t[0].marks || {});
-  console.log('  startup marks (p50 ms after navigation): ' + keys.map((k) => `${k} ${f(q(t.map((x) => x.marks[k]), 0.5))}`).join(', '));
-  results.firstPlots = { p50: q(d, 0.5), p95: q(d, 0.95), max: Math.max(...d), marks: Object.fromEntries(keys.map((k) => [k, q(t.map((x) => x.marks[k]), 0.5)])) };
+  const srv = await serveWww();
+  for (const [label, url] of [[dist.split('/').pop() + ' from file://', pathToFileURL(dist).href], ['www/ served over HTTP', srv.url]]) {
+    const t = await firstPlots(first, url);
+    const d = t.map((x) => x.painted);
+    console.log(`\n## navigation → first plots painted (${first} loads of ${label}): p50 ${f(q(d, 0.5))} / p95 ${f(q(d, 0.95))} / max ${f(Math.max(...d))} ms`);
+    const keys = Object.keys(t[0].marks || {});
+    console.log('  start-up marks (p50 ms after navigation): ' + keys.map((k) => `${k} ${f(q(t.map((x) => x.marks[k]), 0.5))}`).join(', '));
+    results['firstPlots ' + label] = { p50: q(d, 0.5), p95: q(d, 0.95), max: Math.max(...d), marks: Object.fromEntries(keys.map((k) => [k, q(t.map((x) => x.marks[k]), 0.5)])) };
+  }
+  await srv.close();
 }
 if (json) console.log(JSON.stringify(results));
 await browser.close();

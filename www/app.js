@@ -12,7 +12,7 @@ import * as Pr from './presets.js';
 import * as P from './pins.js';
 import * as Sh from './share.js';
 import { $, errText } from './dom.js';
-import { store, connect, changed, isPending } from './store.js';
+import { store, connect, changed, isPending, methodParams } from './store.js';
 import { perf, lap } from './perf.js';
 import { compute } from './compute.js';
 import { drawPlots, watchSizes } from './plots.js';
@@ -103,7 +103,11 @@ function render(arrival = false) {
     const t1 = performance.now();
     drawPlots(r);
     const t2 = lap('plots', t1);
-    if (!perf.firstPlotsAt) perf.firstPlotsAt = t2;
+    if (!perf.firstPlotsAt) {
+      perf.firstPlotsAt = t2;
+      // the slow worker's scans and sweeps wait until the first plots are on screen
+      requestAnimationFrame(() => setTimeout(() => W.holdSlow(false), 0));
+    }
     drawClassroom(r);
     showMetrics(r);
     showController(r);
@@ -196,6 +200,21 @@ function isCurrent(all = false) {
   return !waiting && perf.shown === perf.inputs;
 }
 
+function warmPlot() {
+  const c = document.createElement('canvas');
+  c.id = 'pidlab-warm-plot';
+  c.width = 64;
+  c.height = 48;
+  c.hidden = true;
+  document.body.append(c);
+  try {
+    E.call('plot', JSON.stringify({ canvas: c.id, kind: 'time', title: 't', xlabel: 'x', ylabel: 'y', series: [{ label: 'a', x: [0, 1, 2], y: [0, 1, 0.5], color: '#0072B2' }] }));
+  } catch {
+    // (nothing lost: the real plots report their own errors)
+  }
+  c.remove();
+}
+
 /** See window.__pidlab.settled. */
 async function settled(all) {
   const frame = () => new Promise((res) => requestAnimationFrame(() => res()));
@@ -210,6 +229,8 @@ async function main() {
   perf.startup.script = performance.now();
   // the workers start (a thread, their script) while the module compiles
   W.spawn();
+  W.holdSlow(true);
+  setTimeout(() => W.holdSlow(false), 3000); // (should the first render not draw: never held for good)
   try {
     await E.load();
     perf.startup.compiled = performance.now();
@@ -281,7 +302,16 @@ async function main() {
   };
   // The browser tests' hooks, with #test=1 only: make the live instance trap like a dead one.
   if (dec.test) window.__pidlabTest = { forceTrap: W.forceTrap, generation: W.generation, spareReady: () => true, forceTrapMain: E.forceTrap };
+  if (store.state.method && store.state.method !== '__literal') {
+    const params = methodParams();
+    if (!('lambda' in params) && !('target_ms' in params)) params.target_ms = 1.6;
+    W.warm({ plant: store.state.plant, method: store.state.method, params, scenario: store.state.scenario });
+  }
   perf.startup.built = performance.now();
+  // while the worker computes the first design: one small drawing on a hidden canvas, so the
+  // plot code the first plots need is compiled by then (the engine compiles a function on its
+  // first call)
+  setTimeout(warmPlot, 0);
   render();
   Api.start(ins.api, () => settled(false));
   document.body.setAttribute('data-ready', '1');

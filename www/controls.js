@@ -246,6 +246,8 @@ let provisional = null;
  *  drag; nothing is done when the method and plant are the ones the sliders were built for. */
 export function updateRanges() {
   clearTimeout(shownRanges.timer);
+  shownRanges.due = false;
+  if (JSON.stringify([store.state.method, store.state.plant]) === shownRanges.key) return;
   shownRanges.due = true;
   shownRanges.timer = setTimeout(updateRangesNow, 250);
 }

@@ -3,9 +3,9 @@
 // a dot that moves with the slider, the pins are dots of their own colours, and the papers'
 // recommended band 1.4 ≤ Ms ≤ 2.0 is hatched.
 //
-// The sweep never blocks the page: sweep_grid and then one sweep() per value run in the slow
-// computation worker (worker-client.js, consumer "sweep"), one request at a time, the panel
-// redrawn after each; a new input (another plant, rule, scenario or base parameter) starts a
+// The sweep never blocks the page: sweep_grid and then sweep() on CHUNK values at a time run in
+// the slow computation worker (worker-client.js, consumer "sweep"), one request at a time, the
+// panel redrawn after each; a new input (another plant, rule, scenario or base parameter) starts a
 // new pass: the old sweep's queued request is dropped and its running one cancelled. The swept parameter's own slider does not restart it: it moves the
 // dot along the curve.
 import * as S from './state.js';
@@ -16,6 +16,10 @@ import { drawSpec } from './drawspec.js';
 import * as P from './pins.js';
 
 export const POINTS = 40;
+// values per sweep() request: each call has a fixed cost (the rule's plant-aware interval, about
+// 0.6 s for Shamsuzzoha & Lee on ifoptd in Node here) that a batch pays once; the panel is
+// redrawn after each batch, and a new input cancels the batch in progress (worker-client.js)
+const CHUNK = 8;
 const MS_MAX = 6; // points beyond this Ms are off the chart (unusable designs)
 const BAND = [1.4, 2.0];
 const C = { servo: '#0072B2', load: '#D55E00', cur: '#000000' };
@@ -62,10 +66,10 @@ async function start(inp) {
   }
   try {
     while (j.points.length < j.values.length) {
-      const v = j.values[j.points.length];
-      const out = await W.ask('sweep', 'sweep', { ...inp, param: j.param, values: [v] });
+      const vs = j.values.slice(j.points.length, j.points.length + CHUNK);
+      const out = await W.ask('sweep', 'sweep', { ...inp, param: j.param, values: vs });
       if (!live()) return;
-      j.points.push(out.points[0]);
+      j.points.push(...out.points.slice(0, vs.length));
       if (j.points.length >= j.values.length && !j.refined) {
         // second pass: where neighbouring designs' Ms differ by more than MS_GAP, values between
         // them, so the curve is drawn from designs, not from straight lines between far ones

@@ -117,6 +117,7 @@ class Lane {
     if (w !== this.worker) return;
     if ('ready' in m) {
       this.ready = m.ready;
+      if (this.instances === 1) performance.mark('pidlab-' + this.name + '-worker-ready');
       if (!m.ready) console.error('pidlab: the ' + this.name + ' worker cannot instantiate the module: ' + m.error);
       this.pump();
       return;
@@ -164,7 +165,7 @@ class Lane {
 
   /** Posts the next request some pass still wants; drops those none wants. */
   pump() {
-    if (this.inflight || !this.ready) return;
+    if (this.inflight || !this.ready || this.held) return;
     this.queue.sort((a, b) => a.prio - b.prio || a.seq - b.seq);
     while (this.queue.length) {
       const req = this.queue.shift();
@@ -213,6 +214,22 @@ export function start(module) {
   spawn();
   ctl.module = module;
   for (const lane of Object.values(ctl.lanes)) lane.worker.postMessage({ init: module });
+}
+
+/** { plant, method, params, scenario } of the start-up design: the slow worker computes it once
+ *  (before its held queue) while the fast one answers the page; the fast worker's first calls
+ *  then find more of their code compiled. */
+export function warm(design) {
+  if (ctl.lanes.slow) ctl.lanes.slow.worker.postMessage({ warm: design });
+}
+
+/** Holds the slow worker's queue (true) until released (false): at start-up the first plots
+ *  come first (2 cores: a scan of admissible() would compete with them for the CPU). */
+export function holdSlow(held) {
+  const lane = ctl.lanes.slow;
+  if (!lane) return;
+  lane.held = held;
+  if (!held) lane.pump();
 }
 
 /** A new pass of `consumer`: what the previous passes asked for and this one does not is dropped. */

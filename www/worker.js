@@ -5,6 +5,8 @@
 // Messages in:  { init: WebAssembly.Module }            instantiate (once; a new worker per restart)
 //               { id, fn, input }                        call fn(input)
 //               { poison: true }                         test hook: every later call traps
+//               { warm: { plant, method, params, scenario } }   a design computed and thrown
+//                                                        away (start-up: see worker-client.js)
 // Messages out: { ready: true } | { ready: false, error }
 //               { id, ok: true, value, ms }              the answer and the time it took here
 //               { id, ok: false, error: { name, message }, ms }   the module refused the input
@@ -32,6 +34,22 @@ self_.onmessage = (ev) => {
     return;
   }
   if (m.poison) { st.poisoned = true; return; }
+  if (m.warm) {
+    // tune, simulate and analyze once on the page's start-up design: the engine compiles a
+    // wasm function when it is first called (lazy compilation), and the compiled code is the
+    // module's, shared with the other worker, which meanwhile answers the page's first requests
+    try {
+      const w = m.warm;
+      const t = glue.tune({ method: w.method, plant: w.plant, params: w.params });
+      const controller = { cr: t.controller.cr, cy: t.controller.cy };
+      glue.simulate({ plant: w.plant, controller, scenario: w.scenario });
+      glue.analyze({ plant: w.plant, controller });
+      glue.freqresp({ plant: w.plant, controller });
+    } catch {
+      // (a warm-up that fails costs nothing: the page's own calls report their errors)
+    }
+    return;
+  }
   const t0 = performance.now();
   try {
     if (st.dead) throw new WebAssembly.RuntimeError('the instance has trapped before');
