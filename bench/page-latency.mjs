@@ -13,7 +13,8 @@
 //           frame   = input -> the next painted frame (the page stays responsive: ≤ one frame);
 //           result  = input -> the first painted frame showing the design for this input;
 //           settled = input -> the frame showing everything for it (with the plant-aware slider
-//                     ranges admissible() computes after a method, family or preset change).
+//                     ranges admissible() computes after a method, family or preset change; the
+//                     trade-off sweep, which the slow worker may still be computing, aside).
 //   drag: sliders only: an input in every animation frame (a drag; 60 frames), results
 //         computed in the worker meanwhile and superseded ones dropped:
 //           frame   = input -> the next painted frame, for every input of the drag;
@@ -38,12 +39,14 @@ const args = process.argv.slice(2);
 let n = 20;
 let dragN = 60;
 let first = 0;
+let maxOptions = 30; // a select steps through up to this many of its options
 let json = false;
 const only = [];
 for (let i = 0; i < args.length; i++) {
   if (args[i] === '--n') n = Number(args[++i]);
   else if (args[i] === '--drag') dragN = Number(args[++i]);
   else if (args[i] === '--first') first = Number(args[++i]);
+  else if (args[i] === '--options') maxOptions = Number(args[++i]);
   else if (args[i] === '--json') json = true;
   else only.push(args[i]);
 }
@@ -97,7 +100,7 @@ const CONTROLS = [
   { name: 'rl-noise', what: 'real loop: noise std', st: state({ ...pk(1.0), ...real }), sel: '#rl-noise', kind: 'number', range: [0.005, 0.05] },
   { name: 'rl-reroll', what: 'real loop: re-roll noise button', st: state({ ...pk(1.0), ...real }), sel: '#rl-reroll', kind: 'click' },
   { name: 'pin', what: 'classroom: pin the design (trade-off dots, Bode |S|)', st: state(pk(1.0)), sel: '#pin', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5] },
-  { name: 'embed-choice', what: 'classroom: embed slider choice checkbox', st: state(pk(1.0)), sel: '#embed-choices input[type=checkbox]', kind: 'check' },
+  { name: 'embed-choice', what: 'classroom: embed slider choice checkbox', st: state(pk(1.0)), sel: '#embed-choices input[type=checkbox]', kind: 'check', noRender: true },
   { name: 'reveal', what: 'classroom: instructor reveal button (Ms hidden)', st: state(pk(1.0)), hash: '&hide=ms', sel: 'button.reveal', kind: 'click', fresh: true },
   { name: 'undo', what: 'undo button (after λ moves)', st: state(pk(1.0)), sel: '#undo', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], commit: true },
 ];
@@ -158,15 +161,16 @@ const HELPERS = () => {
   };
   window.__bench = {
     /** One input; its frame, result and settled latencies (ms). */
-    async step(sel, kind, value) {
+    async step(sel, kind, value, noRender) {
       const shown0 = P.perf.shown;
       const t0 = performance.now();
       act(sel, kind, value);
       const frame = (await painted()) - t0;
       // a result: a render for an input after this one's start has been applied (and, for the
       // async preset load, its input counted); settled: nothing more pending for it
-      const result = (await until(() => (sync || P.perf.shown > shown0) && P.current())) - t0;
-      const settled = (await until(() => P.current(true))) - t0;
+      // (a control that changes no design, e.g. which sliders an embedding shows: its result is its frame)
+      const result = noRender ? frame : (await until(() => (sync || P.perf.shown > shown0) && P.current())) - t0;
+      const settled = (await until(() => P.current(true, false))) - t0;
       return { frame, result, settled };
     },
     /** An input in every frame (a drag); per-input frame latency and the last input's result. */
@@ -199,7 +203,7 @@ async function run(c) {
   const opts = info.options ? info.options.filter((o) => !(c.skipEmpty && o === '')) : null;
   // event i of count: values spread over the range in a scrambled order
   const value = (i, count) => (opts ? opts[(i + 1) % opts.length] : range[0] + (range[1] - range[0]) * (((i * 37) % count) + 0.5) / count);
-  const steps = opts ? Math.max(n, Math.min(opts.length, 80)) : n;
+  const steps = opts ? Math.max(n, Math.min(opts.length, maxOptions)) : n;
   for (let i = 0; i < steps; i++) {
     if (c.before) {
       // a change for the button to act on (pin, undo, reset)
@@ -212,12 +216,12 @@ async function run(c) {
       const o = await openPage(U.encodeHash(c.st) + (c.hash || ''));
       Object.assign(out, { errors: [...out.errors, ...o.errors] });
       await o.page.evaluate(HELPERS);
-      const r = await o.page.evaluate(([s, k, v]) => window.__bench.step(s, k, v), [c.sel, c.kind, value(i, steps)]);
+      const r = await o.page.evaluate(([s, k, v]) => window.__bench.step(s, k, v, false), [c.sel, c.kind, value(i, steps)]);
       for (const k of Object.keys(out.step)) out.step[k].push(r[k]);
       await o.page.close();
       continue;
     }
-    const r = await page.evaluate(([s, k, v]) => window.__bench.step(s, k, v), [c.sel, c.kind, value(i, steps)]);
+    const r = await page.evaluate(([s, k, v, nr]) => window.__bench.step(s, k, v, nr), [c.sel, c.kind, value(i, steps), !!c.noRender]);
     for (const k of Object.keys(out.step)) out.step[k].push(r[k]);
   }
   if (c.kind === 'slider' && dragN > 0 && !page.isClosed()) {
@@ -308,7 +312,9 @@ if (rows.length) {
 
 if (first > 0) {
   const srv = await serveWww();
-  for (const [label, url] of [[dist.split('/').pop() + ' from file://', pathToFileURL(dist).href], ['www/ served over HTTP', srv.url]]) {
+  const pages = [[dist.split('/').pop() + ' from file://', pathToFileURL(dist).href]];
+  if (!process.env.PIDLAB_PAGE) pages.push(['www/ served over HTTP', srv.url]); // (another build: its file only)
+  for (const [label, url] of pages) {
     const t = await firstPlots(first, url);
     const d = t.map((x) => x.painted);
     console.log(`\n## navigation → first plots painted (${first} loads of ${label}): p50 ${f(q(d, 0.5))} / p95 ${f(q(d, 0.95))} / max ${f(Math.max(...d))} ms`);

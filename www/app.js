@@ -194,9 +194,9 @@ function wire() {
 }
 
 /** Whether the page shows its latest input (`all`: and the slow worker has nothing left to do:
- *  admissible scans, the trade-off sweep, a fit). */
-function isCurrent(all = false) {
-  const waiting = W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || !sweepDone()));
+ *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep). */
+function isCurrent(all = false, sweep = true) {
+  const waiting = W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 
