@@ -101,7 +101,7 @@ const CONTROLS = [
   { name: 'rl-reroll', what: 'real loop: re-roll noise button', st: state({ ...pk(1.0), ...real }), sel: '#rl-reroll', kind: 'click' },
   { name: 'pin', what: 'classroom: pin the design (trade-off dots, Bode |S|)', st: state(pk(1.0)), sel: '#pin', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5] },
   { name: 'embed-choice', what: 'classroom: embed slider choice checkbox', st: state(pk(1.0)), sel: '#embed-choices input[type=checkbox]', kind: 'check', noRender: true },
-  { name: 'reveal', what: 'classroom: instructor reveal button (Ms hidden)', st: state(pk(1.0)), hash: '&hide=ms', sel: 'button.reveal', kind: 'click', fresh: true },
+  { name: 'reveal', what: 'classroom: instructor reveal button (Ms hidden)', st: state(pk(1.0)), hash: '&hide=ms', sel: 'button.reveal', kind: 'click', fresh: true, noRender: true },
   { name: 'undo', what: 'undo button (after λ moves)', st: state(pk(1.0)), sel: '#undo', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], commit: true },
 ];
 
@@ -216,7 +216,7 @@ async function run(c) {
       const o = await openPage(U.encodeHash(c.st) + (c.hash || ''));
       Object.assign(out, { errors: [...out.errors, ...o.errors] });
       await o.page.evaluate(HELPERS);
-      const r = await o.page.evaluate(([s, k, v]) => window.__bench.step(s, k, v, false), [c.sel, c.kind, value(i, steps)]);
+      const r = await o.page.evaluate(([s, k, v, nr]) => window.__bench.step(s, k, v, nr), [c.sel, c.kind, value(i, steps), !!c.noRender]);
       for (const k of Object.keys(out.step)) out.step[k].push(r[k]);
       await o.page.close();
       continue;
