@@ -1,29 +1,31 @@
-// Page latency benchmark (a measurement, not a test): input-to-paint latency of the page's
-// sliders in headless Chromium, with a per-stage breakdown.
+// Page latency benchmark (a measurement, not a test): every control of the page in headless
+// Chromium, on dist/pidlab.html opened from file:// (or PIDLAB_PAGE, or a served www/).
 //
-//   node bench/page-latency.mjs                 # every slider, 120 events each
-//   node bench/page-latency.mjs --n 200 lambda  # one slider, 200 events
-//   node bench/page-latency.mjs --trace         # also a Chrome trace per slider: renderer
-//                                               # main-thread time per event in script,
-//                                               # style/layout, paint, commit and GC
-//   PIDLAB_PAGE=other.html node bench/page-latency.mjs   # another build of the page
+//   node bench/page-latency.mjs                    # every control (20 steps, 60 drag frames each)
+//   node bench/page-latency.mjs --n 40 lambda alg3  # some controls, 40 steps each
+//   node bench/page-latency.mjs --first 10         # also: navigation -> first plots, 10 loads
+//   node bench/page-latency.mjs --json             # also every figure as one JSON line
+//   PIDLAB_PAGE=other.html node bench/page-latency.mjs
 //
-// Needs dist/pidlab.html (bash scripts/page.sh --no-serve) and Debian's /usr/bin/chromium
-// (override with PIDLAB_CHROMIUM). Each slider gets a fresh page; warm-up events are not
-// counted. Three ways of moving a slider:
-//   - synthetic `input` events, each sent from a task right after the previous event's frame
-//     was painted (what the browser test does for λ). This phase-locks to the frame clock: the
-//     page's own work overlaps the wait for the next frame, so `frame` and `painted` are about
-//     one frame interval whatever the work costs, as long as it fits;
-//   - the same events sent at a random time in the frame interval (a key press, a typed number);
-//   - a mouse drag of the thumb (Chromium delivers pointer moves at the start of a frame, so the
-//     update runs in that frame): what a person dragging the slider sees. Times from the
-//     move's own timeStamp.
-// For each: work    = the page's own time in its update (window.__pidlab.perf.lastWorkMs);
-//           frame   = input -> end of the animation frame that shows the update;
-//           painted = input -> the first task after that frame (its pixels are committed).
-// The stages are the page's own performance.now() laps (window.__pidlab.perf.phases).
+// Per control, in a fresh page:
+//   step: one input at a time (a slider value, a select option, a checkbox, a typed number, a
+//         button), the next one once the previous input's result is on screen:
+//           frame   = input -> the next painted frame (the page stays responsive: ≤ one frame);
+//           result  = input -> the first painted frame showing the design for this input;
+//           settled = input -> the frame showing everything for it (with the plant-aware slider
+//                     ranges admissible() computes after a method, family or preset change; the
+//                     trade-off sweep, which the slow worker may still be computing, aside).
+//   drag: sliders only: an input in every animation frame (a drag; 60 frames), results
+//         computed in the worker meanwhile and superseded ones dropped:
+//           frame   = input -> the next painted frame, for every input of the drag;
+//           final   = the last input -> its result painted (what a user sees when the drag stops).
+// "painted" is the first task after the frame's animation-frame callbacks (its pixels are
+// committed). Times are the page's performance.now(). Needs dist/pidlab.html (bash
+// scripts/page.sh --no-serve) and Debian's /usr/bin/chromium (PIDLAB_CHROMIUM overrides).
 import { existsSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { readFile } from 'node:fs/promises';
+import { normalize, extname } from 'node:path';
 import { cpus, loadavg } from 'node:os';
 import { join, resolve, dirname } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -34,14 +36,18 @@ import { launch } from '../tests/browser/harness.mjs';
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const dist = process.env.PIDLAB_PAGE ? resolve(process.env.PIDLAB_PAGE) : join(root, 'dist', 'pidlab.html');
 const args = process.argv.slice(2);
-let n = 120;
-let trace = false;
+let n = 20;
+let dragN = 60;
+let first = 0;
+let maxOptions = 30; // a select steps through up to this many of its options
 let json = false;
 const only = [];
 for (let i = 0; i < args.length; i++) {
   if (args[i] === '--n') n = Number(args[++i]);
-  else if (args[i] === '--trace') trace = true;
-  else if (args[i] === '--json') json = true; // also print every result as one JSON line at the end
+  else if (args[i] === '--drag') dragN = Number(args[++i]);
+  else if (args[i] === '--first') first = Number(args[++i]);
+  else if (args[i] === '--options') maxOptions = Number(args[++i]);
+  else if (args[i] === '--json') json = true;
   else only.push(args[i]);
 }
 if (!existsSync(dist)) {
@@ -50,223 +56,273 @@ if (!existsSync(dist)) {
 }
 
 const boiler = { family: 'ipdt_ir', k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 };
+// issue 15's slow plant for Arvanitis Algorithm III (2.1 s per tune before the worker)
+const slow = { family: 'ipdt_ir', k: 0.478, tau: 0.536, tau_z: 2.8, theta: 0.521 };
 const state = (over) => ({ ...S.defaultState(), plant: { ...boiler }, target: null, ...over });
-const pk = (lambda) => ({ method: 'praveen_kumar', params: { lambda, epsilon: 0.2 } });
-// name, state, slider, value of event i (of count)
-const SLIDERS = [
-  { name: 'lambda', what: 'λ (praveen_kumar, boiler)', st: state(pk(1.0)), sel: '#mp-lambda', range: [0.5, 1.9] },
-  { name: 'theta', what: 'plant θ (praveen_kumar λ = 0.8)', st: state(pk(0.8)), sel: '#fp-theta', range: [0.05, 1.0] },
-  { name: 'zeta', what: 'ζ (arvanitis_alg1, boiler)', st: state({ method: 'arvanitis_alg1', params: { zeta: 0.6 } }), sel: '#mp-zeta', range: [0.4, 1.0] },
-  { name: 'epsilon', what: 'ε (praveen_kumar λ = 1.2)', st: state(pk(1.2)), sel: '#mp-epsilon', range: [0.05, 0.95] },
-  { name: 'pert', what: 'perturbation θ % (λ = 1.2, k +20 %)', st: state({ ...pk(1.2), pert: { k: 20, tau: 0, zero: 0, theta: 0 } }), sel: '#pt-theta', range: [-40, 40] },
-  { name: 'lambda-pins', what: 'λ with two pinned designs', st: null, sel: '#mp-lambda', range: [0.5, 1.9] },
+const pk = (lambda, extra = {}) => ({ method: 'praveen_kumar', params: { lambda, epsilon: 0.2, ...extra } });
+const real = { actuator: { u_min: -1.5, u_max: 2.5, anti_windup: { kind: 'tracking', tt: 1 } }, sampling: { h: 0.1, method: 'tustin' }, noise: { std: 0.01, seed: 1 } };
+
+// kind: slider (range input, values over `range`), number (typed value), select (options in
+// turn), check (toggled), click (a button). `st`: the page's state (hash); `hash`: extra hash.
+const CONTROLS = [
+  { name: 'lambda', what: 'λ slider (Praveen Kumar, boiler)', st: state(pk(1.0)), sel: '#mp-lambda', kind: 'slider', range: [0.5, 1.8] },
+  { name: 'epsilon', what: 'ε slider (Praveen Kumar)', st: state(pk(1.0)), sel: '#mp-epsilon', kind: 'slider', range: [0.05, 0.95] },
+  { name: 'pk-n', what: 'derivative filter N slider (Praveen Kumar)', st: state(pk(1.0)), sel: '#mp-n', kind: 'slider', range: [3, 40] },
+  { name: 'derivative', what: 'derivative-on select (Praveen Kumar)', st: state(pk(1.0)), sel: '#mp-derivative', kind: 'select' },
+  { name: 'target-on', what: 'target-Ms checkbox (solves λ)', st: state(pk(1.0)), sel: '#target-on', kind: 'check' },
+  { name: 'target-ms', what: 'target-Ms slider (Praveen Kumar solves λ)', st: state({ ...pk(1.0), target: 1.6 }), sel: '#mp-target_ms', kind: 'slider', range: [1.3, 2.4] },
+  { name: 'alg1-zeta', what: 'ζ slider (Arvanitis Algorithm I, boiler)', st: state({ method: 'arvanitis_alg1', params: { zeta: 0.6 } }), sel: '#mp-zeta', kind: 'slider', range: [0.4, 1.0] },
+  { name: 'alg3', what: 'ζ slider (Arvanitis Algorithm III, issue 15 slow plant)', st: state({ plant: { ...slow }, method: 'arvanitis_alg3', params: { zeta: 1.79 } }), sel: '#mp-zeta', kind: 'slider', range: [1.6, 2.0] },
+  { name: 'alg3-criterion', what: 'criterion select (Algorithm III, slow plant)', st: state({ plant: { ...slow }, method: 'arvanitis_alg3', params: { zeta: 1.79 } }), sel: '#mp-criterion', kind: 'select' },
+  { name: 'sl-gamma', what: 'γ slider (Shamsuzzoha & Lee on piptd)', st: state({ plant: { family: 'piptd', k: 1, tau: 1, tau_z: 0.5, theta: 0.2 }, method: 'shamsuzzoha_lee', params: {} }), sel: '#mp-gamma', kind: 'slider', range: null },
+  { name: 'plant-k', what: 'plant k slider', st: state(pk(1.0)), sel: '#fp-k', kind: 'slider', range: [0.3, 0.9] },
+  { name: 'plant-tau', what: 'plant τ slider', st: state(pk(1.0)), sel: '#fp-tau', kind: 'slider', range: [0.6, 1.6] },
+  { name: 'plant-tau_z', what: 'plant τ_z slider', st: state(pk(1.0)), sel: '#fp-tau_z', kind: 'slider', range: [0.2, 0.8] },
+  { name: 'plant-theta', what: 'plant θ slider', st: state(pk(0.8)), sel: '#fp-theta', kind: 'slider', range: [0.05, 0.6] },
+  { name: 'family', what: 'model (family) select', st: state(pk(1.0)), sel: '#family', kind: 'select' },
+  { name: 'method', what: 'method select (every method for ipdt_ir, Algorithm III included)', st: state(pk(1.0)), sel: '#method', kind: 'select' },
+  { name: 'preset', what: 'preset select (every preset)', st: state(pk(1.0)), sel: '#preset', kind: 'select', skipEmpty: true },
+  { name: 'pert-k', what: 'perturbation k % slider', st: state(pk(1.2)), sel: '#pt-k', kind: 'slider', range: [-40, 40] },
+  { name: 'pert-tau', what: 'perturbation τ % slider', st: state(pk(1.2)), sel: '#pt-tau', kind: 'slider', range: [-40, 40] },
+  { name: 'pert-zero', what: 'perturbation zero % slider', st: state(pk(1.2)), sel: '#pt-zero', kind: 'slider', range: [-40, 40] },
+  { name: 'pert-theta', what: 'perturbation θ % slider (envelope on the Nyquist plot)', st: state({ ...pk(1.2), pert: { k: 20, tau: 0, zero: 0, theta: 0 } }), sel: '#pt-theta', kind: 'slider', range: [-40, 40] },
+  { name: 'pert-reset', what: 'perturbation reset button', st: state({ ...pk(1.2), pert: { k: 20, tau: 0, zero: 0, theta: 10 } }), sel: '#pert-reset', kind: 'click', before: '#pt-k', beforeValues: [10, 30] },
+  { name: 'sc-t_end', what: 'scenario end time', st: state(pk(1.0)), sel: '#sc-t_end', kind: 'number', range: [40, 80] },
+  { name: 'sc-dt', what: 'scenario sample step dt', st: state(pk(1.0)), sel: '#sc-dt', kind: 'number', range: [0.01, 0.05] },
+  { name: 'sc-sp', what: 'scenario set-point step size', st: state(pk(1.0)), sel: '#sc-sp_size', kind: 'number', range: [0.5, 2] },
+  { name: 'sc-d_time', what: 'scenario load step time', st: state(pk(1.0)), sel: '#sc-d_time', kind: 'number', range: [20, 40] },
+  { name: 'rl-limits', what: 'real loop: actuator limits checkbox', st: state(pk(1.0)), sel: '#rl-limits', kind: 'check' },
+  { name: 'rl-umax', what: 'real loop: u_max', st: state({ ...pk(1.0), ...real }), sel: '#rl-umax', kind: 'number', range: [1.5, 3] },
+  { name: 'rl-aw', what: 'real loop: anti-windup select', st: state({ ...pk(1.0), ...real }), sel: '#rl-aw', kind: 'select' },
+  { name: 'rl-sampled', what: 'real loop: sampled controller checkbox', st: state(pk(1.0)), sel: '#rl-sampled', kind: 'check' },
+  { name: 'rl-h', what: 'real loop: sample time h', st: state({ ...pk(1.0), ...real }), sel: '#rl-h', kind: 'number', range: [0.05, 0.2] },
+  { name: 'rl-method', what: 'real loop: discretisation select', st: state({ ...pk(1.0), ...real }), sel: '#rl-method', kind: 'select' },
+  { name: 'rl-noise', what: 'real loop: noise std', st: state({ ...pk(1.0), ...real }), sel: '#rl-noise', kind: 'number', range: [0.005, 0.05] },
+  { name: 'rl-reroll', what: 'real loop: re-roll noise button', st: state({ ...pk(1.0), ...real }), sel: '#rl-reroll', kind: 'click' },
+  { name: 'pin', what: 'classroom: pin the design (trade-off dots, Bode |S|)', st: state(pk(1.0)), sel: '#pin', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5] },
+  { name: 'embed-choice', what: 'classroom: embed slider choice checkbox', st: state(pk(1.0)), sel: '#embed-choices input[type=checkbox]', kind: 'check', noRender: true },
+  { name: 'reveal', what: 'classroom: instructor reveal button (Ms hidden)', st: state(pk(1.0)), hash: '&hide=ms', sel: 'button.reveal', kind: 'click', fresh: true, noRender: true },
+  { name: 'undo', what: 'undo button (after λ moves)', st: state(pk(1.0)), sel: '#undo', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], commit: true },
 ];
-// Synthetic events: event i of c takes a value spread over the range in a scrambled order.
-for (const sl of SLIDERS) sl.v = (i, c) => sl.range[0] + (sl.range[1] - sl.range[0]) * ((i * 37) % c) / c;
 
 const q = (a, p) => {
   const s = a.filter(Number.isFinite).sort((u, v) => u - v);
   return s.length ? s[Math.min(s.length - 1, Math.floor(p * (s.length - 1) + 0.5))] : NaN;
 };
-const f = (x) => (Number.isFinite(x) ? x.toFixed(2) : '–');
+const f = (x) => (Number.isFinite(x) ? (x >= 100 ? x.toFixed(0) : x.toFixed(1)) : '–');
 
 const browser = await launch({ requirePage: false });
 const ctx = browser.ctx;
 const version = ctx.browser() ? ctx.browser().version() : '';
-console.log(`# page latency: ${n} events per slider, headless Chromium ${version}, viewport 1280×900, ${cpus().length} cores, load average ${loadavg().map((x) => x.toFixed(1)).join(' ')}`);
+console.log(`# page latency: ${n} steps per control (+${dragN}-frame drags on sliders), headless Chromium ${version}, viewport 1280×900, ${cpus().length} cores (${cpus()[0] ? cpus()[0].model.trim() : '?'}), load average ${loadavg().map((x) => x.toFixed(1)).join(' ')}`);
+console.log(`# page: ${dist}`);
 
-/** Main-thread time per frame from a Chrome trace, between the input marks and the painted marks. */
-function summarizeTrace(events) {
-  const marks = events.filter((e) => /^pidlab-(in|painted)-\d+$/.test(e.name));
-  if (!marks.length) return null;
-  const main = marks[0].pid + ':' + marks[0].tid;
-  const X = events.filter((e) => e.ph === 'X' && e.pid + ':' + e.tid === main).sort((u, v) => u.ts - v.ts);
-  const byIdx = new Map();
-  for (const m of marks) {
-    const [, kind, i] = m.name.match(/^pidlab-(in|painted)-(\d+)$/);
-    const o = byIdx.get(i) || {};
-    o[kind] = m.ts;
-    byIdx.set(i, o);
-  }
-  const groups = {
-    script: ['FireAnimationFrame', 'EventDispatch'], // the page renders in either
-    'style+layout': ['UpdateLayoutTree', 'Layout'],
-    'prepaint+paint': ['PrePaint', 'Paint'],
-    'commit (incl. wait)': ['Commit'],
-    // Rasterizing the canvases' recorded drawing: inside the commit when the page drew in the
-    // frame, in tasks of its own before the frame when it drew in an input event.
-    'canvas raster': ['CanvasRenderingContext2D::FinalizeFrame'],
-    gc: ['MinorGC', 'MajorGC'],
-  };
-  const all = Object.values(groups).flat();
-  const rows = [];
-  for (const { in: a, painted: b } of byIdx.values()) {
-    if (!a || !b) continue;
-    const row = {};
-    for (const [g, names] of Object.entries({ ...groups, 'main thread': all })) {
-      // Outermost events only (Paint nests inside Paint, one per paint layer).
-      let end = -1;
-      row[g] = 0;
-      row[g + ' cpu'] = 0;
-      for (const e of X) {
-        if (!names.includes(e.name) || e.ts < a || e.ts >= b || e.ts < end) continue;
-        row[g] += e.dur / 1000;
-        row[g + ' cpu'] += (e.tdur ?? e.dur) / 1000;
-        end = e.ts + e.dur;
-      }
-    }
-    const bmf = X.find((e) => e.name === 'ProxyMain::BeginMainFrame' && e.ts >= a && e.ts < b);
-    row['wait for the frame'] = bmf ? (bmf.ts - a) / 1000 : NaN;
-    rows.push(row);
-  }
-  return rows;
-}
-
-async function run(sl) {
+async function openPage(hash) {
   const page = await ctx.newPage();
   const errors = [];
   page.on('pageerror', (e) => errors.push(String(e)));
+  page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
   await page.route('**/*', (route) => (/^(file|data|blob):/.test(route.request().url()) ? route.continue() : route.abort()));
-  const st = sl.st || state(pk(1.9));
-  await page.goto(pathToFileURL(dist).href + U.encodeHash(st));
-  await page.waitForSelector('body[data-ready="1"]', { timeout: 20000 });
-  if (!sl.st) {
-    // Two pinned designs (λ = 1.9 and 1.4), then the λ slider moves.
-    for (const lam of [1.9, 1.4]) {
-      await page.evaluate((l) => { const x = document.getElementById('mp-lambda'); x.value = String(l); x.dispatchEvent(new Event('input', { bubbles: true })); }, lam);
-      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
-      await page.click('#pin');
-    }
-  }
-  await page.waitForTimeout(300);
-  const values = (count, warm) => Array.from({ length: warm + count }, (_, i) => sl.v(i < warm ? i + count - warm : i - warm, count));
-  const loop = (count, warm, mark, jitter = false) => page.evaluate(async ([sel, vals, count, warm, mark, jitter]) => {
-    const x = document.querySelector(sel);
-    const perf = window.__pidlab.perf;
-    const out = { frame: [], painted: [], work: [], phases: {} };
-    for (let i = 0; i < warm + count; i++) {
-      const keep = i >= warm;
-      // At a random time in the frame interval (a key press, a typed number), not right after a paint.
-      if (jitter) await new Promise((res) => setTimeout(res, Math.random() * 16.7));
-      const t0 = performance.now();
-      if (mark && keep) performance.mark('pidlab-in-' + i);
-      x.value = String(vals[i]);
-      x.dispatchEvent(new Event('input', { bubbles: true }));
-      const frame = await new Promise((res) => requestAnimationFrame(() => {
-        const tf = performance.now() - t0;
-        const ch = new MessageChannel();
-        ch.port1.onmessage = () => {
-          if (mark && keep) performance.mark('pidlab-painted-' + i);
-          res([tf, performance.now() - t0]);
-        };
-        ch.port2.postMessage(0);
-      }));
-      if (!keep) continue;
-      out.frame.push(frame[0]);
-      out.painted.push(frame[1]);
-      out.work.push(perf.lastWorkMs);
-      for (const [k, val] of Object.entries(perf.phases)) (out.phases[k] = out.phases[k] || []).push(val);
-      for (const k of Object.keys(perf.phases)) delete perf.phases[k];
-    }
-    return out;
-  }, [sl.sel, values(count, warm), count, warm, mark, jitter]);
-  const r = await loop(n, 10, false);
-  const k = await loop(n, 10, false, true);
-  const d = await drag(page, sl, n, 10);
-  let tr = null;
-  if (trace) {
-    const cdp = await ctx.newCDPSession(page);
-    const chunks = [];
-    cdp.on('Tracing.dataCollected', (e) => { for (const x of e.value) chunks.push(x); });
-    const done = new Promise((res) => cdp.on('Tracing.tracingComplete', res));
-    await cdp.send('Tracing.start', { traceConfig: { includedCategories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'v8', 'blink.user_timing', 'cc', 'blink'], excludedCategories: ['*'] }, transferMode: 'ReportEvents' });
-    await loop(Math.min(n, 60), 5, true);
-    await cdp.send('Tracing.end');
-    await done;
-    tr = summarizeTrace(chunks);
-    await cdp.detach();
-  }
-  await page.close();
-  return { r, k, d, tr, errors };
+  await page.goto(pathToFileURL(dist).href + hash);
+  await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
+  // (a build without the worker, e.g. main before it, renders synchronously: two frames do)
+  await page.evaluate(() => (window.__pidlab.settled ? window.__pidlab.settled(true) : new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)))));
+  return { page, errors };
 }
 
-/**
- * A mouse drag of the slider's thumb back and forth over its range (one pixel per move, as
- * fast as the page takes them). Chromium hands pointer moves to the page at the start of a
- * frame, so this is what a person dragging sees: latencies are from the move's own time
- * stamp (event.timeStamp) to the end of the frame that redraws and to the painted frame.
- */
-async function drag(page, sl, count, warm) {
-  await page.locator(sl.sel).scrollIntoViewIfNeeded();
-  const g = await page.evaluate((sel) => {
-    const x = document.querySelector(sel);
-    const b = x.getBoundingClientRect();
-    window.__bench = [];
-    // Runs after the slider's own listener, so this frame callback follows the page's.
-    document.addEventListener('input', (e) => {
-      if (e.target !== x) return;
-      const rec = { ts: e.timeStamp };
-      window.__bench.push(rec);
-      requestAnimationFrame(() => {
-        rec.frame = performance.now() - rec.ts;
-        rec.work = window.__pidlab.perf.lastWorkMs;
-        rec.phases = { ...window.__pidlab.perf.phases };
+// In the page: the measurement helpers (installed once per page).
+const HELPERS = () => {
+  const P = window.__pidlab;
+  // a build without the worker computes in the input's own task: its result is in the next frame
+  if (!P.current) { P.current = () => true; P.perf.shown = 0; P.worker = () => ({ cancelled: 0, dropped: 0 }); }
+  const sync = P.perf.inputs === undefined;
+  const painted = () => new Promise((res) => requestAnimationFrame(() => { const ch = new MessageChannel(); ch.port1.onmessage = () => res(performance.now()); ch.port2.postMessage(0); }));
+  /** Waits, frame by frame, until `ok()` holds at a frame; resolves to that frame's paint time. */
+  const until = async (ok, limit = 60000) => {
+    const t0 = performance.now();
+    for (;;) {
+      const r = await new Promise((res) => requestAnimationFrame(() => {
+        const good = ok();
         const ch = new MessageChannel();
-        ch.port1.onmessage = () => { rec.painted = performance.now() - rec.ts; };
+        ch.port1.onmessage = () => res(good ? performance.now() : null);
         ch.port2.postMessage(0);
-      });
-    });
-    return { min: Number(x.min), max: Number(x.max), log: x.dataset.scale === 'log', lo: Number(x.dataset.lo), hi: Number(x.dataset.hi), x: b.x, y: b.y + b.height / 2, w: b.width };
-  }, sl.sel);
-  // where v sits along the track (a logarithmic slider's position is log-spaced)
-  const frac = (v) => (g.log ? Math.log(v / g.lo) / Math.log(g.hi / g.lo) : (v - g.min) / (g.max - g.min));
-  const px = (v) => Math.round(g.x + 8 + (g.w - 16) * frac(v));
-  const a = px(sl.range[0]);
-  const b = Math.max(a + 2, px(sl.range[1]));
-  await page.mouse.move(a, g.y);
-  await page.mouse.down();
-  let pos = a;
-  let dir = 1;
-  for (let moves = 0; moves < 20 * (count + warm); moves++) {
-    if (pos + dir > b || pos + dir < a) dir = -dir;
-    pos += dir;
-    await page.mouse.move(pos, g.y);
-    if (moves % 16 === 0 && (await page.evaluate(() => window.__bench.length)) >= count + warm + 1) break;
+      }));
+      if (r !== null) return r;
+      if (performance.now() - t0 > limit) return NaN;
+    }
+  };
+  const act = (sel, kind, value) => {
+    const x = document.querySelector(sel);
+    if (!x) throw new Error('no element ' + sel);
+    if (kind === 'click') { x.click(); return; }
+    if (kind === 'check') { x.checked = !x.checked; x.dispatchEvent(new Event('change', { bubbles: true })); return; }
+    x.value = String(value);
+    x.dispatchEvent(new Event(kind === 'select' ? 'change' : 'input', { bubbles: true }));
+  };
+  window.__bench = {
+    /** One input; its frame, result and settled latencies (ms). */
+    async step(sel, kind, value, noRender) {
+      const shown0 = P.perf.shown;
+      const t0 = performance.now();
+      act(sel, kind, value);
+      const frame = (await painted()) - t0;
+      // a result: a render for an input after this one's start has been applied (and, for the
+      // async preset load, its input counted); settled: nothing more pending for it
+      // (a control that changes no design, e.g. which sliders an embedding shows: its result is its frame)
+      const result = noRender ? frame : (await until(() => (sync || P.perf.shown > shown0) && P.current())) - t0;
+      const settled = (await until(() => P.current(true, false))) - t0;
+      return { frame, result, settled };
+    },
+    /** An input in every frame (a drag); per-input frame latency and the last input's result. */
+    async drag(sel, values) {
+      const frames = [];
+      let last = 0;
+      for (const v of values) {
+        const t0 = performance.now();
+        last = t0;
+        act(sel, 'slider', v);
+        frames.push((await painted()) - t0);
+      }
+      const final = (await until(() => P.current())) - last;
+      return { frames, final, stats: P.worker() };
+    },
+  };
+};
+
+async function run(c) {
+  const { page, errors } = await openPage(U.encodeHash(c.st) + (c.hash || ''));
+  await page.evaluate(HELPERS);
+  const out = { step: { frame: [], result: [], settled: [] }, drag: null, errors };
+  const info = await page.evaluate((sel) => {
+    const x = document.querySelector(sel);
+    if (!x) return null;
+    return { options: x.options ? [...x.options].map((o) => o.value) : null, lo: Number(x.dataset.lo), hi: Number(x.dataset.hi), min: Number(x.min), max: Number(x.max) };
+  }, c.sel);
+  if (!info) { out.missing = true; await page.close(); return out; }
+  const range = c.range || (Number.isFinite(info.lo) && Number.isFinite(info.hi) ? [info.lo + 0.1 * (info.hi - info.lo), info.hi - 0.1 * (info.hi - info.lo)] : [info.min, info.max]);
+  const opts = info.options ? info.options.filter((o) => !(c.skipEmpty && o === '')) : null;
+  // event i of count: values spread over the range in a scrambled order
+  const value = (i, count) => (opts ? opts[(i + 1) % opts.length] : range[0] + (range[1] - range[0]) * (((i * 37) % count) + 0.5) / count);
+  const steps = opts ? Math.max(n, Math.min(opts.length, maxOptions)) : n;
+  for (let i = 0; i < steps; i++) {
+    if (c.before) {
+      // a change for the button to act on (pin, undo, reset)
+      await page.evaluate(([s, v]) => { const x = document.querySelector(s); x.value = String(v); x.dispatchEvent(new Event('input', { bubbles: true })); if (x.dispatchEvent) x.dispatchEvent(new Event('change', { bubbles: true })); }, [c.before, c.beforeValues[i % 2]]);
+      await page.evaluate(() => window.__pidlab.settled());
+      if (c.commit) await page.waitForTimeout(700); // history commits a settled change
+    }
+    if (c.fresh && i > 0) {
+      await page.close();
+      const o = await openPage(U.encodeHash(c.st) + (c.hash || ''));
+      Object.assign(out, { errors: [...out.errors, ...o.errors] });
+      await o.page.evaluate(HELPERS);
+      const r = await o.page.evaluate(([s, k, v, nr]) => window.__bench.step(s, k, v, nr), [c.sel, c.kind, value(i, steps), !!c.noRender]);
+      for (const k of Object.keys(out.step)) out.step[k].push(r[k]);
+      await o.page.close();
+      continue;
+    }
+    const r = await page.evaluate(([s, k, v, nr]) => window.__bench.step(s, k, v, nr), [c.sel, c.kind, value(i, steps), !!c.noRender]);
+    for (const k of Object.keys(out.step)) out.step[k].push(r[k]);
   }
-  await page.mouse.up();
-  await page.waitForTimeout(100);
-  const recs = (await page.evaluate(() => window.__bench)).slice(warm, warm + count).filter((x) => Number.isFinite(x.painted));
-  const out = { frame: [], painted: [], work: [], phases: {} };
-  for (const x of recs) {
-    out.frame.push(x.frame);
-    out.painted.push(x.painted);
-    out.work.push(x.work);
-    for (const [k, v] of Object.entries(x.phases || {})) (out.phases[k] = out.phases[k] || []).push(v);
+  if (c.kind === 'slider' && dragN > 0 && !page.isClosed()) {
+    const vals = Array.from({ length: dragN }, (_, i) => range[0] + (range[1] - range[0]) * (0.5 + 0.5 * Math.sin(i / 6)));
+    out.drag = await page.evaluate(([s, v]) => window.__bench.drag(s, v), [c.sel, vals]);
   }
+  if (!page.isClosed()) await page.close();
   return out;
 }
 
+const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm' };
+/** Serves www/ on 127.0.0.1 (an ephemeral port): { url, close }. */
+function serveWww() {
+  const www = join(root, 'www');
+  const server = createServer(async (req, res) => {
+    const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^([/\\])+/, '');
+    const file = join(www, path || 'index.html');
+    if (!file.startsWith(www)) { res.writeHead(403).end(); return; }
+    try {
+      res.writeHead(200, { 'content-type': MIME[extname(file)] || 'application/octet-stream' }).end(await readFile(file));
+    } catch {
+      res.writeHead(404).end();
+    }
+  });
+  return new Promise((ok) => server.listen(0, '127.0.0.1', () => ok({ url: `http://127.0.0.1:${server.address().port}/index.html`, close: () => new Promise((r) => server.close(r)) })));
+}
+
+/** Navigation -> the first plots painted (the servo plot drawn), `count` loads of `url`. */
+async function firstPlots(count, url) {
+  const times = [];
+  for (let i = 0; i < count; i++) {
+    const page = await ctx.newPage();
+    await page.route('**/*', (route) => (/^(file|data|blob):|^http:\/\/127\.0\.0\.1:/.test(route.request().url()) ? route.continue() : route.abort()));
+    await page.goto(url, { waitUntil: 'commit' });
+    const t = await page.evaluate(() => new Promise((res) => {
+      const look = () => requestAnimationFrame(() => {
+        const P = window.__pidlab;
+        // (a build without the worker draws its first plots before it sets data-ready)
+        const at = P && P.perf ? (P.perf.firstPlotsAt ?? (document.body.dataset.ready === '1' ? performance.now() : 0)) : 0;
+        if (at) {
+          const ch = new MessageChannel();
+          const marks = { ...P.perf.startup, plotsDrawn: at };
+          for (const m of performance.getEntriesByType('mark')) if (m.name.startsWith('pidlab-')) marks[m.name.slice(7)] = m.startTime;
+          ch.port1.onmessage = () => res({ drawn: at, painted: performance.now(), marks });
+          ch.port2.postMessage(0);
+        } else look();
+      });
+      look();
+    }));
+    times.push(t);
+    await page.close();
+  }
+  return times;
+}
+
 const results = {};
-for (const sl of SLIDERS) {
-  if (only.length && !only.includes(sl.name)) continue;
-  const { r, k, d, tr, errors } = await run(sl);
-  const sum = (x) => Object.fromEntries(['work', 'frame', 'painted'].map((m) => [m, [q(x[m], 0.5), q(x[m], 0.95)]]));
-  results[sl.name] = { synthetic: sum(r), random: sum(k), drag: sum(d) };
-  if (tr) results[sl.name].mainThreadCpu = [q(tr.map((x) => x['main thread cpu']), 0.5), q(tr.map((x) => x['main thread cpu']), 0.95)];
-  console.log(`\n## ${sl.name}: ${sl.what}`);
-  if (errors.length) console.log('page errors: ' + errors.join(' | '));
-  for (const [mode, x] of [['synthetic input events right after the previous paint (as the browser test)', r], ['synthetic input events at a random time in the frame', k], [`mouse drag (${d.work.length} moves that changed the value)`, d]]) {
-    console.log(mode + ':');
-    for (const k of ['work', 'frame', 'painted']) console.log(`  ${k.padEnd(8)} p50 ${f(q(x[k], 0.5))} ms  p95 ${f(q(x[k], 0.95))} ms`);
-    console.log('  stages (p50 / p95 ms): ' + Object.entries(x.phases).map(([k, v]) => `${k} ${f(q(v, 0.5))}/${f(q(v, 0.95))}`).join(', '));
+const rows = [];
+for (const c of CONTROLS) {
+  if (only.length && !only.includes(c.name)) continue;
+  const r = await run(c);
+  if (r.missing) { console.log(`## ${c.name}: ${c.sel} not found (skipped)`); continue; }
+  const s = r.step;
+  const row = {
+    name: c.name, what: c.what, n: s.frame.length,
+    frame: [q(s.frame, 0.5), q(s.frame, 0.95), Math.max(...s.frame)],
+    result: [q(s.result, 0.5), q(s.result, 0.95), Math.max(...s.result)],
+    settled: [q(s.settled, 0.5), q(s.settled, 0.95), Math.max(...s.settled)],
+  };
+  if (r.drag) row.drag = { frame: [q(r.drag.frames, 0.5), q(r.drag.frames, 0.95), Math.max(...r.drag.frames)], final: r.drag.final, cancelled: r.drag.stats.cancelled, dropped: r.drag.stats.dropped };
+  if (r.errors.length) row.errors = r.errors;
+  rows.push(row);
+  results[c.name] = row;
+  const t = (a) => a.map(f).join(' / ');
+  console.log(`${c.name.padEnd(15)} frame ${t(row.frame).padEnd(18)} result ${t(row.result).padEnd(20)} settled ${t(row.settled).padEnd(20)}` + (row.drag ? ` drag frame ${t(row.drag.frame)}, final ${f(row.drag.final)}` : '') + (r.errors.length ? '  ERRORS: ' + r.errors.slice(0, 2).join(' | ') : ''));
+}
+
+console.log('\n## per control: p50 / p95 / max in ms (step: one input at a time; drag: an input every frame)');
+console.log('| control | n | input → next painted frame | input → result painted | input → settled | drag: input → next frame | drag: last input → result |');
+console.log('|---|---|---|---|---|---|---|');
+for (const r of rows) {
+  const t = (a) => a.map(f).join(' / ');
+  console.log(`| ${r.what} | ${r.n} | ${t(r.frame)} | ${t(r.result)} | ${t(r.settled)} | ${r.drag ? t(r.drag.frame) : ''} | ${r.drag ? f(r.drag.final) : ''} |`);
+}
+if (rows.length) {
+  const all = rows.flatMap((r) => [r.frame[1]]);
+  console.log(`\nworst p95 input → next painted frame over all controls: ${f(Math.max(...all))} ms (${rows.find((r) => r.frame[1] === Math.max(...all)).name})`);
+}
+
+if (first > 0) {
+  const srv = await serveWww();
+  const pages = [[dist.split('/').pop() + ' from file://', pathToFileURL(dist).href]];
+  if (!process.env.PIDLAB_PAGE) pages.push(['www/ served over HTTP', srv.url]); // (another build: its file only)
+  for (const [label, url] of pages) {
+    const t = await firstPlots(first, url);
+    const d = t.map((x) => x.painted);
+    console.log(`\n## navigation → first plots painted (${first} loads of ${label}): p50 ${f(q(d, 0.5))} / p95 ${f(q(d, 0.95))} / max ${f(Math.max(...d))} ms`);
+    const keys = Object.keys(t[0].marks || {});
+    console.log('  start-up marks (p50 ms after navigation): ' + keys.map((k) => `${k} ${f(q(t.map((x) => x.marks[k]), 0.5))}`).join(', '));
+    results['firstPlots ' + label] = { p50: q(d, 0.5), p95: q(d, 0.95), max: Math.max(...d), marks: Object.fromEntries(keys.map((k) => [k, q(t.map((x) => x.marks[k]), 0.5)])) };
   }
-  if (tr) {
-    const line = (keys) => keys.map((k) => `${k.replace(/ cpu$/, '')} ${f(q(tr.map((x) => x[k]), 0.5))}/${f(q(tr.map((x) => x[k]), 0.95))}`).join(', ');
-    const keys = Object.keys(tr[0] || {});
-    console.log('trace of synthetic events, renderer main thread per event, p50/p95 ms (tracing slows the page):');
-    console.log('  wall: ' + line(keys.filter((k) => !k.endsWith(' cpu'))));
-    console.log('  cpu:  ' + line(keys.filter((k) => k.endsWith(' cpu'))));
-  }
+  await srv.close();
 }
 if (json) console.log(JSON.stringify(results));
 await browser.close();

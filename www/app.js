@@ -1,15 +1,18 @@
 // pidlab page: wires the modules together. controls -> state (store.js) -> compute.js (the wasm
-// through engine.js: tune, simulate, analyze) -> plots.js, readouts.js, table.js, design.js.
-// Inputs are rendered at most once per animation frame (store.js changed()).
+// in a computation worker through worker-client.js: tune, simulate, analyze) -> plots.js,
+// readouts.js, table.js, design.js. Inputs are rendered at most once per animation frame
+// (store.js changed()); a render whose answers are still being computed marks the results busy
+// and the worker's answer renders again (engine.js keeps this thread's instance for plot()).
 import * as S from './state.js';
 import * as U from './url.js';
 import * as E from './engine.js';
+import * as W from './worker-client.js';
 import * as C from './controls.js';
 import * as Pr from './presets.js';
 import * as P from './pins.js';
 import * as Sh from './share.js';
 import { $, errText } from './dom.js';
-import { store, connect, changed } from './store.js';
+import { store, connect, changed, isPending, methodParams } from './store.js';
 import { perf, lap } from './perf.js';
 import { compute } from './compute.js';
 import { drawPlots, watchSizes } from './plots.js';
@@ -65,13 +68,33 @@ function drawClassroom(r) {
   }
 }
 
-/** Computes the state and shows the results. */
-function render() {
+// What the results show: their input's render number (perf.shown) and whether newer is coming.
+const view = { busy: null };
+
+/** Marks the readouts and plots busy (aria-busy) while the worker computes the latest input. */
+function setBusy(b) {
+  if (view.busy === b) return;
+  view.busy = b;
+  for (const id of ['live', 'readouts', 'plots']) $(id).setAttribute('aria-busy', String(b));
+}
+
+/** Computes the state and shows the results (`arrival`: an answer of the worker came in). */
+function render(arrival = false) {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
+  if (!arrival) { W.forgetCrashes(); perf.inputs++; }
+  W.begin('render');
   try {
-    C.updateRanges();
+    if (!arrival) C.updateRanges();
     const r = compute();
+    setBusy(r.pending);
+    if (r.pending) {
+      // the last results stay on screen, marked busy; the answers render again
+      const crashed = crashBanners();
+      if (crashed.length) showBanners([...crashed]);
+      return;
+    }
+    perf.shown = perf.inputs;
     store.last = r;
     // the module's errors in the user's words, beside the field they are about and in the banner
     r.banners = Er.route(r.banners);
@@ -80,6 +103,11 @@ function render() {
     const t1 = performance.now();
     drawPlots(r);
     const t2 = lap('plots', t1);
+    if (!perf.firstPlotsAt) {
+      perf.firstPlotsAt = t2;
+      // the slow worker's scans and sweeps wait until the first plots are on screen
+      requestAnimationFrame(() => setTimeout(() => W.holdSlow(false), 0));
+    }
     drawClassroom(r);
     showMetrics(r);
     showController(r);
@@ -89,7 +117,12 @@ function render() {
     if (crashed.length) showBanners([...crashed, ...r.banners]);
   } catch (e) {
     showBanners([...crashBanners(), { kind: 'error', title: 'Internal error', text: errText(e) }]);
+  } finally {
+    finishRender(t0);
   }
+}
+
+function finishRender(t0) {
   const dt = performance.now() - t0;
   perf.renders++;
   perf.lastWorkMs = dt;
@@ -160,9 +193,48 @@ function wire() {
   watchSizes(() => changed(true));
 }
 
+/** Whether the page shows its latest input (`all`: and the slow worker has nothing left to do:
+ *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep). */
+function isCurrent(all = false, sweep = true) {
+  const waiting = W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  return !waiting && perf.shown === perf.inputs;
+}
+
+function warmPlot() {
+  const c = document.createElement('canvas');
+  c.id = 'pidlab-warm-plot';
+  c.width = 64;
+  c.height = 48;
+  c.hidden = true;
+  document.body.append(c);
+  try {
+    E.call('plot', JSON.stringify({ canvas: c.id, kind: 'time', title: 't', xlabel: 'x', ylabel: 'y', series: [{ label: 'a', x: [0, 1, 2], y: [0, 1, 0.5], color: '#0072B2' }] }));
+  } catch {
+    // (nothing lost: the real plots report their own errors)
+  }
+  c.remove();
+}
+
+/** See window.__pidlab.settled. */
+async function settled(all) {
+  const frame = () => new Promise((res) => requestAnimationFrame(() => res()));
+  for (let i = 0; i < 20000; i++) {
+    await frame();
+    if (isCurrent(all)) { await frame(); return; }
+  }
+}
+const sweepDone = () => { const s = sweepState(); return !s || s.done; };
+
 async function main() {
+  perf.startup.script = performance.now();
+  // the workers start (a thread, their script) while the module compiles
+  W.spawn();
+  W.holdSlow(true);
+  setTimeout(() => W.holdSlow(false), 3000); // (should the first render not draw: never held for good)
   try {
     await E.load();
+    perf.startup.compiled = performance.now();
+    W.start(E.compiled());
   } catch (e) {
     $('loading').textContent = 'Could not start the computation module: ' + errText(e);
     return;
@@ -181,6 +253,11 @@ async function main() {
     return;
   }
   connect({ render, rebuild: () => { buildAll(); changed(); } });
+  // The worker's answers: a render's render again; admissible's rebuild the method's sliders.
+  W.onArrival('render', () => changed(false, true));
+  W.onArrival('ranges', C.rangesArrived);
+  W.onArrival('standin', C.rangesArrived);
+  C.onMethodRebuilt(() => { Sh.buildEmbedChoices(); Sh.applyEmbed(); I.apply(); });
   onSweepProgress(() => { if (store.last) drawTradeoff(store.last); });
   // A restart that had to wait: say so; the next change computes (not the input that trapped).
   E.onRestart(() => showBanners([{ kind: 'warn', title: 'The computation module has been restarted', text: 'Change any input to compute again.' }]));
@@ -209,6 +286,13 @@ async function main() {
   // What the tests and the benchmark read (the module itself, the state, the timings).
   window.__pidlab = {
     get wasm() { return E.glue(); },
+    /** Resolves when the current input is shown: no render waits for the worker (the trade-off
+     *  sweep, the identification fit and admissible scans of the slow worker excepted unless
+     *  `all`), then two frames. */
+    settled: (all = false) => settled(all),
+    current: isCurrent,
+    worker: W.stats,
+    trace: W.trace,
     state: () => structuredClone(store.state),
     inputs: () => (store.last && store.last.ctl ? { plant: store.state.plant, controller: S.controllerOf(store.last.ctl) } : null),
     perf,
@@ -218,9 +302,19 @@ async function main() {
     ready: true,
   };
   // The browser tests' hooks, with #test=1 only: make the live instance trap like a dead one.
-  if (dec.test) window.__pidlabTest = { forceTrap: E.forceTrap, generation: E.generation, spareReady: E.spareReady };
+  if (dec.test) window.__pidlabTest = { forceTrap: W.forceTrap, generation: W.generation, spareReady: () => true, forceTrapMain: E.forceTrap };
+  if (store.state.method && store.state.method !== '__literal') {
+    const params = methodParams();
+    if (!('lambda' in params) && !('target_ms' in params)) params.target_ms = 1.6;
+    W.warm({ plant: store.state.plant, method: store.state.method, params, scenario: store.state.scenario });
+  }
+  perf.startup.built = performance.now();
+  // while the worker computes the first design: one small drawing on a hidden canvas, so the
+  // plot code the first plots need is compiled by then (the engine compiles a function on its
+  // first call)
+  setTimeout(warmPlot, 0);
   render();
-  Api.start(ins.api);
+  Api.start(ins.api, () => settled(false));
   document.body.setAttribute('data-ready', '1');
 }
 

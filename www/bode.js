@@ -4,40 +4,28 @@
 // The x axis is log10 ω (the plot module's axes are linear); magnitudes are in dB. A text
 // summary of the same numbers (#bode-summary, aria-live) is the plots' text alternative.
 import * as S from './state.js';
-import * as E from './engine.js';
+import * as W from './worker-client.js';
 import { $, setText, errText } from './dom.js';
 import { store } from './store.js';
 import { drawSpec, log10, db } from './drawspec.js';
 import * as P from './pins.js';
 
 const C = { s: '#0072B2', t: '#D55E00', cs: '#009E73', ps: '#CC79A7', ref: '#000000', mark: '#E69F00' };
-let memo = { key: '', fr: null, err: null };
-
-/** freqresp() of the current loop (memoized by input); null when there is no controller. */
+/** freqresp() of the current loop (the worker's, memoized by input); null when there is no
+ *  controller; W.PENDING while the worker computes it (the page renders again on arrival). */
 export function currentResponse(r) {
   if (!r || !r.ctl) return null;
-  const input = { plant: store.state.plant, controller: S.controllerOf(r.ctl) };
-  const key = JSON.stringify(input);
-  if (memo.key !== key) {
-    memo = { key, fr: null, err: null };
-    try { memo.fr = E.call('freqresp', input); } catch (e) { memo.err = e; if (e instanceof E.EngineCrash) memo.key = ''; }
-  }
-  if (memo.err) throw memo.err;
-  return memo.fr;
+  return W.need('render', 'freqresp', { plant: store.state.plant, controller: S.controllerOf(r.ctl) });
 }
 
-// freqresp of the pinned designs, by input (a pin's loop does not change while it is pinned)
-const pinMemo = new Map();
+/** freqresp of a pinned design; null when it failed or is still being computed. */
 function pinResponse(pin) {
-  const input = { plant: pin.plant, controller: pin.controller };
-  const key = JSON.stringify(input);
-  if (!pinMemo.has(key)) {
-    let fr = null;
-    try { fr = E.call('freqresp', input); } catch { fr = null; }
-    if (pinMemo.size > 12) pinMemo.clear();
-    pinMemo.set(key, fr);
+  try {
+    const fr = W.need('render', 'freqresp', { plant: pin.plant, controller: pin.controller });
+    return fr === W.PENDING ? null : fr;
+  } catch {
+    return null;
   }
-  return pinMemo.get(key);
 }
 
 const fmt = (x, d = 3) => (Number.isFinite(x) ? S.fmt(x, d) : '–');
@@ -73,6 +61,8 @@ export function drawBode(r) {
     setText($('bode-summary'), 'No frequency response: ' + errText(e));
     return;
   }
+  box.setAttribute('aria-busy', String(fr === W.PENDING));
+  if (fr === W.PENDING) return; // the last plots stay, marked busy, until it arrives
   if (!fr) {
     setText($('bode-summary'), 'No controller: no frequency response.');
     return;

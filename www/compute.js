@@ -1,12 +1,22 @@
 // One render's computation: tune (or the literal controller), simulate and analyze on the
-// nominal and, when perturbed, the true plant, through the memoized engine; the problems found
-// become banners (a call that crashed the module is reported by the page, see app.js).
+// nominal and, when perturbed, the true plant, asked of the computation worker (worker-client.js,
+// memoized by input); the problems found become banners (a call that crashed the module is
+// reported by the page, see app.js). What the worker has not answered yet is PENDING: the
+// result then has `pending: true` and the page renders again when the answers arrive.
 import * as S from './state.js';
 import * as E from './engine.js';
+import * as W from './worker-client.js';
 import { errText } from './dom.js';
 import { store, methodParams } from './store.js';
 import { lap } from './perf.js';
 import { simInput } from './realloop.js';
+
+/** need('render', fn, input): the answer, or PENDING (then r.pending is set). */
+function get(r, fn, input) {
+  const v = W.need('render', fn, input);
+  if (v === W.PENDING) r.pending = true;
+  return v === W.PENDING ? null : v;
+}
 
 /** Adds a banner for a failed call, unless the module crashed (the crash has its own banner). */
 function failed(r, title, e) {
@@ -16,12 +26,13 @@ function failed(r, title, e) {
 /** The results of the current state: { banners, ctl, tune, sim, simNom, an, anTrue, plant, truePlant }. */
 export function compute() {
   const { state } = store;
-  const r = { banners: [], ctl: null, tune: null, sim: null, simNom: null, an: null, anTrue: null, plant: state.plant, truePlant: null };
+  const r = { pending: false, banners: [], ctl: null, tune: null, sim: null, simNom: null, an: null, anTrue: null, plant: state.plant, truePlant: null };
   let t0 = performance.now();
+  if (store.hold) { r.pending = true; return r; } // the method's panel waits for its λ (controls.js)
   if (state.method && state.method !== '__literal') {
     try {
-      r.tune = E.run('tune', { method: state.method, plant: state.plant, params: methodParams() });
-      r.ctl = r.tune.controller;
+      r.tune = get(r, 'tune', { method: state.method, plant: state.plant, params: methodParams() });
+      r.ctl = r.tune ? r.tune.controller : null;
     } catch (e) {
       failed(r, 'Ill-posed design: the rule cannot tune this plant', e);
     }
@@ -31,7 +42,7 @@ export function compute() {
     r.banners.push({ kind: 'error', title: 'No controller', text: 'No tuning method applies to this plant. Choose a plant family, or load a paper preset.' });
   }
   t0 = lap('tune', t0);
-  if (!r.ctl) return r;
+  if (!r.ctl) return r; // (no controller, or its tune is pending)
   // The controller with its set-point model loop, when it has one. A perturbation changes the
   // process only: the controller's internal model (model_loop.plant) stays the nominal one.
   const controller = S.controllerOf(r.ctl);
@@ -39,23 +50,24 @@ export function compute() {
   r.truePlant = perturbed ? S.perturbPlant(state.plant, state.pert) : state.plant;
   const real = simInput(state); // actuator limits, sampling, noise (issue 13), when set
   try {
-    r.sim = E.run('simulate', { plant: r.truePlant, controller, scenario: state.scenario, ...real });
+    r.sim = get(r, 'simulate', { plant: r.truePlant, controller, scenario: state.scenario, ...real });
   } catch (e) {
     failed(r, 'Ill-posed loop: cannot simulate', e);
   }
   if (perturbed) {
-    try { r.simNom = E.run('simulate', { plant: state.plant, controller, scenario: state.scenario, ...real }); } catch { r.simNom = null; }
+    try { r.simNom = get(r, 'simulate', { plant: state.plant, controller, scenario: state.scenario, ...real }); } catch { r.simNom = null; }
   }
   t0 = lap('simulate', t0);
   try {
-    r.an = E.run('analyze', { plant: state.plant, controller });
+    r.an = get(r, 'analyze', { plant: state.plant, controller });
   } catch (e) {
     failed(r, 'Cannot analyse the loop', e);
   }
   if (perturbed) {
-    try { r.anTrue = E.run('analyze', { plant: r.truePlant, controller }); } catch { r.anTrue = null; }
+    try { r.anTrue = get(r, 'analyze', { plant: r.truePlant, controller }); } catch { r.anTrue = null; }
   }
   lap('analyze', t0);
+  if (r.pending) return r;
   const verdictBanner = (an, who) => {
     if (!an) return;
     const v = String(an.verdict || '');

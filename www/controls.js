@@ -2,10 +2,10 @@
 // parameters, perturbation of the true plant, scenario. Each control writes the state in the
 // store and calls changed(); a change the other panels must show calls rebuild().
 import * as S from './state.js';
-import * as E from './engine.js';
+import * as W from './worker-client.js';
 import { $, el } from './dom.js';
 import * as Er from './errors.js';
-import { admissible, cheap } from './admissible.js';
+import { admissible, PENDING } from './admissible.js';
 import { store, changed, rebuild, familyInfo, methodInfo } from './store.js';
 
 const ids = { next: 0 };
@@ -235,6 +235,10 @@ function isIntegerChoice(p) {
 
 // The (method, plant) the method's sliders span the admissible intervals of.
 const shownRanges = { key: '', timer: 0 };
+// Values the method's panel was built with while admissible() was still being computed (the
+// declared ranges and defaults standing in): { key: JSON of [method, plant], values: { name: v } }.
+// When the intervals arrive, a value still equal to its stand-in gives way to the suggestion.
+let provisional = null;
 
 /** The plant changed: the method's sliders span the intervals admissible for the new plant
  *  (values are kept; one now outside is marked beside its field). admissible() scans the rule
@@ -242,21 +246,65 @@ const shownRanges = { key: '', timer: 0 };
  *  drag; nothing is done when the method and plant are the ones the sliders were built for. */
 export function updateRanges() {
   clearTimeout(shownRanges.timer);
+  shownRanges.due = false;
+  if (JSON.stringify([store.state.method, store.state.plant]) === shownRanges.key) return;
+  shownRanges.due = true;
   shownRanges.timer = setTimeout(updateRangesNow, 250);
 }
 
+/** Whether a check of the sliders' intervals is scheduled (the plant has not settled yet). */
+export const rangesDue = () => !!shownRanges.due;
+
 function updateRangesNow() {
+  shownRanges.due = false;
   const { state } = store;
   const key = JSON.stringify([state.method, state.plant]);
-  if (key === shownRanges.key || !cheap(state.method)) return;
-  shownRanges.key = key;
+  if (key === shownRanges.key) return;
+  W.begin('ranges');
   const adm = admissible(state.method, state.plant);
+  if (adm === PENDING) return; // rangesArrived() comes back here
+  shownRanges.key = key;
   if (!adm) return;
   for (const [n, a] of Object.entries(adm)) {
     const row = document.querySelector('#method-params [data-key="mp-' + n + '"]');
     if (row && row.setRange) row.setRange(a);
   }
 }
+
+/** Whether the worker has answered the λ-for-Ms-1.6 tune (a refusal is an answer too). */
+function standInArrived(input) {
+  try { return W.need('standin', 'tune', input) !== PENDING; } catch { return true; }
+}
+
+let afterMethod = () => {};
+/** `fn()` after the method's panel was built again on an answer of the worker (embed choices). */
+export function onMethodRebuilt(fn) { afterMethod = fn; }
+
+/** An answer of the slow worker arrived (admissible, or the λ for Ms = 1.6): a panel built with
+ *  stand-ins is built again with it; otherwise the sliders take the plant's intervals. */
+export function rangesArrived() {
+  const { state } = store;
+  const p = provisional;
+  if (p && p.key === JSON.stringify([state.method, state.plant])) {
+    const admReady = admissible(state.method, state.plant) !== PENDING;
+    if (!admReady && !(p.tunePending && standInArrived(p.tuneInput))) return;
+    provisional = null;
+    store.hold = false;
+    // with the intervals, every stand-in gives way; with the λ for Ms = 1.6 only, λ's midpoint
+    for (const [n, v] of Object.entries(p.values)) if ((admReady || n === 'lambda') && state.params[n] === v) delete state.params[n];
+    const focused = document.activeElement && document.activeElement.id;
+    buildMethod();
+    afterMethod();
+    // a control of the panel that had the focus has it again (it was built anew)
+    if (focused && document.activeElement !== $(focused) && $(focused)) $(focused).focus();
+    changed();
+    return;
+  }
+  updateRangesNow();
+}
+
+/** Whether the method panel still waits for the worker (admissible or the λ for Ms = 1.6). */
+export const rangesPending = () => provisional !== null && provisional.key === JSON.stringify([store.state.method, store.state.plant]);
 
 function applicableMethods() {
   // A num/den plant is family "custom" (methods that accept any plant list it).
@@ -298,8 +346,14 @@ export function buildMethod() {
   tr.hidden = !hasTarget;
   if (!info) return;
   // the admissible interval and suggested value of each continuous parameter for this plant
-  const adm = admissible(info.id, state.plant);
-  shownRanges.key = JSON.stringify([info.id, state.plant]);
+  const key = JSON.stringify([info.id, state.plant]);
+  if (!provisional || provisional.key !== key) W.begin('ranges');
+  let adm = admissible(info.id, state.plant);
+  const stand = {}; // values chosen here while the worker computes (see `provisional`)
+  if (adm === PENDING) adm = null;
+  else shownRanges.key = key;
+  const waiting = () => admissible(info.id, state.plant) === PENDING;
+  let tuneInput = null; // the λ-for-Ms-1.6 tune the panel waits for
   // λ without a default: start from the λ that gives Ms = 1.6 (solved once), then let the
   // user move λ directly (re-solving on every frame would be slow).
   const lam = info.params.find((p) => p.name === 'lambda');
@@ -309,9 +363,16 @@ export function buildMethod() {
       for (const p of info.params) if (typeof p.default === 'number' || typeof p.default === 'string') fixed[p.name] = p.default;
       delete fixed.lambda;
       delete fixed.target_ms;
-      const t = E.call('tune', { method: info.id, plant: state.plant, params: { ...fixed, ...state.params, target_ms: 1.6 } });
-      const l = t.details && t.details.lambda;
-      if (typeof l === 'number' && Number.isFinite(l)) state.params.lambda = Number(l.toPrecision(4));
+      // (on the fast worker: a tune; the page renders nothing until it is there)
+      const input = { method: info.id, plant: state.plant, params: { ...fixed, ...state.params, target_ms: 1.6 } };
+      const t = W.need('standin', 'tune', input);
+      if (t === PENDING) { stand.lambda = true; tuneInput = input; } // the slider's midpoint below until it arrives
+      const l = t !== PENDING && t.details && t.details.lambda;
+      if (typeof l === 'number' && Number.isFinite(l)) {
+        // while the intervals are being computed, a stand-in for their suggestion
+        if (waiting()) stand.lambda = state.params.lambda = l;
+        else state.params.lambda = Number(l.toPrecision(4));
+      }
     } catch {
       // fall back to the slider's midpoint below
     }
@@ -369,7 +430,10 @@ export function buildMethod() {
       // slider then shows the value the rule reports.
       const autoable = (p.default === null || p.default === undefined) && !p.required;
       const auto = autoable && typeof v !== 'number';
-      if (typeof v !== 'number') v = a && a.suggested !== null && Er.inRange(a.suggested, a) ? a.suggested : typeof p.default === 'number' ? p.default : fallback();
+      if (typeof v !== 'number') {
+        v = a && a.suggested !== null && Er.inRange(a.suggested, a) ? a.suggested : typeof p.default === 'number' ? p.default : fallback();
+        if (!a && !auto && (waiting() || stand[p.name])) stand[p.name] = v;
+      }
       if (!auto && (p.name !== 'lambda' || state.target === null)) state.params[p.name] = v;
       const row = slider({
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, min, max, value: v,
@@ -392,6 +456,16 @@ export function buildMethod() {
       box.append(row);
     }
   }
+  recordStandIns(info, stand, tuneInput);
+}
+
+function recordStandIns(info, stand, tuneInput) {
+  const values = {};
+  for (const [n, v] of Object.entries(stand)) if (typeof v === 'number' && store.state.params[n] === v) values[n] = v;
+  const key = JSON.stringify([info.id, store.state.plant]);
+  provisional = Object.keys(values).length || tuneInput || admissible(info.id, store.state.plant) === PENDING ? { key, values, tunePending: !!tuneInput, tuneInput } : null;
+  // a λ standing in at the slider's midpoint is no design to show: the render waits for the tune
+  store.hold = !!tuneInput;
 }
 
 export function buildPert() {

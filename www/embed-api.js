@@ -14,7 +14,7 @@
 import * as S from './state.js';
 import { store, rebuild } from './store.js';
 
-const api = { origin: '', refused: 0, received: 0, lastKey: '', fromHost: false };
+const api = { origin: '', refused: 0, received: 0, lastKey: '', fromHost: false, whenCurrent: () => Promise.resolve() };
 
 const plain = (x) => JSON.parse(JSON.stringify(x === undefined ? null : x));
 
@@ -48,7 +48,8 @@ function onMessage(ev) {
   const id = typeof d.id === 'string' || typeof d.id === 'number' ? d.id : null;
   api.received++;
   if (d.type === 'pidlab:get') {
-    post({ type: 'pidlab:design', id, ...snapshot() });
+    // the reply carries the design of the current state: once the worker's answers are shown
+    api.whenCurrent().then(() => post({ type: 'pidlab:design', id, ...snapshot() }));
   } else if (d.type === 'pidlab:set') {
     if (!d.state || typeof d.state !== 'object' || Array.isArray(d.state)) {
       post({ type: 'pidlab:error', id, message: 'state: must be an object' });
@@ -65,9 +66,11 @@ function onMessage(ev) {
   }
 }
 
-/** Starts the API for `origin` ('' leaves it off). */
-export function start(origin) {
+/** Starts the API for `origin` ('' leaves it off). `whenCurrent()`: a promise that resolves
+ *  once the page shows its current state (the computation worker's answers are asynchronous). */
+export function start(origin, whenCurrent) {
   api.origin = origin || '';
+  if (whenCurrent) api.whenCurrent = whenCurrent;
   if (!api.origin) return;
   window.addEventListener('message', onMessage);
   api.lastKey = JSON.stringify(store.state);

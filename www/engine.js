@@ -1,9 +1,7 @@
-// The computation module: loads the wasm, calls it, and recovers from a trap.
-//
-// tune/simulate/analyze are pure (the same input gives the same result), so run() reuses the
-// result (or the error) of an input it has seen in the last few calls: a control that leaves an
-// input alone does not recompute it (a perturbation slider keeps the nominal design, its
-// simulation and its analysis).
+// The page thread's instance of the module: loads (compiles) the wasm once, calls the functions
+// that must run here or are always quick (plot: it draws on the page's canvases; methods,
+// presets, export_code), and recovers from a trap. Every call that can take longer than a frame
+// runs in a computation worker instead (worker-client.js), on the same compiled module.
 //
 // A trap (a WebAssembly.RuntimeError: a Rust panic is `unreachable`; the panic hook has logged
 // its file:line to the console) leaves the instance unusable. The call that trapped throws an
@@ -59,14 +57,20 @@ function instantiate(glue) {
   eng.generation++;
 }
 
+/** The bytes of a base64 text (Uint8Array.fromBase64 where the browser has it). */
+function decodeBase64(b64) {
+  if (typeof Uint8Array.fromBase64 === 'function') return Uint8Array.fromBase64(b64);
+  const bin = atob(b64);
+  const bytes = new Uint8Array(bin.length);
+  for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+  return bytes;
+}
+
 /** Loads the module: from the base64 text the single-file page carries, else from pkg/. */
 export async function load() {
   const b64 = globalThis.PIDLAB_WASM_B64;
   if (typeof b64 === 'string') {
-    const bin = atob(b64);
-    const bytes = new Uint8Array(bin.length);
-    for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
-    eng.module = new WebAssembly.Module(bytes);
+    eng.module = await WebAssembly.compile(decodeBase64(b64));
   } else {
     const res = await fetch(new URL('./pkg/pidlab_bg.wasm', import.meta.url));
     if (!res.ok) throw new Error('cannot fetch pkg/pidlab_bg.wasm: ' + res.status + ' ' + res.statusText);
@@ -116,33 +120,13 @@ export function call(fn, input) {
   }
 }
 
-// The last MEMO_SIZE calls per function, keyed by the input's JSON text.
-const MEMO_SIZE = 4;
-const memo = { tune: [], simulate: [], analyze: [] };
-
-/** Calls a pure function of the module (tune, simulate, analyze), memoized by input. */
-export function run(fn, input) {
-  const key = JSON.stringify(input);
-  const list = memo[fn];
-  const i = list.findIndex((e) => e.key === key);
-  let e;
-  if (i >= 0) {
-    e = list[i];
-    list.splice(i, 1);
-  } else {
-    e = { key };
-    try {
-      e.value = call(fn, input);
-    } catch (err) {
-      if (err instanceof EngineCrash) throw err; // not an answer for this input
-      e.error = err;
-    }
-  }
-  list.unshift(e);
-  if (list.length > MEMO_SIZE) list.pop();
-  if ('error' in e) throw e.error;
-  return e.value;
+/** A crash of a computation worker (worker-client.js): shown like one of this instance. */
+export function reportCrash(crash) {
+  eng.crashes.push(crash);
 }
+
+/** The compiled module (the computation workers instantiate it too). */
+export const compiled = () => eng.module;
 
 /** The crashes since the last call (each once): the page shows them. */
 export function crashes() {

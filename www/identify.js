@@ -4,6 +4,7 @@
 // "Use this model" hands the fitted plant to the page. The data never leave the page (the file
 // is read with FileReader; no request is made).
 import * as E from './engine.js';
+import * as W from './worker-client.js';
 import { $, el, setText, errText } from './dom.js';
 
 /**
@@ -113,8 +114,8 @@ function showResult(r) {
   }
 }
 
-/** Reads the text area, fits, shows and draws. */
-export function fit() {
+/** Reads the text area, fits (in the slow computation worker), shows and draws. */
+export async function fit() {
   state.result = null;
   $('identify-use').disabled = true;
   $('identify-result').replaceChildren();
@@ -127,13 +128,21 @@ export function fit() {
   }
   const family = $('identify-family').value;
   const t0 = performance.now();
+  const gen = W.begin('identify');
+  const box = $('identify-box');
+  box.setAttribute('aria-busy', 'true');
+  setText($('identify-status'), 'Fitting…');
   try {
-    state.result = E.call('identify', { ...state.data, family });
+    state.result = await W.ask('identify', 'identify', { ...state.data, family });
   } catch (e) {
+    if (W.current('identify') !== gen) return null; // a newer fit replaced this one
+    box.setAttribute('aria-busy', 'false');
     setText($('identify-status'), 'The fit failed: ' + errText(e));
     draw();
     return null;
   }
+  if (W.current('identify') !== gen) return null;
+  box.setAttribute('aria-busy', 'false');
   setText($('identify-status'), `${state.data.t.length} samples fitted in ${Math.round(performance.now() - t0)} ms.`);
   showResult(state.result);
   $('identify-use').disabled = false;

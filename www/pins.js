@@ -2,7 +2,7 @@
 // under the current scenario (a cache of those runs lives here), their list, and the colours
 // of every design on the plots and in the metrics table.
 import * as S from './state.js';
-import * as E from './engine.js';
+import * as W from './worker-client.js';
 import { $, el } from './dom.js';
 import { store, changed, methodInfo, methodParams } from './store.js';
 import { simInput } from './realloop.js';
@@ -27,23 +27,26 @@ export function pinLabel() {
   return base + (ps ? ' (' + ps + ')' : '');
 }
 
+/** A pin's run from the worker's answers (memoized by input); a part still being computed is
+ *  missing (null) and the page renders again when it arrives. */
 function simulatePin(p, i) {
   const out = { label: p.label, color: COLORS.pins[i % COLORS.pins.length], sim: null, L: null, ms: null };
-  try { out.sim = E.call('simulate', { plant: p.plant, controller: p.controller, scenario: store.state.scenario, ...simInput(p) }); } catch { out.sim = null; }
+  const get = (fn, input) => { const v = W.need('render', fn, input); return v === W.PENDING ? null : v; };
+  try { out.sim = get('simulate', { plant: p.plant, controller: p.controller, scenario: store.state.scenario, ...simInput(p) }); } catch { out.sim = null; }
   try {
-    const an = E.call('analyze', { plant: p.plant, controller: p.controller });
-    out.ms = an.ms;
-    out.L = S.loopCurve(an, p.plant, p.controller);
+    const an = get('analyze', { plant: p.plant, controller: p.controller });
+    if (an) {
+      out.ms = an.ms;
+      out.L = S.loopCurve(an, p.plant, p.controller);
+    }
   } catch { out.L = null; }
   return out;
 }
 
-/** Pinned designs are compared under the current scenario: re-simulated when it changes. */
+/** The pins' runs under the current scenario (asked again on each render: the answers are memoized). */
 export function ensurePins() {
-  const key = JSON.stringify(store.state.scenario);
-  if (key === cache.scenarioKey) return;
   cache.runs = store.state.pins.map(simulatePin);
-  cache.scenarioKey = key;
+  cache.scenarioKey = JSON.stringify(store.state.scenario);
 }
 
 /** Runs the pins again and rebuilds their list (after a pin was added or removed). */

@@ -238,6 +238,8 @@ export function familyTf(p) {
     case 'ifoptd': return { num: [k], den: [tau, 1, 0], delay: theta };
     case 'ifoptd_zero': return { num: [k * p.z, k], den: [tau, 1, 0], delay: theta };
     case 'ifoptd_zero_unstable': return { num: [k * p.z, k], den: [tau, -1, 0], delay: theta };
+    // (τ₁s + 1)(τ₂s + 1): without it, "Custom transfer function" from sopdt threw
+    case 'sopdt': return { num: [k], den: [p.tau1 * p.tau2, p.tau1 + p.tau2, 1], delay: theta };
     default: return null;
   }
 }

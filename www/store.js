@@ -16,10 +16,12 @@ export const store = {
   presets: [],
   /** The results of the last render (compute.js). */
   last: null,
+  /** The method's panel waits for the worker's λ (controls.js): nothing to render yet. */
+  hold: false,
 };
 
 const hooks = { render: () => {}, rebuild: () => {} };
-const frame = { pending: false, rendered: false };
+const frame = { pending: false, rendered: false, input: false };
 
 /** Connects changed() and rebuild() to the page (app.js). */
 export function connect({ render, rebuild }) {
@@ -34,21 +36,38 @@ export function connect({ render, rebuild }) {
  * before the next frame are coalesced into one render at the start of that frame. A pointer
  * drag delivers its moves at the start of a frame, so each renders at once, in that frame.
  * `deferred`: always wait for the frame (a ResizeObserver callback runs inside a frame's layout).
+ * `arrival`: the render is for an answer of the computation worker, not for a new input.
  */
-export function changed(deferred = false) {
+export function changed(deferred = false, arrival = false) {
+  // a render for an input (not only for an answer of the worker) stays one when coalesced
+  if (!arrival) frame.input = true;
+  // an answer renders at once, even with a render scheduled for the next frame (it renders the
+  // current state: the scheduled one then finds everything drawn): a render waiting for answers
+  // costs only memo look-ups, and the one that completes the results draws them in the frame
+  // they arrived in
+  if (arrival && !deferred) { run(); return; }
   if (frame.pending) return;
   if (!deferred && !frame.rendered) {
     frame.rendered = true;
     requestAnimationFrame(() => { frame.rendered = false; });
-    hooks.render();
+    run();
     return;
   }
   frame.pending = true;
   requestAnimationFrame(() => {
     frame.pending = false;
-    hooks.render();
+    run();
   });
 }
+
+function run() {
+  const arrival = !frame.input;
+  frame.input = false;
+  hooks.render(arrival);
+}
+
+/** Whether a render is scheduled for the next frame. */
+export const isPending = () => frame.pending;
 
 /** The state changed in a way the controls show (plant, method, preset): build them again. */
 export function rebuild() {

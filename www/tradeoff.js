@@ -3,20 +3,23 @@
 // a dot that moves with the slider, the pins are dots of their own colours, and the papers'
 // recommended band 1.4 ≤ Ms ≤ 2.0 is hatched.
 //
-// The sweep never blocks the page: the values (sweep_grid) are computed a few per slice, each
-// slice at most SLICE_MS long, the next one after the browser has had a turn (setTimeout 0);
-// a new input (another plant, rule, scenario or base parameter) cancels the sweep in progress
-// and starts the new one. The swept parameter's own slider does not restart it: it moves the
+// The sweep never blocks the page: sweep_grid and then sweep() on CHUNK values at a time run in
+// the slow computation worker (worker-client.js, consumer "sweep"), one request at a time, the
+// panel redrawn after each; a new input (another plant, rule, scenario or base parameter) starts a
+// new pass: the old sweep's queued request is dropped and its running one cancelled. The swept parameter's own slider does not restart it: it moves the
 // dot along the curve.
 import * as S from './state.js';
-import * as E from './engine.js';
+import * as W from './worker-client.js';
 import { $, setText, errText } from './dom.js';
 import { store, methodInfo, methodParams } from './store.js';
 import { drawSpec } from './drawspec.js';
 import * as P from './pins.js';
 
 export const POINTS = 40;
-const SLICE_MS = 12;
+// values per sweep() request: each call has a fixed cost (the rule's plant-aware interval, about
+// 0.6 s for Shamsuzzoha & Lee on ifoptd in Node here) that a batch pays once; the panel is
+// redrawn after each batch, and a new input cancels the batch in progress (worker-client.js)
+const CHUNK = 8;
 const MS_MAX = 6; // points beyond this Ms are off the chart (unusable designs)
 const BAND = [1.4, 2.0];
 const C = { servo: '#0072B2', load: '#D55E00', cur: '#000000' };
@@ -41,45 +44,47 @@ function sweepInput() {
   return { method: state.method, plant: state.plant, params, scenario: state.scenario };
 }
 
-function start(inp) {
+async function start(inp) {
   const j = { method: inp.method, baseKey: '', refined: false, param: null, values: [], points: [], done: false, error: null, t0: performance.now(), ms: null };
+  j.startKey = JSON.stringify(inp);
   job = j;
+  W.begin('sweep');
+  const live = () => job === j; // not replaced by a newer input
   try {
-    const g = E.call('sweep_grid', { method: inp.method, plant: inp.plant, points: POINTS });
+    const g = await W.ask('sweep', 'sweep_grid', { method: inp.method, plant: inp.plant, points: POINTS });
+    if (!live()) return;
     j.param = g.param;
     j.values = g.values;
     delete inp.params[g.param];
     j.baseKey = baseKey(inp, g.param);
   } catch (e) {
+    if (!live()) return;
     j.error = errText(e);
     j.done = true;
+    onProgress();
     return;
   }
-  const slice = () => {
-    if (job !== j) return; // cancelled by a newer input
-    const t = performance.now();
-    try {
-      while (j.points.length < j.values.length && performance.now() - t < SLICE_MS) {
-        const v = j.values[j.points.length];
-        const out = E.call('sweep', { ...inp, param: j.param, values: [v] });
-        j.points.push(out.points[0]);
+  try {
+    while (j.points.length < j.values.length) {
+      const vs = j.values.slice(j.points.length, j.points.length + CHUNK);
+      const out = await W.ask('sweep', 'sweep', { ...inp, param: j.param, values: vs });
+      if (!live()) return;
+      j.points.push(...out.points.slice(0, vs.length));
+      if (j.points.length >= j.values.length && !j.refined) {
+        // second pass: where neighbouring designs' Ms differ by more than MS_GAP, values between
+        // them, so the curve is drawn from designs, not from straight lines between far ones
+        j.refined = true;
+        j.values.push(...refinement(j));
       }
-    } catch (e) {
-      j.error = errText(e);
-      j.done = true;
+      onProgress();
     }
-    if (j.points.length >= j.values.length && !j.error && !j.refined) {
-      // second pass: where neighbouring designs' Ms differ by more than MS_GAP, values between
-      // them, so the curve is drawn from designs, not from straight lines between far ones
-      j.refined = true;
-      j.values.push(...refinement(j));
-    }
-    if (j.points.length >= j.values.length) j.done = true;
-    if (j.done) j.ms = performance.now() - j.t0;
-    onProgress();
-    if (!j.done) setTimeout(slice, 0);
-  };
-  setTimeout(slice, 0);
+  } catch (e) {
+    if (!live()) return;
+    j.error = errText(e);
+  }
+  j.done = true;
+  j.ms = performance.now() - j.t0;
+  onProgress();
 }
 
 /** The sweep input without the swept parameter: what the curve depends on. */
@@ -119,8 +124,8 @@ function refinement(j) {
 /** Starts a sweep of the current state unless the one in progress (or done) is for it. */
 export function updateSweep() {
   const inp = sweepInput();
-  if (!inp) { job = null; return; }
-  if (job && job.method === inp.method && baseKey(inp, job.param) === job.baseKey) return;
+  if (!inp) { job = null; W.begin('sweep'); return; }
+  if (job && job.method === inp.method && (job.param === null ? job.startKey === JSON.stringify(inp) : baseKey(inp, job.param) === job.baseKey)) return;
   start(inp);
 }
 

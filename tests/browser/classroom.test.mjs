@@ -104,15 +104,17 @@ test('the trade-off sweep equals the module\'s sweep and draws the curves with t
 test('a new input cancels the sweep in progress; the λ slider alone does not restart it', async () => {
   const { page } = await open(U.encodeHash(ifoptd(0.6)));
   await sweepDone(page);
-  // two plant changes in one task: the first starts a sweep (its slices wait for the browser's
-  // next turn), the second (rendered at the next frame) must cancel it and start its own
-  const mid = await page.evaluate(() => {
-    const box = document.getElementById('fp-theta-n');
-    for (const v of [0.8, 0.9]) { box.value = String(v); box.dispatchEvent(new Event('input', { bubbles: true })); }
-    return window.__pidlab.sweep();
-  });
-  assert.ok(!mid.done && mid.points.length === 0, 'the sweep runs in slices, after the render');
+  // a plant change starts a sweep in the slow worker (after the render's results are shown);
+  // a second change while it runs supersedes it: its queued request is dropped, its running one
+  // cancelled, and the new plant's sweep starts
+  await H.setInput(page, '#fp-theta-n', 0.8);
+  const mid = await page.evaluate(() => window.__pidlab.sweep());
+  assert.ok(!mid.done, 'the sweep runs in the worker, after the render');
+  const s0 = await page.evaluate(() => window.__pidlab.worker());
+  await H.setInput(page, '#fp-theta-n', 0.9);
   const sw = await sweepDone(page);
+  const s1 = await page.evaluate(() => window.__pidlab.worker());
+  assert.ok(s1.dropped + s1.cancelled > s0.dropped + s0.cancelled, 'the θ = 0.8 sweep was superseded');
   const st = await page.evaluate(() => window.__pidlab.state());
   assert.equal(st.plant.theta, 0.9);
   console.log('# sweep of ' + sw.values.length + ' values in the page: ' + sw.ms.toFixed(0) + ' ms');

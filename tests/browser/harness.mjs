@@ -70,9 +70,16 @@ export async function ready(page) {
   await frames(page);
 }
 
-/** Waits until the app's pending animation-frame render has run. */
+/** Waits until the page shows its latest input: the pending animation-frame render has run and
+ *  the computation worker's answers for it have been rendered (window.__pidlab.settled; the
+ *  trade-off sweep and the slow worker's other work are not waited for), then two frames. */
 export async function frames(page) {
-  await page.evaluate(() => new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(() => res()))));
+  await page.evaluate(() => (window.__pidlab && window.__pidlab.settled ? window.__pidlab.settled() : new Promise((res) => requestAnimationFrame(() => requestAnimationFrame(() => res())))));
+}
+
+/** frames(), and also until the slow worker is done (admissible scans, the trade-off sweep). */
+export async function idle(page) {
+  await page.evaluate(() => window.__pidlab.settled(true));
 }
 
 /** Sets an input's value and fires the event the app listens to. */

@@ -79,6 +79,8 @@ test('identify panel: paste, fit, draw, use this model', async () => {
   assert.match(await page.textContent('#identify-result'), /Ranking by AICc/);
   await page.fill('#identify-csv', 't,u,y\n0,0,1\n1,1,2\n');
   await page.click('#identify-fit');
+  // (the fit runs in the slow computation worker: its answer comes back asynchronously)
+  await page.waitForFunction(() => /^The fit failed/.test(document.getElementById('identify-status').textContent));
   assert.match(await page.textContent('#identify-status'), /^The fit failed: t: at least 10 samples/);
   assert.equal(await page.isDisabled('#identify-use'), true);
   assert.deepEqual(log.errors, []);

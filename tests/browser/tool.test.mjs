@@ -80,7 +80,8 @@ test('sliders span the interval admissible for the plant; Home and End land on a
   if (adm) {
     // the plant changes (dead time 0.1 → 0.3): the slider follows the new plant's interval
     await setInput(page, '#fp-theta-n', 0.3);
-    await page.waitForTimeout(400); // the intervals follow once the plant has settled (250 ms)
+    // the intervals follow once the plant has settled (250 ms), from the slow worker
+    await H.idle(page);
     const a2 = await page.evaluate(() => window.__pidlab.wasm.admissible({ method: 'praveen_kumar', plant: window.__pidlab.state().plant }).params.lambda);
     const s2 = await sliderOf(page, 'mp-lambda');
     assert.deepEqual([s2.lo, s2.hi], [a2.min, a2.max]);

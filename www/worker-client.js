@@ -1,0 +1,317 @@
+// The page's side of the computation workers (www/worker.js): every module call that can take
+// longer than a frame (tune, simulate, analyze, admissible, freqresp, sweep, sweep_grid,
+// identify) runs in a worker, so the page's thread only posts requests and keeps painting.
+//
+// Two workers ("lanes"), each with its own instance of the one compiled module:
+//   fast: what the current design shows (consumers "render": tune, simulate, analyze, freqresp,
+//         the pins; "presets"; "standin": the λ for Ms = 1.6 a method's panel starts from while
+//         its intervals are computed);
+//   slow: what may take seconds and must not hold the design up (consumers "ranges":
+//         admissible; "sweep": the trade-off curves; "identify").
+//
+// Consumers and generations. A consumer starts a pass with begin(consumer) (a new generation)
+// and asks for what the pass needs: need() returns the answer when it is known (memoized by
+// input, LRU) or PENDING after queueing the request; ask() returns a promise. A queued request
+// is computed only while the latest generation of its consumer still wants it: a request
+// superseded while queued is dropped, never computed. A request in flight that no pass wants
+// any more is cancelled after CANCEL_MS by ending its worker and starting a fresh one (the
+// compiled module is kept here, so a restart is an instantiation only). Each answer that a
+// need() was waiting for calls the consumer's arrival hook (the page renders again; every
+// call then hits the memo).
+//
+// A trap (a wasm RuntimeError, e.g. a Rust panic) kills that worker's instance: the call's
+// answer is an EngineCrash (engine.js, shown as a banner), the worker is replaced, and the
+// input that trapped is not run again by itself (the crash stays in the memo until the next
+// user change, forgetCrashes()).
+import { EngineCrash, reportCrash } from './engine.js';
+
+/** The answer of need() while the request is queued or running. */
+export const PENDING = Symbol('pending');
+
+/** The rejection of ask() for a request superseded before it ran. */
+export class Superseded extends Error {
+  constructor(fn) { super(fn + '(): superseded by a newer request'); this.name = 'Superseded'; }
+}
+
+const LANE_OF = { render: 'fast', presets: 'fast', standin: 'fast', ranges: 'slow', identify: 'slow', sweep: 'slow' };
+// on the slow lane, who goes first when several are queued
+const PRIORITY = { standin: 0, render: 0, presets: 0, identify: 1, ranges: 2, sweep: 3 };
+// (a restart costs an instantiation, 20–120 ms here: a call shorter than this is left to finish)
+const CANCEL_MS = 250;
+const MEMO_SIZE = 64;
+
+const ctl = {
+  module: null,
+  makeWorker: null,
+  lanes: {},
+  gens: {}, // consumer -> current generation
+  arrival: {}, // consumer -> hook
+  memo: new Map(), // key -> { value } | { error } | { crash }
+  traps: 0,
+  nextId: 1,
+  stats: { calls: {}, cancelled: 0, dropped: 0 },
+  trace: null, // an array while tracing (traceOn()): [time, event, lane, fn]
+};
+const note = (ev, lane, fn) => { if (ctl.trace) ctl.trace.push([performance.now(), ev, lane, fn]); };
+
+/** Starts recording what the workers do (the benchmark's and the tests' diagnostics); returns
+ *  the record so far and stops when `on` is false. */
+export function trace(on = true) {
+  const t = ctl.trace;
+  ctl.trace = on ? [] : null;
+  return t;
+}
+
+const keyOf = (fn, input) => fn + '\u0000' + JSON.stringify(input);
+
+function remember(key, entry) {
+  ctl.memo.delete(key);
+  ctl.memo.set(key, entry);
+  if (ctl.memo.size > MEMO_SIZE) ctl.memo.delete(ctl.memo.keys().next().value);
+}
+
+/** A worker served as a module next to this file, or the one scripts/inline.mjs inlined. */
+function defaultMaker() {
+  const src = globalThis.PIDLAB_WORKER_SRC;
+  if (typeof src === 'string') {
+    const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
+    return () => new Worker(url, { name: 'pidlab' });
+  }
+  const url = new URL('./worker.js', import.meta.url);
+  return () => new Worker(url, { type: 'module', name: 'pidlab' });
+}
+
+class Lane {
+  constructor(name) {
+    this.name = name;
+    this.queue = []; // requests not yet posted
+    this.inflight = null;
+    this.instances = 0;
+    this.cancelTimer = 0;
+    this.spawn();
+  }
+
+  spawn() {
+    this.instances++;
+    this.ready = false;
+    const w = ctl.makeWorker();
+    this.worker = w;
+    w.onmessage = (ev) => this.onMessage(w, ev.data);
+    w.onerror = (ev) => {
+      // a worker that cannot even start (its script failed): said once in the console
+      console.error('pidlab: the ' + this.name + ' computation worker failed: ' + (ev.message || ev));
+    };
+    if (ctl.module) w.postMessage({ init: ctl.module });
+  }
+
+  /** Ends the worker (its call, if any, is abandoned) and starts a fresh one. */
+  restart() {
+    this.worker.onmessage = null;
+    this.worker.terminate();
+    clearTimeout(this.cancelTimer);
+    this.inflight = null;
+    this.spawn();
+  }
+
+  onMessage(w, m) {
+    if (w !== this.worker) return;
+    if ('ready' in m) {
+      this.ready = m.ready;
+      if (this.instances === 1) performance.mark('pidlab-' + this.name + '-worker-ready');
+      if (!m.ready) console.error('pidlab: the ' + this.name + ' worker cannot instantiate the module: ' + m.error);
+      this.pump();
+      return;
+    }
+    const req = this.inflight;
+    if (!req || req.id !== m.id) return;
+    this.inflight = null;
+    clearTimeout(this.cancelTimer);
+    const s = (ctl.stats.calls[req.fn] = ctl.stats.calls[req.fn] || { n: 0, ms: 0, last: 0 });
+    s.n++;
+    if (m.ms !== undefined) { s.ms += m.ms; s.last = m.ms; }
+    note('answer ' + (m.ms === undefined ? '' : m.ms.toFixed(1)), this.name, req.fn);
+    let entry;
+    if (m.trap) {
+      console.error('pidlab: ' + req.fn + '() trapped (' + m.error + '); restarting the computation worker');
+      ctl.traps++;
+      this.restart();
+      const crash = new EngineCrash(req.fn, m.error, true);
+      reportCrash(crash);
+      entry = { crash };
+    } else if (m.ok) {
+      entry = { value: m.value };
+    } else {
+      const e = new Error(m.error.message);
+      e.name = m.error.name;
+      entry = { error: e };
+    }
+    remember(req.key, entry);
+    this.settle(req, entry);
+    this.pump();
+  }
+
+  settle(req, entry) {
+    for (const w of req.waiters) {
+      if ('value' in entry) w.resolve(entry.value);
+      else w.reject(entry.error || entry.crash);
+    }
+    const hooks = new Set(req.needers);
+    for (const c of hooks) if (ctl.arrival[c]) ctl.arrival[c]();
+  }
+
+  wanted(req) {
+    return req.consumers.some((c) => req.gens[c] === (ctl.gens[c] || 0));
+  }
+
+  /** Posts the next request some pass still wants; drops those none wants. */
+  pump() {
+    if (this.inflight || !this.ready || this.held) return;
+    this.queue.sort((a, b) => a.prio - b.prio || a.seq - b.seq);
+    while (this.queue.length) {
+      const req = this.queue.shift();
+      if (!this.wanted(req)) {
+        ctl.stats.dropped++;
+        note('drop', this.name, req.fn);
+        for (const w of req.waiters) w.reject(new Superseded(req.fn));
+        continue;
+      }
+      this.inflight = req;
+      req.t0 = performance.now();
+      this.worker.postMessage({ id: req.id, fn: req.fn, input: req.input });
+      note('post', this.name, req.fn);
+      return;
+    }
+  }
+
+  /** The request in flight: cancelled (worker ended) when no pass wants it after CANCEL_MS. */
+  reconsider() {
+    const req = this.inflight;
+    if (!req || this.wanted(req)) return;
+    const left = CANCEL_MS - (performance.now() - req.t0);
+    clearTimeout(this.cancelTimer);
+    if (left > 0) { this.cancelTimer = setTimeout(() => this.reconsider(), left + 1); return; }
+    ctl.stats.cancelled++;
+    note('cancel', this.name, req.fn);
+    for (const w of req.waiters) w.reject(new Superseded(req.fn));
+    this.restart();
+  }
+
+  find(key) {
+    if (this.inflight && this.inflight.key === key) return this.inflight;
+    return this.queue.find((r) => r.key === key) || null;
+  }
+}
+
+/** Starts the workers (before the module is compiled: their threads and scripts start meanwhile). */
+export function spawn(makeWorker = defaultMaker()) {
+  if (ctl.makeWorker) return;
+  ctl.makeWorker = makeWorker;
+  for (const n of ['fast', 'slow']) ctl.lanes[n] = new Lane(n);
+}
+
+/** Gives the workers the compiled module (engine.js load()); they instantiate it. */
+export function start(module) {
+  spawn();
+  ctl.module = module;
+  for (const lane of Object.values(ctl.lanes)) lane.worker.postMessage({ init: module });
+}
+
+/** { plant, method, params, scenario } of the start-up design: the slow worker computes it once
+ *  (before its held queue) while the fast one answers the page; the fast worker's first calls
+ *  then find more of their code compiled. */
+export function warm(design) {
+  if (ctl.lanes.slow) ctl.lanes.slow.worker.postMessage({ warm: design });
+}
+
+/** Holds the slow worker's queue (true) until released (false): at start-up the first plots
+ *  come first (2 cores: a scan of admissible() would compete with them for the CPU). */
+export function holdSlow(held) {
+  const lane = ctl.lanes.slow;
+  if (!lane) return;
+  lane.held = held;
+  if (!held) lane.pump();
+}
+
+/** A new pass of `consumer`: what the previous passes asked for and this one does not is dropped. */
+export function begin(consumer) {
+  ctl.gens[consumer] = (ctl.gens[consumer] || 0) + 1;
+  note('begin', consumer, ctl.gens[consumer]);
+  const lane = ctl.lanes[LANE_OF[consumer]];
+  // the requests this pass re-asks for are marked again; give it a turn before cancelling
+  if (lane) queueMicrotask(() => lane.reconsider());
+  return ctl.gens[consumer];
+}
+
+/** The current generation of `consumer`. */
+export const current = (consumer) => ctl.gens[consumer] || 0;
+
+/** `fn()` when an answer a need() of `consumer` waited for has arrived. */
+export function onArrival(consumer, fn) {
+  ctl.arrival[consumer] = fn;
+}
+
+function enqueue(consumer, fn, input, key, waiter) {
+  const lane = ctl.lanes[LANE_OF[consumer]];
+  if (!lane) throw new EngineCrash(fn, 'no computation worker', false);
+  let req = lane.find(key);
+  if (!req) {
+    req = { id: ctl.nextId++, seq: ctl.nextId, key, fn, input, consumers: [], gens: {}, needers: [], waiters: [], prio: PRIORITY[consumer] ?? 5 };
+    lane.queue.push(req);
+  }
+  if (!req.consumers.includes(consumer)) req.consumers.push(consumer);
+  req.gens[consumer] = ctl.gens[consumer] || 0;
+  req.prio = Math.min(req.prio, PRIORITY[consumer] ?? 5);
+  if (waiter) req.waiters.push(waiter);
+  else if (!req.needers.includes(consumer)) req.needers.push(consumer);
+  lane.pump();
+}
+
+/**
+ * The answer of fn(input) for the current pass of `consumer`: the value when known; throws the
+ * module's error (or the EngineCrash of a trap); PENDING after queueing the request.
+ */
+export function need(consumer, fn, input) {
+  const key = keyOf(fn, input);
+  const e = ctl.memo.get(key);
+  if (e) {
+    remember(key, e);
+    if ('value' in e) return e.value;
+    throw e.error || e.crash;
+  }
+  enqueue(consumer, fn, input, key, null);
+  return PENDING;
+}
+
+/** fn(input) as a promise (memoized like need()); rejects with Superseded when a newer pass of
+ *  `consumer` began before it ran. */
+export function ask(consumer, fn, input) {
+  const key = keyOf(fn, input);
+  const e = ctl.memo.get(key);
+  if (e) return 'value' in e ? Promise.resolve(e.value) : Promise.reject(e.error || e.crash);
+  return new Promise((resolve, reject) => enqueue(consumer, fn, input, key, { resolve, reject }));
+}
+
+/** Whether `consumer`'s current pass still waits for an answer (need() or ask()). */
+export function busy(consumer) {
+  for (const lane of Object.values(ctl.lanes)) {
+    for (const r of [lane.inflight, ...lane.queue]) if (r && r.gens[consumer] === (ctl.gens[consumer] || 0) && (r.needers.includes(consumer) || r.waiters.length)) return true;
+  }
+  return false;
+}
+
+/** A user change: inputs that trapped may be tried again. */
+export function forgetCrashes() {
+  for (const [k, e] of ctl.memo) if (e.crash) ctl.memo.delete(k);
+}
+
+/** Instances made so far: 1 + the traps (a cancellation's restart is not counted). */
+export const generation = () => 1 + ctl.traps;
+
+/** Counters for the tests and the benchmark: calls per function (count, worker ms), cancellations, drops. */
+export const stats = () => structuredClone(ctl.stats);
+
+/** Test hook: the fast lane's next call traps (its worker's instance then counts as dead). */
+export function forceTrap() {
+  const lane = ctl.lanes.fast;
+  lane.worker.postMessage({ poison: true });
+}
