@@ -302,7 +302,7 @@ async function main() {
     ready: true,
   };
   // The browser tests' hooks, with #test=1 only: make the live instance trap like a dead one.
-  if (dec.test) window.__pidlabTest = { forceTrap: W.forceTrap, generation: W.generation, spareReady: () => true, forceTrapMain: E.forceTrap };
+  if (dec.test) window.__pidlabTest = { forceTrap: W.forceTrap, generation: W.generation, spareReady: () => true, forceTrapMain: E.forceTrap, holdSlow: (held) => W.holdSlow(held, 'test') };
   if (store.state.method && store.state.method !== '__literal') {
     const params = methodParams();
     if (!('lambda' in params) && !('target_ms' in params)) params.target_ms = 1.6;

@@ -223,13 +223,18 @@ export function warm(design) {
   if (ctl.lanes.slow) ctl.lanes.slow.worker.postMessage({ warm: design });
 }
 
-/** Holds the slow worker's queue (true) until released (false): at start-up the first plots
- *  come first (2 cores: a scan of admissible() would compete with them for the CPU). */
-export function holdSlow(held) {
+/** Holds the slow worker's queue (true) until released (false) by the same holder: at start-up
+ *  the first plots come first (2 cores: a scan of admissible() would compete with them for the
+ *  CPU); the tests hold it (holder "test") to make a race deterministic. Held while any holder
+ *  holds it. */
+export function holdSlow(held, holder = 'startup') {
   const lane = ctl.lanes.slow;
   if (!lane) return;
-  lane.held = held;
-  if (!held) lane.pump();
+  lane.holders = lane.holders || new Set();
+  if (held) lane.holders.add(holder);
+  else lane.holders.delete(holder);
+  lane.held = lane.holders.size > 0;
+  if (!lane.held) lane.pump();
 }
 
 /** A new pass of `consumer`: what the previous passes asked for and this one does not is dropped. */

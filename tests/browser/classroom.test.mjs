@@ -102,16 +102,21 @@ test('the trade-off sweep equals the module\'s sweep and draws the curves with t
 });
 
 test('a new input cancels the sweep in progress; the λ slider alone does not restart it', async () => {
-  const { page } = await open(U.encodeHash(ifoptd(0.6)));
+  // #test=1: the page's test hooks (here holdSlow, to make the race below deterministic)
+  const { page } = await open('#test=1&' + U.encodeHash(ifoptd(0.6)).slice(1));
   await sweepDone(page);
   // a plant change starts a sweep in the slow worker (after the render's results are shown);
-  // a second change while it runs supersedes it: its queued request is dropped, its running one
-  // cancelled, and the new plant's sweep starts
+  // a second change before it has run supersedes it: its queued request is dropped (a running
+  // one would be cancelled), and the new plant's sweep starts. The slow worker's queue is held
+  // between the two changes, so the θ = 0.8 sweep is certainly still queued when θ = 0.9
+  // arrives (on an idle machine it could otherwise finish first: nothing to supersede).
+  await page.evaluate(() => window.__pidlabTest.holdSlow(true));
   await H.setInput(page, '#fp-theta-n', 0.8);
   const mid = await page.evaluate(() => window.__pidlab.sweep());
   assert.ok(!mid.done, 'the sweep runs in the worker, after the render');
   const s0 = await page.evaluate(() => window.__pidlab.worker());
   await H.setInput(page, '#fp-theta-n', 0.9);
+  await page.evaluate(() => window.__pidlabTest.holdSlow(false));
   const sw = await sweepDone(page);
   const s1 = await page.evaluate(() => window.__pidlab.worker());
   assert.ok(s1.dropped + s1.cancelled > s0.dropped + s0.cancelled, 'the θ = 0.8 sweep was superseded');
