@@ -340,3 +340,28 @@ pub fn resolve_row(
         .collect();
     (vals, causes)
 }
+
+/// A figure's time series as CSV: a `t` column (2 decimals) and one column per `(header,
+/// samples)` (6 decimals; a column shorter than `t` leaves its cells empty).
+pub fn time_columns_csv(t: &[f64], cols: &[(String, Vec<f64>)]) -> String {
+    use std::fmt::Write as _;
+    let mut csv = String::from("t");
+    for (h, _) in cols {
+        csv.push(',');
+        csv.push_str(h);
+    }
+    csv.push('\n');
+    for (i, ti) in t.iter().enumerate() {
+        let _ = write!(csv, "{ti:.2}");
+        for (_, v) in cols {
+            match v.get(i) {
+                Some(x) => {
+                    let _ = write!(csv, ",{x:.6}");
+                }
+                None => csv.push(','),
+            }
+        }
+        csv.push('\n');
+    }
+    csv
+}

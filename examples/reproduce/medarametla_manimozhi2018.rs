@@ -972,24 +972,7 @@ fn figure_data() {
                 cols.push((format!("y_{key}{tag}"), y));
                 cols.push((format!("u_{key}{tag}"), u));
             }
-            let mut csv = String::from("t");
-            for (h, _) in &cols {
-                csv.push(',');
-                csv.push_str(h);
-            }
-            csv.push('\n');
-            for (i, ti) in t.iter().enumerate() {
-                let _ = write!(csv, "{ti:.2}");
-                for (_, v) in &cols {
-                    match v.get(i) {
-                        Some(x) => {
-                            let _ = write!(csv, ",{x:.6}");
-                        }
-                        None => csv.push(','),
-                    }
-                }
-                csv.push('\n');
-            }
+            let csv = ledger::time_columns_csv(&t, &cols);
             let _ = ledger::write_file(
                 &format!("docs/figures/medarametla_{}_{name}.csv", e.id),
                 &csv,
