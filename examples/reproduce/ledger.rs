@@ -365,3 +365,27 @@ pub fn time_columns_csv(t: &[f64], cols: &[(String, Vec<f64>)]) -> String {
     }
     csv
 }
+
+/// The plant with its delay replaced by a Padé approximant of order 1 or 2 (a study option: the
+/// delay some authors simulated instead of the exact one; never used by pidlab's own runs).
+pub fn pade_plant(
+    p: &pidlab::model::plant::Plant,
+    order: usize,
+) -> Option<pidlab::model::plant::Plant> {
+    use pidlab::model::tf::Tf;
+    let t = p.delay;
+    let f = if order == 1 {
+        Tf::parse_desc(&[-t / 2.0, 1.0], &[t / 2.0, 1.0])
+    } else {
+        Tf::parse_desc(
+            &[t * t / 12.0, -t / 2.0, 1.0],
+            &[t * t / 12.0, t / 2.0, 1.0],
+        )
+    }
+    .ok()?;
+    Some(pidlab::model::plant::Plant {
+        tf: p.tf.mul(&f),
+        delay: 0.0,
+        family: None,
+    })
+}

@@ -139,26 +139,9 @@ fn run_options(
 ) -> Vec<(String, Vec<Option<f64>>)> {
     use pidlab::model::controller::Pid;
     use pidlab::model::plant::Plant;
-    use pidlab::model::tf::Tf;
     let plant = studies::simulated_plant(example, delay_plus_40);
     let t_end = if example == 1 { 100.0 } else { 600.0 };
-    let pade = |n: usize| -> Option<Plant> {
-        let t = plant.delay;
-        let f = if n == 1 {
-            Tf::parse_desc(&[-t / 2.0, 1.0], &[t / 2.0, 1.0])
-        } else {
-            Tf::parse_desc(
-                &[t * t / 12.0, -t / 2.0, 1.0],
-                &[t * t / 12.0, t / 2.0, 1.0],
-            )
-        }
-        .ok()?;
-        Some(Plant {
-            tf: plant.tf.mul(&f),
-            delay: 0.0,
-            family: None,
-        })
-    };
+    let pade = |n: usize| ledger::pade_plant(&plant, n);
     let q = tables::TABLE1_PAI2010[example - 1];
     let default_c = if pai {
         pk::pai2010_controller(q.kc, q.ti, q.td)

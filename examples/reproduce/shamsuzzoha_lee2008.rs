@@ -357,25 +357,7 @@ fn run_options(
     st: &ssl::studies::Study,
     c: &pidlab::model::controller::Controller,
 ) -> Vec<(String, Vec<Option<f64>>)> {
-    use pidlab::model::plant::Plant;
-    use pidlab::model::tf::Tf;
-    let pade = |p: &Plant, n: usize| -> Option<Plant> {
-        let t = p.delay;
-        let f = if n == 1 {
-            Tf::parse_desc(&[-t / 2.0, 1.0], &[t / 2.0, 1.0])
-        } else {
-            Tf::parse_desc(
-                &[t * t / 12.0, -t / 2.0, 1.0],
-                &[t * t / 12.0, t / 2.0, 1.0],
-            )
-        }
-        .ok()?;
-        Some(Plant {
-            tf: p.tf.mul(&f),
-            delay: 0.0,
-            family: None,
-        })
-    };
+    let pade = ledger::pade_plant;
     let nominal = st.plant.plant();
     let mut out = vec![];
     for n in [1, 2] {
