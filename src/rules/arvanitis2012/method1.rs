@@ -339,6 +339,17 @@ pub struct Alg3Info {
     pub simulations: usize,
 }
 
+/// Algorithm III's initial pair (τ_D,init, τ_I,init): `init` when given, else Eqs. 21-22 exact.
+fn alg3_init(d: f64, tz: f64, init: Option<(f64, f64)>) -> Result<(f64, f64)> {
+    match init {
+        Some(x) => Ok(x),
+        None => {
+            let td0 = tau_d_gm_max(d, tz, f64::INFINITY)?;
+            Ok((td0, 1.2 * (d + tz + 1.0 - td0)))
+        }
+    }
+}
+
 /// Algorithm III as the paper iterates it (the reference for [`algorithm3`], and its fallback):
 /// start from (τ_D,init, τ_I,init) (Eqs. 21-22 exact unless given), Steps 2-4
 /// (fixed point of Eqs. 10, 11, 20), then Step 5: at that τ_I, τ_D minimizing criterion (13)
@@ -352,13 +363,7 @@ pub fn algorithm3_reference(
     init: Option<(f64, f64)>,
 ) -> Result<(MethodISolution, Alg3Info)> {
     let (d, tz) = (p.d(), p.tz());
-    let (td0, ti0) = match init {
-        Some(x) => x,
-        None => {
-            let td0 = tau_d_gm_max(d, tz, f64::INFINITY)?;
-            (td0, 1.2 * (d + tz + 1.0 - td0))
-        }
-    };
+    let (td0, ti0) = alg3_init(d, tz, init)?;
     let mut sims = 0usize;
     let mut total = 0usize;
     let mut td = td0;
@@ -471,13 +476,7 @@ pub fn algorithm3_near(
     hint: Option<f64>,
 ) -> Result<(MethodISolution, Alg3Info)> {
     let (d, tz) = (p.d(), p.tz());
-    let (td0, ti0) = match init {
-        Some(x) => x,
-        None => {
-            let td0 = tau_d_gm_max(d, tz, f64::INFINITY)?;
-            (td0, 1.2 * (d + tz + 1.0 - td0))
-        }
-    };
+    let (td0, ti0) = alg3_init(d, tz, init)?;
     // the reference's first step, so that its errors (ζ with no I-PD setting) are the same
     fixed_point(d, tz, td0, zeta, ti0)?;
     match alg3_root(p, zeta, criterion, (td0, ti0), hint) {
