@@ -807,3 +807,43 @@ fn table4_wang_cluett_with_200s_windows() {
     check_printed("LD peak", n.ld_peak, "0.43");
     check_printed("LD peak mism.", m.ld_peak, "0.54");
 }
+
+/// Table 4's Rivera et al. row ("1DOF controller is used with F_t = 1/(300s + 1)") with the
+/// study option `controller_d_on_y`: the set-point path is (K_c + K_c/(τ_I s))·F_t (checked
+/// against that expression built by hand at five frequencies, to 1e-12 relative), the
+/// feedback path is unchanged (the load cells reproduce either way), and the printed
+/// set-point IAE, overshoot (nominal and 10 % mismatch) reproduce. Tolerance 0.5 %: the
+/// comparison rows are quoted to 3-4 digits and simulated by the paper with an unstated solver;
+/// measured worst 0.39 % (mismatch IAE 35.486 vs 35.35); with the derivative on the error the
+/// set-point IAE is 21.95, 44 % off, so the test separates the two structures.
+#[wasm_bindgen_test(unsupported = test)]
+fn table4_rivera_derivative_on_measurement() {
+    use pidlab::rules::shamsuzzoha_lee2008::settings::RIVERA;
+    let (kc, ti) = (24.80, 58.3);
+    let cd = RIVERA.controller_d_on_y().unwrap();
+    let c = RIVERA.controller().unwrap();
+    for w in [1e-3, 1e-2, 0.1, 1.0, 10.0] {
+        let s = pidlab::model::poly::C64::new(0.0, w);
+        let want = (s.inv() * (kc / ti) + kc) / (s * 300.0 + 1.0);
+        let got = cd.cr.eval_jw(w);
+        assert!((got - want).norm() <= 1e-12 * want.norm(), "Cr at ω = {w}");
+        let (a, b) = (cd.cy.eval_jw(w), c.cy.eval_jw(w));
+        assert!((a - b).norm() <= 1e-12 * b.norm(), "Cy at ω = {w}");
+    }
+    let st = studies().into_iter().find(|s| s.id == "ex4").unwrap();
+    let n = pidlab::rules::shamsuzzoha_lee2008::studies::perf(&st.plant.plant(), &cd, &st.scenario)
+        .unwrap();
+    let m =
+        pidlab::rules::shamsuzzoha_lee2008::studies::perf(&st.mismatch, &cd, &st.scenario).unwrap();
+    for (what, ours, printed) in [
+        ("SP IAE", n.sp_iae, 39.0),
+        ("SP overshoot", n.sp_overshoot, 1.33),
+        ("SP IAE mism.", m.sp_iae, 35.35),
+        ("SP overshoot mism.", m.sp_overshoot, 1.26),
+    ] {
+        assert!(
+            rel(ours, printed) < 5e-3,
+            "{what}: ours {ours} vs {printed}"
+        );
+    }
+}

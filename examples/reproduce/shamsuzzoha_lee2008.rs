@@ -202,7 +202,7 @@ fn simulations(o: &mut String) {
             let res = simulate_row(&st, c);
             let ms = res.ms.map_or("—".into(), |m| format!("{m:.3}"));
             let (n, m) = (res.nominal, res.mismatch);
-            let opts = tv_options(&st, c);
+            let opts = tv_options(&st, r.key, c);
             record_row(
                 &st,
                 r,
@@ -310,7 +310,10 @@ fn record_row(
         .filter(|&k| k != 2 && k != 7 && cause(st.id, r.key, k).is_empty())
         .filter(|_| r.controller.is_some() && (st.id, r.key) != ("ex1", "zhang"))
         .collect();
-    let run_opts = r.controller.as_ref().map_or(vec![], |c| run_options(st, c));
+    let run_opts = r
+        .controller
+        .as_ref()
+        .map_or(vec![], |c| run_options(st, r.key, c));
     let pick = |v: &[Option<f64>]| plain.iter().map(|&k| v[k]).collect::<Vec<_>>();
     let (row_vals, row_causes) = ledger::resolve_row(
         &plain.iter().map(|&k| printed[k]).collect::<Vec<_>>(),
@@ -349,12 +352,47 @@ fn record_row(
     }
 }
 
+/// The ten columns of a row (nominal and mismatch runs) in the table's order; None where a
+/// run failed.
+fn perf_cells(a: Option<ssl::studies::Perf>, b: Option<ssl::studies::Perf>) -> Vec<Option<f64>> {
+    match (a, b) {
+        (Some(a), Some(b)) => [
+            a.sp_iae,
+            a.sp_overshoot,
+            a.sp_tv,
+            b.sp_iae,
+            b.sp_overshoot,
+            a.ld_iae,
+            a.ld_peak,
+            a.ld_tv,
+            b.ld_iae,
+            b.ld_peak,
+        ]
+        .map(Some)
+        .to_vec(),
+        _ => vec![None; 10],
+    }
+}
+
+/// The derivative on the measurement for a comparison row mapped with it on the error and
+/// printed without a set-point filter ("1DOF"; where its derivative acts is not said).
+fn d_on_y_variant(row_key: &str) -> Option<pidlab::model::controller::Controller> {
+    ssl::settings::literature_settings()
+        .into_iter()
+        .find(|l| l.row.key == row_key && l.row.setpoint_filter.is_none())
+        .filter(|l| l.mapping.is_some_and(|m| !m.d_on_y))
+        .and_then(|l| l.controller_d_on_y())
+}
+
+const D_ON_Y: &str = "derivative on the measurement (set-point path (K_c + K_i/s)·F_t)";
+
 /// Whole-run study options (the ten columns, nominal and mismatch): the dead time as a first-
-/// or second-order Padé approximant in the simulated plants, and the derivative filtered with
-/// N = 10 (the paper's PID is ideal; a simulation may have filtered it) — as a lag τ_D/10 on the
-/// controller's both paths.
+/// or second-order Padé approximant in the simulated plants; for a comparison row printed
+/// without a set-point filter, the derivative on the measurement; for Example 4, the
+/// set-point and load responses simulated apart over 200 s.
 fn run_options(
     st: &ssl::studies::Study,
+    row_key: &str,
     c: &pidlab::model::controller::Controller,
 ) -> Vec<(String, Vec<Option<f64>>)> {
     let pade = ledger::pade_plant;
@@ -366,47 +404,21 @@ fn run_options(
         };
         let a = ssl::studies::perf(&pn, c, &st.scenario);
         let b = ssl::studies::perf(&pm, c, &st.scenario);
-        let v = match (a, b) {
-            (Some(a), Some(b)) => [
-                a.sp_iae,
-                a.sp_overshoot,
-                a.sp_tv,
-                b.sp_iae,
-                b.sp_overshoot,
-                a.ld_iae,
-                a.ld_peak,
-                a.ld_tv,
-                b.ld_iae,
-                b.ld_peak,
-            ]
-            .map(Some)
-            .to_vec(),
-            _ => vec![None; 10],
-        };
         let order = if n == 1 { "1st" } else { "2nd" };
-        out.push((format!("{order}-order Padé delay in the plants"), v));
+        out.push((
+            format!("{order}-order Padé delay in the plants"),
+            perf_cells(a, b),
+        ));
+    }
+    if let Some(cd) = d_on_y_variant(row_key) {
+        let a = ssl::studies::perf(&nominal, &cd, &st.scenario);
+        let b = ssl::studies::perf(&st.mismatch, &cd, &st.scenario);
+        out.push((D_ON_Y.into(), perf_cells(a, b)));
     }
     if let Some(w) = separate_window(st.id) {
         let a = ssl::studies::perf_separate(&nominal, c, &st.scenario, w);
         let b = ssl::studies::perf_separate(&st.mismatch, c, &st.scenario, w);
-        let v = match (a, b) {
-            (Some(a), Some(b)) => [
-                a.sp_iae,
-                a.sp_overshoot,
-                a.sp_tv,
-                b.sp_iae,
-                b.sp_overshoot,
-                a.ld_iae,
-                a.ld_peak,
-                a.ld_tv,
-                b.ld_iae,
-                b.ld_peak,
-            ]
-            .map(Some)
-            .to_vec(),
-            _ => vec![None; 10],
-        };
-        out.push((separate_label(w), v));
+        out.push((separate_label(w), perf_cells(a, b)));
     }
     out
 }
@@ -428,6 +440,7 @@ fn separate_label(w: f64) -> String {
 /// instead of u, and the set-point TV without the move of u at the step itself.
 fn tv_options(
     st: &ssl::studies::Study,
+    row_key: &str,
     c: &pidlab::model::controller::Controller,
 ) -> [Vec<(String, Option<f64>)>; 2] {
     let mut sc = st.scenario.clone();
@@ -465,6 +478,13 @@ fn tv_options(
             Some(tv_on_grid(&r, t0, td, grid, TvSignal::U) - jump),
         ));
     }
+    // The derivative on the measurement (see `run_options`).
+    if let Some(cd) = d_on_y_variant(row_key) {
+        let p = ssl::studies::perf(&st.plant.plant(), &cd, &st.scenario);
+        let label = format!("TV of u, {D_ON_Y}");
+        out[0].push((label.clone(), p.map(|p| p.sp_tv)));
+        out[1].push((label, p.map(|p| p.ld_tv)));
+    }
     // The set-point and load runs apart over the example's shorter window (see `run_options`).
     if let Some(w) = separate_window(st.id) {
         let p = ssl::studies::perf_separate(&st.plant.plant(), c, &st.scenario, w);
@@ -491,9 +511,6 @@ fn cause(ex: &str, key: &str, k: usize) -> &'static str {
         }
         ("ex2", "liu", _) => {
             "not computable: Liu et al.'s set-point controller is not printed (no available source)"
-        }
-        ("ex4", "rivera", 0 | 1 | 3 | 4) => {
-            "the row's set-point path is not specified (a 1DOF PID × F_t gives these; the set-point response simulated alone over 200 s, which reproduces the Wang & Cluett row, gives the same: it has settled)"
         }
         _ => "",
     }
@@ -697,9 +714,12 @@ fn differences(o: &mut String) {
          biproper: a set-point step moves u at once); the paper's sampling is not stated. Ours is \
          larger for most set-point rows (Example 3: by about the initial jump), close for the \
          load rows.\n\
-         - Example 4, Rivera et al.: the load row reproduces; the printed set-point IAE 39.0 \
-         does not follow from a 1DOF PID × F_t (ours about 22 with overshoot 1.27 vs 1.33): the \
-         paper's set-point path for this row is not fully specified.\n\
+         - Example 4, Rivera et al. (\"1DOF controller is used with F_t\"): the load row \
+         reproduces with the PID × F_t on the error (our mapping); the set-point cells (IAE 39.0, \
+         overshoot 1.33, mismatch 35.35 and 1.26) need the derivative on the measurement, as \
+         Wang & Cluett's row (a study option: set-point path (K_c + K_i/s)·F_t; with the \
+         derivative on the error the set-point IAE is about 22, overshoot 1.27). The CSV's causes \
+         give both numbers.\n\
          - Example 4, Wang & Cluett (ideal PID, derivative on y): the paper's \"offset of 3 %\" \
          is not an offset (no PID with integral action leaves one on this plant) but the slow \
          tail of the set-point response, still at 1.02 at 200 s: the printed indices are those of \
@@ -755,24 +775,10 @@ fn wang_cluett_windows(o: &mut String) {
         ssl::studies::perf_separate(&st.mismatch, c, &st.scenario, w),
     );
     let cols = |p: &(Option<ssl::studies::Perf>, Option<ssl::studies::Perf>)| -> Vec<String> {
-        match p {
-            (Some(a), Some(b)) => [
-                a.sp_iae,
-                a.sp_overshoot,
-                a.sp_tv,
-                b.sp_iae,
-                b.sp_overshoot,
-                a.ld_iae,
-                a.ld_peak,
-                a.ld_tv,
-                b.ld_iae,
-                b.ld_peak,
-            ]
+        perf_cells(p.0, p.1)
             .iter()
-            .map(|v| format!("{v:.4}"))
-            .collect(),
-            _ => vec!["—".into(); 10],
-        }
+            .map(|v| v.map_or("—".into(), |v| format!("{v:.4}")))
+            .collect()
     };
     let printed: Vec<String> = r.printed.columns().iter().map(|v| format!("{v}")).collect();
     let _ = writeln!(

@@ -92,6 +92,42 @@ impl LiteratureSetting {
     }
 }
 
+impl LiteratureSetting {
+    /// A study option (the default is [`LiteratureSetting::controller`]): the row's controller
+    /// with the derivative on the measurement (set-point weight c = 0; the printed set-point
+    /// filter and series lag kept), for rows the paper calls "1DOF" without saying where the
+    /// derivative acts. Table 4's Rivera et al. row reproduces its set-point cells with it.
+    pub fn controller_d_on_y(&self) -> Option<Controller> {
+        let m = self.mapping?;
+        let p = self.row.pid?;
+        lit_pid(
+            p.kc,
+            p.ti,
+            p.td,
+            m.series,
+            true,
+            self.row.setpoint_filter.map(|f| tf_desc(f.num, f.den)),
+            self.row.series_lag,
+        )
+    }
+}
+
+/// Every comparison setting of Tables 1-5.
+pub fn literature_settings() -> [LiteratureSetting; 10] {
+    [
+        WANG_CAI,
+        ZHANG,
+        LIU,
+        SKOGESTAD,
+        GU,
+        LUYBEN_2003,
+        WANG_CLUETT,
+        RIVERA,
+        CHIDAMBARAM_SREE,
+        LUYBEN_1996,
+    ]
+}
+
 /// Table 1, wang_cai: the printed row and how it is mapped.
 pub const WANG_CAI: LiteratureSetting = LiteratureSetting {
     row: T1_WANG_CAI,
