@@ -188,6 +188,16 @@ fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1e-300)
 }
 
+/// Each (name, ours, printed) within `tol` relative of print.
+fn assert_rel(cells: &[(&str, f64, f64)], tol: f64) {
+    for (what, ours, printed) in cells {
+        assert!(
+            rel(*ours, *printed) < tol,
+            "{what}: ours {ours} vs {printed}"
+        );
+    }
+}
+
 /// Eqs. (23a), (23b), (24), (25) (FODIP) and (30a), (30b), (30d) (DIP) against the generic
 /// routine, to 1e-10 relative. Eqs. (23c)/(30c) are garbled in print (ERRATA); the
 /// corrected forms (θ³/6 and the sign of β₁θ²/2, derived from the same series) are checked
@@ -792,17 +802,15 @@ fn table4_wang_cluett_with_200s_windows() {
     let c = row.controller.as_ref().unwrap();
     let n = perf_separate(&st.plant.plant(), c, &st.scenario, 200.0).unwrap();
     let m = perf_separate(&st.mismatch, c, &st.scenario, 200.0).unwrap();
-    for (what, ours, printed) in [
-        ("SP IAE", n.sp_iae, 14.79),
-        ("SP IAE mism.", m.sp_iae, 12.42),
-        ("LD IAE", n.ld_iae, 16.63),
-        ("LD IAE mism.", m.ld_iae, 16.54),
-    ] {
-        assert!(
-            rel(ours, printed) < 1e-3,
-            "{what}: ours {ours} vs {printed}"
-        );
-    }
+    assert_rel(
+        &[
+            ("SP IAE", n.sp_iae, 14.79),
+            ("SP IAE mism.", m.sp_iae, 12.42),
+            ("LD IAE", n.ld_iae, 16.63),
+            ("LD IAE mism.", m.ld_iae, 16.54),
+        ],
+        1e-3,
+    );
     check_printed("SP overshoot", n.sp_overshoot, "1.03");
     check_printed("LD peak", n.ld_peak, "0.43");
     check_printed("LD peak mism.", m.ld_peak, "0.54");
@@ -835,15 +843,13 @@ fn table4_rivera_derivative_on_measurement() {
         .unwrap();
     let m =
         pidlab::rules::shamsuzzoha_lee2008::studies::perf(&st.mismatch, &cd, &st.scenario).unwrap();
-    for (what, ours, printed) in [
-        ("SP IAE", n.sp_iae, 39.0),
-        ("SP overshoot", n.sp_overshoot, 1.33),
-        ("SP IAE mism.", m.sp_iae, 35.35),
-        ("SP overshoot mism.", m.sp_overshoot, 1.26),
-    ] {
-        assert!(
-            rel(ours, printed) < 5e-3,
-            "{what}: ours {ours} vs {printed}"
-        );
-    }
+    assert_rel(
+        &[
+            ("SP IAE", n.sp_iae, 39.0),
+            ("SP overshoot", n.sp_overshoot, 1.33),
+            ("SP IAE mism.", m.sp_iae, 35.35),
+            ("SP overshoot mism.", m.sp_overshoot, 1.26),
+        ],
+        5e-3,
+    );
 }

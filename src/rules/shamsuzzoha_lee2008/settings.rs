@@ -78,26 +78,18 @@ impl LiteratureSetting {
     /// Our (Cr, Cy) for the row: the printed PID in the mapped form with the printed set-point
     /// filter and series lag; None when the structure cannot be mapped.
     pub fn controller(&self) -> Option<Controller> {
-        let m = self.mapping?;
-        let p = self.row.pid?;
-        lit_pid(
-            p.kc,
-            p.ti,
-            p.td,
-            m.series,
-            m.d_on_y,
-            self.row.setpoint_filter.map(|f| tf_desc(f.num, f.den)),
-            self.row.series_lag,
-        )
+        self.controller_with(self.mapping?.d_on_y)
     }
-}
 
-impl LiteratureSetting {
     /// A study option (the default is [`LiteratureSetting::controller`]): the row's controller
     /// with the derivative on the measurement (set-point weight c = 0; the printed set-point
     /// filter and series lag kept), for rows the paper calls "1DOF" without saying where the
     /// derivative acts. Table 4's Rivera et al. row reproduces its set-point cells with it.
     pub fn controller_d_on_y(&self) -> Option<Controller> {
+        self.controller_with(true)
+    }
+
+    fn controller_with(&self, d_on_y: bool) -> Option<Controller> {
         let m = self.mapping?;
         let p = self.row.pid?;
         lit_pid(
@@ -105,7 +97,7 @@ impl LiteratureSetting {
             p.ti,
             p.td,
             m.series,
-            true,
+            d_on_y,
             self.row.setpoint_filter.map(|f| tf_desc(f.num, f.den)),
             self.row.series_lag,
         )

@@ -230,6 +230,20 @@ pub struct Perf {
     pub ld_tv: f64,
 }
 
+impl Perf {
+    /// The tables' indices of a servo and a regulatory window.
+    fn of(s: &crate::analysis::metrics::Metrics, g: &crate::analysis::metrics::Metrics) -> Perf {
+        Perf {
+            sp_iae: s.iae,
+            sp_overshoot: 1.0 + s.overshoot.unwrap_or(0.0),
+            sp_tv: s.tv,
+            ld_iae: g.iae,
+            ld_peak: g.peak_error,
+            ld_tv: g.tv,
+        }
+    }
+}
+
 /// Simulates `c` on `plant` over the scenario; None when the simulation fails or diverges.
 pub fn perf(plant: &Plant, c: &Controller, sc: &Scenario) -> Option<Perf> {
     let r = simulate(plant, c, sc).ok()?;
@@ -238,14 +252,7 @@ pub fn perf(plant: &Plant, c: &Controller, sc: &Scenario) -> Option<Perf> {
     }
     let s = r.metrics.servo?;
     let g = r.metrics.regulatory?;
-    Some(Perf {
-        sp_iae: s.iae,
-        sp_overshoot: 1.0 + s.overshoot.unwrap_or(0.0),
-        sp_tv: s.tv,
-        ld_iae: g.iae,
-        ld_peak: g.peak_error,
-        ld_tv: g.tv,
-    })
+    Some(Perf::of(&s, &g))
 }
 
 /// A study option (the default is [`perf`]): the set-point and the load responses simulated
@@ -263,14 +270,7 @@ pub fn perf_separate(plant: &Plant, c: &Controller, sc: &Scenario, window: f64) 
     };
     let s = run(sc.setpoint.size, 0.0)?.metrics.servo?;
     let g = run(0.0, sc.disturbance.size)?.metrics.regulatory?;
-    Some(Perf {
-        sp_iae: s.iae,
-        sp_overshoot: 1.0 + s.overshoot.unwrap_or(0.0),
-        sp_tv: s.tv,
-        ld_iae: g.iae,
-        ld_peak: g.peak_error,
-        ld_tv: g.tv,
-    })
+    Some(Perf::of(&s, &g))
 }
 
 /// A row of a study simulated: Ms on the nominal plant, and the performance on the nominal and
