@@ -876,3 +876,49 @@ fn ajmeri_ali_table4_nominal_rows() {
         );
     }
 }
+
+/// The study options for Ajmeri & Ali's rows: (a) `controller_filtered` — the disturbance
+/// controller is `k_p + k_i/s + k_d s/(T_f s + 1)` (checked against that expression built by
+/// hand at five frequencies, to 1e-12 relative) and `T_f = 0` is the default controller
+/// exactly; (b) `tv_both_outputs` — with a perfect model the disturbance controller stays
+/// silent in the servo response (u₂ = 0), so TV(u₁) + TV(u₂) is TV(u) (to 1e-9 relative: u₂ is
+/// the difference of two exact integrations of the same delayed integrator, measured ≈ 1e-13),
+/// and with the +20 % plant it is at least TV(u) (triangle inequality) and differs (u₂ ≠ 0).
+#[wasm_bindgen_test(unsupported = test)]
+fn ajmeri_ali_study_options() {
+    use mm::studies::{self, TvSignal};
+    use mm::{Condition, Method};
+    let e = example("ex1");
+    let a = mm::ajmeri_ali()
+        .into_iter()
+        .find(|a| a.example == "ex1")
+        .unwrap();
+    let model = e.family.plant();
+    let tf = 0.01;
+    let cf = a.controller_filtered(&model, tf).unwrap();
+    for w in [1e-3, 1e-2, 0.1, 1.0, 10.0] {
+        let s = C64::new(0.0, w);
+        let want = s.inv() * a.dist_ki + a.dist_kp + s * a.dist_kd / (s * tf + 1.0);
+        let got = cf.cy.eval_jw(w);
+        assert!((got - want).norm() <= 1e-12 * want.norm(), "Cy at ω = {w}");
+    }
+    assert_eq!(
+        a.controller_filtered(&model, 0.0).unwrap(),
+        a.controller(&model).unwrap()
+    );
+    assert!(a.controller_filtered(&model, -1.0).is_err());
+
+    for (cond, same) in [(Condition::Nominal, true), (Condition::Perturbed, false)] {
+        let (plant, c, _) = studies::row_loop(&e, Method::AjmeriAli, cond).unwrap();
+        let r = studies::performance_sim(&plant, &c, &e, true, 0.01).unwrap();
+        let sc =
+            pidlab::sim::Scenario::steps(2.0 * e.d_time, 0.01, 0.0, e.sp_size, e.d_time, e.d_size);
+        let both = studies::tv_both_outputs(&r, &c, &sc, 0.0, e.d_time, 0.1).unwrap();
+        let tv = studies::tv_on_grid(&r, 0.0, e.d_time, 0.1, TvSignal::U);
+        if same {
+            assert!((both - tv).abs() <= 1e-9 * tv, "nominal: {both} vs {tv}");
+        } else {
+            assert!(both > tv * (1.0 + 1e-3), "perturbed: {both} vs {tv}");
+        }
+    }
+}

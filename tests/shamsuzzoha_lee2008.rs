@@ -188,6 +188,16 @@ fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs().max(1e-300)
 }
 
+/// Each (name, ours, printed) within `tol` relative of print.
+fn assert_rel(cells: &[(&str, f64, f64)], tol: f64) {
+    for (what, ours, printed) in cells {
+        assert!(
+            rel(*ours, *printed) < tol,
+            "{what}: ours {ours} vs {printed}"
+        );
+    }
+}
+
 /// Eqs. (23a), (23b), (24), (25) (FODIP) and (30a), (30b), (30d) (DIP) against the generic
 /// routine, to 1e-10 relative. Eqs. (23c)/(30c) are garbled in print (ERRATA); the
 /// corrected forms (θ³/6 and the sign of β₁θ²/2, derived from the same series) are checked
@@ -749,4 +759,97 @@ fn fig7_proposed_beats_zhang_at_ms2() {
             "θ/τ = {r}: proposed {ours} vs Zhang {zhang}"
         );
     }
+}
+
+/// The study option `perf_separate` (set-point and load responses simulated apart, each over a
+/// window) against closed forms on `e^{−s}/s`: with `u = K_c e` the servo error integrates to
+/// `1/(k K_c)` = 5 for K_c = 0.2 (k K_c θ = 0.2 < 1/e: real dominant root s = −0.259, no
+/// overshoot, so IAE = ∫e); with the PI `0.2 + 0.005/s` a unit load at the plant input gives
+/// `∫e = −1/K_i` = −200 (final-value theorem; the response does not change sign, so
+/// IAE = 200). Windows of 100 s and 1500 s leave tails below 1e-9 (slowest roots −0.259 and
+/// about −0.026).
+#[wasm_bindgen_test(unsupported = test)]
+fn separate_runs_option_matches_closed_forms() {
+    use pidlab::rules::shamsuzzoha_lee2008::studies::perf_separate;
+    let plant = Family::Piptd { k: 1.0, theta: 1.0 }.plant();
+    let sc = Scenario::steps(10.0, 0.05, 0.0, 1.0, 5.0, 1.0);
+    let p = Pid::parallel(0.2, 0.0, 0.0).to_controller().unwrap();
+    let servo = perf_separate(&plant, &p, &sc, 100.0).unwrap();
+    // 1e-6 relative: the simulator integrates the delay exactly; what remains is the
+    // quadrature of |e| over the 0.05 s output samples (measured ≈ 1e-9)
+    assert!(rel(servo.sp_iae, 5.0) < 1e-6, "servo IAE {}", servo.sp_iae);
+    assert!(
+        servo.sp_overshoot - 1.0 < 1e-9,
+        "overshoot {}",
+        servo.sp_overshoot
+    );
+    let pi = Pid::parallel(0.2, 0.005, 0.0).to_controller().unwrap();
+    let load = perf_separate(&plant, &pi, &sc, 1500.0).unwrap();
+    assert!(rel(load.ld_iae, 200.0) < 1e-6, "load IAE {}", load.ld_iae);
+}
+
+/// Example 4 (Table 4), Wang & Cluett's PID with the derivative on the measurement, with the
+/// set-point and load responses simulated apart over 200 s each (the study option that
+/// reproduces the row): the printed IAE, overshoot and peak, nominal and 10 % mismatch.
+/// Tolerance: half a unit of the printed last digit, widened to 0.1 % for the IAE (four
+/// significant digits; the output-sample quadrature and the simulator's tolerance are far
+/// below that; measured worst 0.07 %, load IAE mismatch 16.528 vs 16.54).
+#[wasm_bindgen_test(unsupported = test)]
+fn table4_wang_cluett_with_200s_windows() {
+    use pidlab::rules::shamsuzzoha_lee2008::studies::perf_separate;
+    let st = studies().into_iter().find(|s| s.id == "ex4").unwrap();
+    let row = st.rows.iter().find(|r| r.key == "wang_cluett").unwrap();
+    let c = row.controller.as_ref().unwrap();
+    let n = perf_separate(&st.plant.plant(), c, &st.scenario, 200.0).unwrap();
+    let m = perf_separate(&st.mismatch, c, &st.scenario, 200.0).unwrap();
+    assert_rel(
+        &[
+            ("SP IAE", n.sp_iae, 14.79),
+            ("SP IAE mism.", m.sp_iae, 12.42),
+            ("LD IAE", n.ld_iae, 16.63),
+            ("LD IAE mism.", m.ld_iae, 16.54),
+        ],
+        1e-3,
+    );
+    check_printed("SP overshoot", n.sp_overshoot, "1.03");
+    check_printed("LD peak", n.ld_peak, "0.43");
+    check_printed("LD peak mism.", m.ld_peak, "0.54");
+}
+
+/// Table 4's Rivera et al. row ("1DOF controller is used with F_t = 1/(300s + 1)") with the
+/// study option `controller_d_on_y`: the set-point path is (K_c + K_c/(τ_I s))·F_t (checked
+/// against that expression built by hand at five frequencies, to 1e-12 relative), the
+/// feedback path is unchanged (the load cells reproduce either way), and the printed
+/// set-point IAE, overshoot (nominal and 10 % mismatch) reproduce. Tolerance 0.5 %: the
+/// comparison rows are quoted to 3-4 digits and simulated by the paper with an unstated solver;
+/// measured worst 0.39 % (mismatch IAE 35.486 vs 35.35); with the derivative on the error the
+/// set-point IAE is 21.95, 44 % off, so the test separates the two structures.
+#[wasm_bindgen_test(unsupported = test)]
+fn table4_rivera_derivative_on_measurement() {
+    use pidlab::rules::shamsuzzoha_lee2008::settings::RIVERA;
+    let (kc, ti) = (24.80, 58.3);
+    let cd = RIVERA.controller_d_on_y().unwrap();
+    let c = RIVERA.controller().unwrap();
+    for w in [1e-3, 1e-2, 0.1, 1.0, 10.0] {
+        let s = pidlab::model::poly::C64::new(0.0, w);
+        let want = (s.inv() * (kc / ti) + kc) / (s * 300.0 + 1.0);
+        let got = cd.cr.eval_jw(w);
+        assert!((got - want).norm() <= 1e-12 * want.norm(), "Cr at ω = {w}");
+        let (a, b) = (cd.cy.eval_jw(w), c.cy.eval_jw(w));
+        assert!((a - b).norm() <= 1e-12 * b.norm(), "Cy at ω = {w}");
+    }
+    let st = studies().into_iter().find(|s| s.id == "ex4").unwrap();
+    let n = pidlab::rules::shamsuzzoha_lee2008::studies::perf(&st.plant.plant(), &cd, &st.scenario)
+        .unwrap();
+    let m =
+        pidlab::rules::shamsuzzoha_lee2008::studies::perf(&st.mismatch, &cd, &st.scenario).unwrap();
+    assert_rel(
+        &[
+            ("SP IAE", n.sp_iae, 39.0),
+            ("SP overshoot", n.sp_overshoot, 1.33),
+            ("SP IAE mism.", m.sp_iae, 35.35),
+            ("SP overshoot mism.", m.sp_overshoot, 1.26),
+        ],
+        5e-3,
+    );
 }

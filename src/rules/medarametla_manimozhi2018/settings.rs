@@ -305,10 +305,18 @@ impl AjmeriAli {
     /// would make `u₁` impulsive. The disturbance controller acts on `y_m − y`, so with a
     /// perfect model the servo and regulatory responses decouple, as the PCS is designed to.
     pub fn controller(&self, model: &Plant) -> Result<Controller> {
+        self.controller_filtered(model, 0.0)
+    }
+
+    /// A study option (the default is [`AjmeriAli::controller`], `t_f` = 0): the disturbance
+    /// controller's derivative filtered, `k_d s/(t_f s + 1)`, as a simulation with a PID block
+    /// may have run it (Simulink's PID block: `t_f = 1/N`, N = 100 by default). `t_f` ≥ 0.
+    pub fn controller_filtered(&self, model: &Plant, t_f: f64) -> Result<Controller> {
+        crate::error::non_negative("t_f", t_f)?;
         let (kp, kd) = (self.sp_kp, self.sp_kd);
-        let cd = Pid::parallel(self.dist_kp, self.dist_ki, self.dist_kd)
-            .to_controller()?
-            .cy;
+        let (p, i, d) = (self.dist_kp, self.dist_ki, self.dist_kd);
+        // k_p + k_i/s + k_d s/(t_f s + 1) over s(t_f s + 1); t_f = 0 is the ideal derivative
+        let cd = Tf::parse_desc(&[p * t_f + d, p + i * t_f, i], &[t_f, 1.0, 0.0])?;
         let ml = ModelLoop::new(
             model.clone(),
             Tf::gain(kp),

@@ -677,6 +677,32 @@ pub fn tv_on_grid(
     tv
 }
 
+/// Σ|Δu₁| + Σ|Δu₂| on a fixed grid (as [`tv_on_grid`]) for a controller with a model loop
+/// (Ajmeri & Ali's parallel control structure): the TVs of the set-point controller's output
+/// `u₁` and of the disturbance controller's `u₂ = u − u₁` summed, as a simulation logging the
+/// two controllers apart may have. `u₁` is the model loop's own output (its input is `r`
+/// only), simulated alone on the run's grid with scenario `sc` (the run's). `None` without a
+/// model loop or when that run fails.
+pub fn tv_both_outputs(
+    r: &crate::analysis::SimResult,
+    c: &Controller,
+    sc: &Scenario,
+    a: f64,
+    b: f64,
+    grid: f64,
+) -> Option<f64> {
+    let ml = c.model_loop.as_ref()?;
+    let mut alone = sc.clone();
+    alone.disturbance.size = 0.0;
+    let r1 = simulate(&ml.model, &ml.controller(), &alone).ok()?;
+    if r1.u.len() != r.u.len() {
+        return None;
+    }
+    let mut r2 = r.clone();
+    r2.u = r.u.iter().zip(&r1.u).map(|(u, u1)| u - u1).collect();
+    Some(tv_on_grid(&r1, a, b, grid, TvSignal::U) + tv_on_grid(&r2, a, b, grid, TvSignal::U))
+}
+
 /// The loop of a Tables 4-5 row as [`tables_4_5`] simulates it: (plant, controller, whether
 /// the set-point step is applied).
 pub fn row_loop(
