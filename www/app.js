@@ -22,7 +22,7 @@ import { showMetrics } from './table.js';
 import { showController } from './design.js';
 import { buildExport } from './export.js';
 import * as Id from './identify.js';
-import { drawBode } from './bode.js';
+import { drawBode, currentResponse } from './bode.js';
 import * as I from './instructor.js';
 import * as Api from './embed-api.js';
 import { updateSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeoff.js';
@@ -54,19 +54,57 @@ function crashBanners() {
   }));
 }
 
-/** The frequency-response and trade-off panels (issue 16): failures there are banners too. */
-function drawClassroom(r) {
+/** The Nyquist plot's envelope note (issue 16; the envelope is drawn with the response plots). */
+function showEnvelope(r) {
+  const env = $('envelope-summary');
+  env.hidden = !r.envelope;
+  if (r.envelope) env.textContent = 'Nyquist plot: the orange band is L for every plant in the box ±(the perturbation sliders); its closest approach to −1 gives a worst-case Ms of ' + (Number.isFinite(r.envelope.worstMs) ? S.fmt(r.envelope.worstMs, 3) : '∞ (it reaches −1: some plant in the box is unstable or at the limit)') + '.';
+}
+
+// The classroom panels (issue 16: the frequency response, the trade-off curves; then the embed
+// API's change notice) are drawn after the frame that shows the input's readouts and response
+// plots, one panel per later frame (a task after the frame is painted), so an input's own task
+// draws four canvases, not nine. Each chunk draws the newest applied result: a newer result
+// restarts the sequence, and a chunk that finds a newer render pass in progress stops (that
+// pass schedules its own when its result is applied). Until its chunk has run, a panel carries
+// aria-busy="true" (its "computing…" note shows only if that lasts: style.css).
+const busy = (id, b) => { if ($(id).getAttribute('aria-busy') !== String(b)) $(id).setAttribute('aria-busy', String(b)); };
+const CLASSROOM = [
+  (r) => { busy('bode', false); drawBode(r); }, // (busy again while its response is computed)
+  (r) => { busy('tradeoff', false); updateSweep(); drawTradeoff(r); },
+  () => Api.notify(),
+];
+const classroom = { r: null, gen: 0, step: 0, scheduled: false };
+
+function scheduleClassroom(r) {
+  classroom.r = r;
+  classroom.gen = W.current('render');
+  classroom.step = 0;
+  busy('bode', true);
+  busy('tradeoff', true);
+  if (classroom.scheduled) return;
+  classroom.scheduled = true;
+  afterFrame(classroomStep);
+}
+
+/** `fn()` in a task after the next frame (its pixels committed). */
+const afterFrame = (fn) => requestAnimationFrame(() => setTimeout(fn, 0));
+
+function classroomStep() {
+  const r = classroom.r;
+  if (!r || classroom.gen !== W.current('render')) { classroom.scheduled = false; return; }
+  const t0 = performance.now();
+  const i = classroom.step++;
   try {
-    drawBode(r);
-    const env = $('envelope-summary');
-    env.hidden = !r.envelope;
-    if (r.envelope) env.textContent = 'Nyquist plot: the orange band is L for every plant in the box ±(the perturbation sliders); its closest approach to −1 gives a worst-case Ms of ' + (Number.isFinite(r.envelope.worstMs) ? S.fmt(r.envelope.worstMs, 3) : '∞ (it reaches −1: some plant in the box is unstable or at the limit)') + '.';
-    updateSweep();
-    drawTradeoff(r);
-    Api.notify();
+    CLASSROOM[i](r);
   } catch (e) {
     showBanners([...r.banners, { kind: 'warn', title: 'Frequency panels', text: errText(e) }]);
   }
+  perf.classroom.push(performance.now() - t0);
+  if (perf.classroom.length > 1000) perf.classroom.shift();
+  if (classroom.step < CLASSROOM.length) { afterFrame(classroomStep); return; }
+  classroom.scheduled = false;
+  classroom.r = null;
 }
 
 // What the results show: their input's render number (perf.shown) and whether newer is coming.
@@ -101,15 +139,18 @@ function render(arrival = false) {
     r.banners = Er.route(r.banners);
     showBanners(r.banners);
     showReadouts(r);
+    // the frequency response is asked for now (the worker computes it while this frame paints)
+    try { currentResponse(r); } catch { /* (drawBode shows the error) */ }
     const t1 = performance.now();
     drawPlots(r);
     const t2 = lap('plots', t1);
     if (!perf.firstPlotsAt) {
       perf.firstPlotsAt = t2;
       // the slow worker's scans and sweeps wait until the first plots are on screen
-      requestAnimationFrame(() => setTimeout(() => W.holdSlow(false), 0));
+      afterFrame(() => W.holdSlow(false));
     }
-    drawClassroom(r);
+    showEnvelope(r);
+    scheduleClassroom(r);
     showMetrics(r);
     showController(r);
     I.afterRender();
@@ -197,7 +238,7 @@ function wire() {
 /** Whether the page shows its latest input (`all`: and the slow worker has nothing left to do:
  *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep). */
 function isCurrent(all = false, sweep = true) {
-  const waiting = W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  const waiting = classroom.scheduled || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 

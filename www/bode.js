@@ -7,7 +7,7 @@ import * as S from './state.js';
 import * as W from './worker-client.js';
 import { $, setText, errText } from './dom.js';
 import { store } from './store.js';
-import { drawSpec, log10, db } from './drawspec.js';
+import { drawSpec, log10, db, cssSize, dpr } from './drawspec.js';
 import * as P from './pins.js';
 
 const C = { s: '#0072B2', t: '#D55E00', cs: '#009E73', ps: '#CC79A7', ref: '#000000', mark: '#E69F00' };
@@ -67,6 +67,14 @@ export function drawBode(r) {
     setText($('bode-summary'), 'No controller: no frequency response.');
     return;
   }
+  // nothing to draw again when the responses (memoized answers: the same objects for the same
+  // inputs), the pins and the canvases' sizes are those drawn last (building the three specs
+  // costs more than drawSpec's own check)
+  const pins = store.state.pins.map((pin, i) => [pinResponse(pin), P.pinned()[i]]);
+  const sig = [fr, ...pins.flatMap(([pr, run]) => [pr, run ? run.label + ' ' + run.color : ''])];
+  const sizes = ['plot-bode-gang', 'plot-bode-mag', 'plot-bode-phase'].map((id) => { const z = cssSize.get(id); return z ? z.width + 'x' + z.height : ''; }).join() + ' ' + dpr();
+  if (last.sizes === sizes && last.sig.length === sig.length && last.sig.every((v, i) => v === sig[i])) return;
+  last.sig = [];
   const x = fr.w.map(log10);
   const m = fr.marks;
   const pt = (w, v, label, color) => (Number.isFinite(w) && Number.isFinite(v) && v > 0 ? [{ x: Math.log10(w), y: 20 * Math.log10(v), label, color }] : []);
@@ -77,9 +85,7 @@ export function drawBode(r) {
     { label: '|PS| load→y', x, y: fr.ps.map(db), color: C.ps },
   ];
   // pinned designs: their |S| faint, in their colours
-  store.state.pins.forEach((pin, i) => {
-    const pr = pinResponse(pin);
-    const run = P.pinned()[i];
+  pins.forEach(([pr, run]) => {
     if (pr && run) gang.push({ label: '|S| ' + run.label, x: pr.w.map(log10), y: pr.s.map(db), color: run.color, faint: true, width: 1.5 });
   });
   drawSpec({
@@ -115,4 +121,9 @@ export function drawBode(r) {
   const text = summary(m);
   setText($('bode-summary'), text);
   for (const [id, v] of [['bode-ms', m.ms], ['bode-mt', m.mt], ['bode-bw', m.bandwidth]]) setText($(id), fmt(v));
+  last.sig = sig;
+  last.sizes = sizes;
 }
+
+// What drawBode drew last: the responses and pins (by identity) and the canvases' sizes.
+const last = { sig: [], sizes: '' };
