@@ -11,7 +11,7 @@ import * as C from './controls.js';
 import * as Pr from './presets.js';
 import * as P from './pins.js';
 import * as Sh from './share.js';
-import { $, errText } from './dom.js';
+import { $, errText, afterPaint } from './dom.js';
 import { store, connect, changed, isPending, methodParams } from './store.js';
 import { perf, lap } from './perf.js';
 import { compute } from './compute.js';
@@ -84,11 +84,8 @@ function scheduleClassroom(r) {
   busy('tradeoff', true);
   if (classroom.scheduled) return;
   classroom.scheduled = true;
-  afterFrame(classroomStep);
+  afterPaint(classroomStep);
 }
-
-/** `fn()` in a task after the next frame (its pixels committed). */
-const afterFrame = (fn) => requestAnimationFrame(() => setTimeout(fn, 0));
 
 function classroomStep() {
   const r = classroom.r;
@@ -102,7 +99,7 @@ function classroomStep() {
   }
   perf.classroom.push(performance.now() - t0);
   if (perf.classroom.length > 1000) perf.classroom.shift();
-  if (classroom.step < CLASSROOM.length) { afterFrame(classroomStep); return; }
+  if (classroom.step < CLASSROOM.length) { afterPaint(classroomStep); return; }
   classroom.scheduled = false;
   classroom.r = null;
 }
@@ -146,8 +143,9 @@ function render(arrival = false) {
     const t2 = lap('plots', t1);
     if (!perf.firstPlotsAt) {
       perf.firstPlotsAt = t2;
+      perf.firstPhases = { ...perf.phases };
       // the slow worker's scans and sweeps wait until the first plots are on screen
-      afterFrame(() => W.holdSlow(false));
+      afterPaint(() => W.holdSlow(false));
     }
     showEnvelope(r);
     scheduleClassroom(r);
@@ -298,7 +296,13 @@ async function main() {
   // The worker's answers: a render's render again; admissible's rebuild the method's sliders.
   W.onArrival('render', () => changed(false, true));
   W.onArrival('ranges', C.rangesArrived);
-  W.onArrival('standin', C.rangesArrived);
+  // the λ for Ms = 1.6 the method's panel waited for (at start-up, the default design's):
+  // the design's own requests are posted at once, not at the next frame's render (after the
+  // panel's layout and paint: 60–80 ms at start-up here, with the fast worker idle meanwhile)
+  W.onArrival('standin', () => {
+    C.rangesArrived();
+    if (!store.hold) { try { compute(); } catch { /* (the render reports it) */ } }
+  });
   C.onMethodRebuilt(() => { Sh.buildEmbedChoices(); Sh.applyEmbed(); I.apply(); });
   onSweepProgress(() => { if (store.last) drawTradeoff(store.last); });
   // A restart that had to wait: say so; the next change computes (not the input that trapped).
