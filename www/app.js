@@ -65,8 +65,8 @@ function showEnvelope(r) {
 // API's change notice) are drawn after the frame that shows the input's readouts and response
 // plots, one panel per later frame (a task after the frame is painted), so an input's own task
 // draws four canvases, not nine. Each chunk draws the newest applied result: a newer result
-// restarts the sequence, and a chunk that finds a newer render pass in progress stops (that
-// pass schedules its own when its result is applied). Until its chunk has run, a panel carries
+// marks every panel to be drawn again (in turn), and a chunk that finds a newer render pass in
+// progress stops (that pass schedules the panels when its result is applied). Until its chunk has run, a panel carries
 // aria-busy="true" (its "computing…" note shows only if that lasts: style.css).
 const busy = (id, b) => { if ($(id).getAttribute('aria-busy') !== String(b)) $(id).setAttribute('aria-busy', String(b)); };
 const CLASSROOM = [
@@ -74,12 +74,12 @@ const CLASSROOM = [
   (r) => { busy('tradeoff', false); updateSweep(); drawTradeoff(r); },
   () => Api.notify(),
 ];
-const classroom = { r: null, gen: 0, step: 0, scheduled: false };
+const classroom = { r: null, gen: 0, todo: new Set(), last: -1, scheduled: false };
 
 function scheduleClassroom(r) {
   classroom.r = r;
   classroom.gen = W.current('render');
-  classroom.step = 0;
+  for (let i = 0; i < CLASSROOM.length; i++) classroom.todo.add(i);
   busy('bode', true);
   busy('tradeoff', true);
   if (classroom.scheduled) return;
@@ -91,7 +91,12 @@ function classroomStep() {
   const r = classroom.r;
   if (!r || classroom.gen !== W.current('render')) { classroom.scheduled = false; return; }
   const t0 = performance.now();
-  const i = classroom.step++;
+  // the panels in turn, from the one after the last drawn (results arriving in every frame of a
+  // drag would otherwise keep the later panels from ever being drawn)
+  const order = [...classroom.todo].sort((a, b) => a - b);
+  const i = order.find((k) => k > classroom.last) ?? order[0];
+  classroom.todo.delete(i);
+  classroom.last = i;
   try {
     CLASSROOM[i](r);
   } catch (e) {
@@ -99,7 +104,7 @@ function classroomStep() {
   }
   perf.classroom.push(performance.now() - t0);
   if (perf.classroom.length > 1000) perf.classroom.shift();
-  if (classroom.step < CLASSROOM.length) { afterPaint(classroomStep); return; }
+  if (classroom.todo.size) { afterPaint(classroomStep); return; }
   classroom.scheduled = false;
   classroom.r = null;
 }
@@ -234,9 +239,10 @@ function wire() {
 }
 
 /** Whether the page shows its latest input (`all`: and the slow worker has nothing left to do:
- *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep). */
-function isCurrent(all = false, sweep = true) {
-  const waiting = classroom.scheduled || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+ *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep; `panels` false:
+ *  the readouts and response plots only, the classroom panels drawn in later frames aside). */
+function isCurrent(all = false, sweep = true, panels = true) {
+  const waiting = (panels && classroom.scheduled) || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 
