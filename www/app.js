@@ -22,7 +22,7 @@ import { showMetrics } from './table.js';
 import { showController } from './design.js';
 import { buildExport } from './export.js';
 import * as Id from './identify.js';
-import { drawBode, currentResponse } from './bode.js';
+import { drawBode, currentResponse, BODE_PARTS } from './bode.js';
 import * as I from './instructor.js';
 import * as Api from './embed-api.js';
 import { updateSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeoff.js';
@@ -70,7 +70,12 @@ function showEnvelope(r) {
 // aria-busy="true" (its "computing…" note shows only if that lasts: style.css).
 const busy = (id, b) => { if ($(id).getAttribute('aria-busy') !== String(b)) $(id).setAttribute('aria-busy', String(b)); };
 const CLASSROOM = [
-  (r) => { busy('bode', false); drawBode(r); }, // (busy again while its response is computed)
+  // the frequency response, a canvas per frame (busy until no part is left to draw; again
+  // while the response is computed)
+  ...Array.from({ length: BODE_PARTS }, (_, k) => (r) => {
+    if (!Array.from({ length: BODE_PARTS }, (_, j) => j).some((j) => classroom.todo.has(j))) busy('bode', false);
+    drawBode(r, k);
+  }),
   (r) => { busy('tradeoff', false); updateSweep(); drawTradeoff(r); },
   () => Api.notify(),
 ];
