@@ -30,6 +30,16 @@ export const errText = (e) => (e && typeof e === 'object' && 'message' in e ? St
  * delay the frame that shows an input (a classroom panel, the history entry: pushState costs
  * 6–20 ms on a long hash). Two hops: the task the frame's callbacks post first would run before
  * those posted after it in the same frame (what measures "painted"); the second hop queues `fn`
- * behind them.
+ * behind them. A hidden page has no frames: then after 200 ms.
  */
-export const afterPaint = (fn) => requestAnimationFrame(() => setTimeout(() => setTimeout(fn, 0), 0));
+export function afterPaint(fn) {
+  let started = false;
+  const go = () => {
+    if (started) return;
+    started = true;
+    clearTimeout(timer);
+    setTimeout(() => setTimeout(fn, 0), 0);
+  };
+  const timer = setTimeout(go, 200);
+  requestAnimationFrame(go);
+}
