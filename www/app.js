@@ -63,11 +63,12 @@ function showEnvelope(r) {
 
 // The classroom panels (issue 16: the frequency response, the trade-off curves; then the embed
 // API's change notice) are drawn after the frame that shows the input's readouts and response
-// plots, one panel per later frame (a task after the frame is painted), so an input's own task
+// plots, one canvas per later frame (a task after the frame is painted), so an input's own task
 // draws four canvases, not nine. Each chunk draws the newest applied result: a newer result
 // marks every panel to be drawn again (in turn), and a chunk that finds a newer render pass in
-// progress stops (that pass schedules the panels when its result is applied). Until its chunk has run, a panel carries
-// aria-busy="true" (its "computing…" note shows only if that lasts: style.css).
+// progress stops (that pass schedules the panels when its result is applied). Until it is
+// drawn, a panel carries aria-busy="true" (its "computing…" note shows only if that lasts:
+// style.css).
 const busy = (id, b) => { if ($(id).getAttribute('aria-busy') !== String(b)) $(id).setAttribute('aria-busy', String(b)); };
 const CLASSROOM = [
   // the frequency response, a canvas per frame (busy until no part is left to draw; again
