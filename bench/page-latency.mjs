@@ -11,10 +11,13 @@
 //   step: one input at a time (a slider value, a select option, a checkbox, a typed number, a
 //         button), the next one once the previous input's result is on screen:
 //           frame   = input -> the next painted frame (the page stays responsive: ≤ one frame);
-//           result  = input -> the first painted frame showing the design for this input;
-//           settled = input -> the frame showing everything for it (with the plant-aware slider
-//                     ranges admissible() computes after a method, family or preset change; the
-//                     trade-off sweep, which the slow worker may still be computing, aside).
+//           result  = input -> the first painted frame showing the design for this input (its
+//                     readouts and response plots; the classroom panels, drawn in later frames,
+//                     aside);
+//           settled = input -> the frame showing everything for it (the classroom panels too,
+//                     and the plant-aware slider ranges admissible() computes after a method,
+//                     family or preset change; the trade-off sweep, which the slow worker may
+//                     still be computing, aside).
 //   drag: sliders only: an input in every animation frame (a drag; 60 frames), results
 //         computed in the worker meanwhile and superseded ones dropped:
 //           frame   = input -> the next painted frame, for every input of the drag;
@@ -169,7 +172,7 @@ const HELPERS = () => {
       // a result: a render for an input after this one's start has been applied (and, for the
       // async preset load, its input counted); settled: nothing more pending for it
       // (a control that changes no design, e.g. which sliders an embedding shows: its result is its frame)
-      const result = noRender ? frame : (await until(() => (sync || P.perf.shown > shown0) && P.current())) - t0;
+      const result = noRender ? frame : (await until(() => (sync || P.perf.shown > shown0) && P.current(false, true, false))) - t0;
       const settled = (await until(() => P.current(true, false))) - t0;
       return { frame, result, settled };
     },
@@ -183,7 +186,7 @@ const HELPERS = () => {
         act(sel, 'slider', v);
         frames.push((await painted()) - t0);
       }
-      const final = (await until(() => P.current())) - last;
+      const final = (await until(() => P.current(false, true, false))) - last;
       return { frames, final, stats: P.worker() };
     },
   };

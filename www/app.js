@@ -11,17 +11,18 @@ import * as C from './controls.js';
 import * as Pr from './presets.js';
 import * as P from './pins.js';
 import * as Sh from './share.js';
-import { $, errText } from './dom.js';
+import { $, errText, afterPaint } from './dom.js';
 import { store, connect, changed, isPending, methodParams } from './store.js';
 import { perf, lap } from './perf.js';
 import { compute } from './compute.js';
-import { drawPlots, watchSizes } from './plots.js';
+import { drawPlots } from './plots.js';
+import { watchSizes } from './drawspec.js';
 import { showBanners, showReadouts } from './readouts.js';
 import { showMetrics } from './table.js';
 import { showController } from './design.js';
 import { buildExport } from './export.js';
 import * as Id from './identify.js';
-import { drawBode } from './bode.js';
+import { drawBode, currentResponse, BODE_PARTS } from './bode.js';
 import * as I from './instructor.js';
 import * as Api from './embed-api.js';
 import { updateSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeoff.js';
@@ -53,19 +54,65 @@ function crashBanners() {
   }));
 }
 
-/** The frequency-response and trade-off panels (issue 16): failures there are banners too. */
-function drawClassroom(r) {
+/** The Nyquist plot's envelope note (issue 16; the envelope is drawn with the response plots). */
+function showEnvelope(r) {
+  const env = $('envelope-summary');
+  env.hidden = !r.envelope;
+  if (r.envelope) env.textContent = 'Nyquist plot: the orange band is L for every plant in the box ±(the perturbation sliders); its closest approach to −1 gives a worst-case Ms of ' + (Number.isFinite(r.envelope.worstMs) ? S.fmt(r.envelope.worstMs, 3) : '∞ (it reaches −1: some plant in the box is unstable or at the limit)') + '.';
+}
+
+// The classroom panels (issue 16: the frequency response, the trade-off curves; then the embed
+// API's change notice) are drawn after the frame that shows the input's readouts and response
+// plots, one canvas per later frame (a task after the frame is painted), so an input's own task
+// draws four canvases, not nine. Each chunk draws the newest applied result: a newer result
+// marks every panel to be drawn again (in turn), and a chunk that finds a newer render pass in
+// progress stops (that pass schedules the panels when its result is applied). Until it is
+// drawn, a panel carries aria-busy="true" (its "computing…" note shows only if that lasts:
+// style.css).
+const busy = (id, b) => { if ($(id).getAttribute('aria-busy') !== String(b)) $(id).setAttribute('aria-busy', String(b)); };
+const CLASSROOM = [
+  // the frequency response, a canvas per frame (busy until no part is left to draw; again
+  // while the response is computed)
+  ...Array.from({ length: BODE_PARTS }, (_, k) => (r) => {
+    if (!Array.from({ length: BODE_PARTS }, (_, j) => j).some((j) => classroom.todo.has(j))) busy('bode', false);
+    drawBode(r, k);
+  }),
+  (r) => { busy('tradeoff', false); updateSweep(); drawTradeoff(r); },
+  () => Api.notify(),
+];
+const classroom = { r: null, gen: 0, todo: new Set(), last: -1, scheduled: false };
+
+function scheduleClassroom(r) {
+  classroom.r = r;
+  classroom.gen = W.current('render');
+  for (let i = 0; i < CLASSROOM.length; i++) classroom.todo.add(i);
+  busy('bode', true);
+  busy('tradeoff', true);
+  if (classroom.scheduled) return;
+  classroom.scheduled = true;
+  afterPaint(classroomStep);
+}
+
+function classroomStep() {
+  const r = classroom.r;
+  if (!r || classroom.gen !== W.current('render')) { classroom.scheduled = false; return; }
+  const t0 = performance.now();
+  // the panels in turn, from the one after the last drawn (results arriving in every frame of a
+  // drag would otherwise keep the later panels from ever being drawn)
+  const order = [...classroom.todo].sort((a, b) => a - b);
+  const i = order.find((k) => k > classroom.last) ?? order[0];
+  classroom.todo.delete(i);
+  classroom.last = i;
   try {
-    drawBode(r);
-    const env = $('envelope-summary');
-    env.hidden = !r.envelope;
-    if (r.envelope) env.textContent = 'Nyquist plot: the orange band is L for every plant in the box ±(the perturbation sliders); its closest approach to −1 gives a worst-case Ms of ' + (Number.isFinite(r.envelope.worstMs) ? S.fmt(r.envelope.worstMs, 3) : '∞ (it reaches −1: some plant in the box is unstable or at the limit)') + '.';
-    updateSweep();
-    drawTradeoff(r);
-    Api.notify();
+    CLASSROOM[i](r);
   } catch (e) {
     showBanners([...r.banners, { kind: 'warn', title: 'Frequency panels', text: errText(e) }]);
   }
+  perf.classroom.push(performance.now() - t0);
+  if (perf.classroom.length > 1000) perf.classroom.shift();
+  if (classroom.todo.size) { afterPaint(classroomStep); return; }
+  classroom.scheduled = false;
+  classroom.r = null;
 }
 
 // What the results show: their input's render number (perf.shown) and whether newer is coming.
@@ -100,15 +147,19 @@ function render(arrival = false) {
     r.banners = Er.route(r.banners);
     showBanners(r.banners);
     showReadouts(r);
+    // the frequency response is asked for now (the worker computes it while this frame paints)
+    try { currentResponse(r); } catch { /* (drawBode shows the error) */ }
     const t1 = performance.now();
     drawPlots(r);
     const t2 = lap('plots', t1);
     if (!perf.firstPlotsAt) {
       perf.firstPlotsAt = t2;
+      perf.firstPhases = { ...perf.phases };
       // the slow worker's scans and sweeps wait until the first plots are on screen
-      requestAnimationFrame(() => setTimeout(() => W.holdSlow(false), 0));
+      afterPaint(() => W.holdSlow(false));
     }
-    drawClassroom(r);
+    showEnvelope(r);
+    scheduleClassroom(r);
     showMetrics(r);
     showController(r);
     I.afterRender();
@@ -194,25 +245,39 @@ function wire() {
 }
 
 /** Whether the page shows its latest input (`all`: and the slow worker has nothing left to do:
- *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep). */
-function isCurrent(all = false, sweep = true) {
-  const waiting = W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+ *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep; `panels` false:
+ *  the readouts and response plots only, the classroom panels drawn in later frames aside). */
+function isCurrent(all = false, sweep = true, panels = true) {
+  const waiting = (panels && classroom.scheduled) || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 
-function warmPlot() {
+// What the first plots draw, in small: a time plot (several series, a dashed one, a legend, a
+// vertical line, an x range) and a Nyquist plot (a circle, a point). The engine compiles a
+// function on its first call: drawn while the workers compute the first design, these leave the
+// first plots less to compile (a single three-point plot left 45–220 ms of drawing in the first
+// render at load 12).
+const WARM_SPECS = [
+  { kind: 'time', title: 't', xlabel: 'x', ylabel: 'y', xrange: [0, 2], vlines: [{ x: 1, label: 'v', color: '#D55E00' }], series: [{ label: 'r', x: [0, 1, 2], y: [1, 1, 1], color: '#000000', dash: 'dash', width: 1.5 }, { label: 'a', x: [0, 1, 2], y: [0, 1, 0.5], color: '#0072B2' }, { label: 'b', x: [0, 1, 2], y: [0, 0.5, 0.7], color: '#D55E00', faint: true }] },
+  { kind: 'nyquist', title: 'n', xlabel: 'Re', ylabel: 'Im', circle: { cx: -1, cy: 0, r: 0.6, label: 'c', color: '#D55E00' }, points: [{ x: -1, y: 0, label: '−1' }], series: [{ label: '', x: [0.5, -0.5, -1.5], y: [0.5, -0.2, 0.1], color: '#0072B2', dash: 'dot', faint: true, width: 1.5 }, { label: 'L', x: [0.5, -0.5, -1.5], y: [-0.5, 0.2, -0.1], color: '#0072B2' }] },
+];
+
+/** Draws WARM_SPECS[i] on a hidden canvas, then the next one in a later task. */
+function warmPlot(i = 0) {
+  if (i >= WARM_SPECS.length || perf.firstPlotsAt) return;
   const c = document.createElement('canvas');
   c.id = 'pidlab-warm-plot';
-  c.width = 64;
-  c.height = 48;
+  c.width = 160;
+  c.height = 120;
   c.hidden = true;
   document.body.append(c);
   try {
-    E.call('plot', JSON.stringify({ canvas: c.id, kind: 'time', title: 't', xlabel: 'x', ylabel: 'y', series: [{ label: 'a', x: [0, 1, 2], y: [0, 1, 0.5], color: '#0072B2' }] }));
+    E.call('plot', JSON.stringify({ canvas: c.id, dpr: 1, ...WARM_SPECS[i] }));
   } catch {
     // (nothing lost: the real plots report their own errors)
   }
   c.remove();
+  setTimeout(() => warmPlot(i + 1), 0);
 }
 
 /** See window.__pidlab.settled. */
@@ -256,7 +321,13 @@ async function main() {
   // The worker's answers: a render's render again; admissible's rebuild the method's sliders.
   W.onArrival('render', () => changed(false, true));
   W.onArrival('ranges', C.rangesArrived);
-  W.onArrival('standin', C.rangesArrived);
+  // the λ for Ms = 1.6 the method's panel waited for (at start-up, the default design's):
+  // the design's own requests are posted at once, not at the next frame's render (after the
+  // panel's layout and paint: 60–80 ms at start-up here, with the fast worker idle meanwhile)
+  W.onArrival('standin', () => {
+    C.rangesArrived();
+    if (!store.hold) { try { compute(); } catch { /* (the render reports it) */ } }
+  });
   C.onMethodRebuilt(() => { Sh.buildEmbedChoices(); Sh.applyEmbed(); I.apply(); });
   onSweepProgress(() => { if (store.last) drawTradeoff(store.last); });
   // A restart that had to wait: say so; the next change computes (not the input that trapped).
@@ -309,10 +380,9 @@ async function main() {
     W.warm({ plant: store.state.plant, method: store.state.method, params, scenario: store.state.scenario });
   }
   perf.startup.built = performance.now();
-  // while the worker computes the first design: one small drawing on a hidden canvas, so the
-  // plot code the first plots need is compiled by then (the engine compiles a function on its
-  // first call)
-  setTimeout(warmPlot, 0);
+  // while the worker computes the first design: small drawings on a hidden canvas, so the plot
+  // code the first plots need is compiled by then (WARM_SPECS)
+  setTimeout(() => warmPlot(), 0);
   render();
   Api.start(ins.api, () => settled(false));
   document.body.setAttribute('data-ready', '1');

@@ -7,7 +7,7 @@ import * as S from './state.js';
 import * as W from './worker-client.js';
 import { $, setText, errText } from './dom.js';
 import { store } from './store.js';
-import { drawSpec, log10, db } from './drawspec.js';
+import { drawSpec, log10, db, cssSize, dpr } from './drawspec.js';
 import * as P from './pins.js';
 
 const C = { s: '#0072B2', t: '#D55E00', cs: '#009E73', ps: '#CC79A7', ref: '#000000', mark: '#E69F00' };
@@ -50,8 +50,14 @@ function gangRange(series) {
   return [hi - 60, hi + 6];
 }
 
-/** Draws the panel for a render's results. */
-export function drawBode(r) {
+/** How many parts drawBode() draws the panel in (one canvas each; the last one sets its text). */
+export const BODE_PARTS = 3;
+
+/** Draws the panel for a render's results: all of it, or part `part` (0 … BODE_PARTS − 1: the
+ *  page draws one per frame; the numbers and the summary come with the last one). */
+export function drawBode(r, part = null) {
+  const has = (k) => part === null || part === k;
+  const lastPart = has(BODE_PARTS - 1);
   const box = $('bode');
   if (!box || box.hidden) return;
   let fr;
@@ -61,12 +67,21 @@ export function drawBode(r) {
     setText($('bode-summary'), 'No frequency response: ' + errText(e));
     return;
   }
-  box.setAttribute('aria-busy', String(fr === W.PENDING));
+  // (the page clears aria-busy when every part shows the newest result: app.js)
+  if (fr === W.PENDING) box.setAttribute('aria-busy', 'true');
   if (fr === W.PENDING) return; // the last plots stay, marked busy, until it arrives
   if (!fr) {
     setText($('bode-summary'), 'No controller: no frequency response.');
     return;
   }
+  // nothing to draw again when the responses (memoized answers: the same objects for the same
+  // inputs), the pins and the canvases' sizes are those drawn last (building the three specs
+  // costs more than drawSpec's own check)
+  const pins = store.state.pins.map((pin, i) => [pinResponse(pin), P.pinned()[i]]);
+  const sig = [fr, ...pins.flatMap(([pr, run]) => [pr, run ? run.label + ' ' + run.color : ''])];
+  const sizes = ['plot-bode-gang', 'plot-bode-mag', 'plot-bode-phase'].map((id) => { const z = cssSize.get(id); return z ? z.width + 'x' + z.height : ''; }).join() + ' ' + dpr();
+  if (last.sizes === sizes && last.sig.length === sig.length && last.sig.every((v, i) => v === sig[i])) return;
+  last.sig = [];
   const x = fr.w.map(log10);
   const m = fr.marks;
   const pt = (w, v, label, color) => (Number.isFinite(w) && Number.isFinite(v) && v > 0 ? [{ x: Math.log10(w), y: 20 * Math.log10(v), label, color }] : []);
@@ -77,42 +92,52 @@ export function drawBode(r) {
     { label: '|PS| load→y', x, y: fr.ps.map(db), color: C.ps },
   ];
   // pinned designs: their |S| faint, in their colours
-  store.state.pins.forEach((pin, i) => {
-    const pr = pinResponse(pin);
-    const run = P.pinned()[i];
+  pins.forEach(([pr, run]) => {
     if (pr && run) gang.push({ label: '|S| ' + run.label, x: pr.w.map(log10), y: pr.s.map(db), color: run.color, faint: true, width: 1.5 });
   });
-  drawSpec({
-    canvas: 'plot-bode-gang', kind: 'time', title: 'Gang of four (dB)', xlabel: 'log10 ω', ylabel: 'dB',
-    series: gang,
-    points: [...pt(m.w_ms, m.ms, 'Ms', C.s), ...pt(m.w_mt, m.mt, 'Mt', C.t)],
-    yrange: gangRange(gang),
-    vlines: Number.isFinite(m.bandwidth) ? [{ x: Math.log10(m.bandwidth), label: 'ω_bw', color: '#999999' }] : [],
-  });
+  if (has(0)) {
+    drawSpec({
+      canvas: 'plot-bode-gang', kind: 'time', title: 'Gang of four (dB)', xlabel: 'log10 ω', ylabel: 'dB',
+      series: gang,
+      points: [...pt(m.w_ms, m.ms, 'Ms', C.s), ...pt(m.w_mt, m.mt, 'Mt', C.t)],
+      yrange: gangRange(gang),
+      vlines: Number.isFinite(m.bandwidth) ? [{ x: Math.log10(m.bandwidth), label: 'ω_bw', color: '#999999' }] : [],
+    });
+  }
   const lmag = fr.l_mag.map(db);
-  drawSpec({
-    canvas: 'plot-bode-mag', kind: 'time', title: '|L(jω)| (dB)', xlabel: 'log10 ω', ylabel: 'dB',
-    series: [
-      { label: '|L|', x, y: lmag, color: C.s },
-      { label: '0 dB', x: [x[0], x[x.length - 1]], y: [0, 0], color: C.ref, dash: 'dot', width: 1 },
-    ],
-    points: Number.isFinite(m.gm) && Number.isFinite(m.w_pc) ? [{ x: Math.log10(m.w_pc), y: -20 * Math.log10(m.gm), label: 'GM ' + fmt(20 * Math.log10(m.gm)) + ' dB', color: C.mark }] : [],
-    vlines: Number.isFinite(m.w_gc) ? [{ x: Math.log10(m.w_gc), label: 'ω_gc', color: '#999999' }] : [],
-  });
+  if (has(1)) {
+    drawSpec({
+      canvas: 'plot-bode-mag', kind: 'time', title: '|L(jω)| (dB)', xlabel: 'log10 ω', ylabel: 'dB',
+      series: [
+        { label: '|L|', x, y: lmag, color: C.s },
+        { label: '0 dB', x: [x[0], x[x.length - 1]], y: [0, 0], color: C.ref, dash: 'dot', width: 1 },
+      ],
+      points: Number.isFinite(m.gm) && Number.isFinite(m.w_pc) ? [{ x: Math.log10(m.w_pc), y: -20 * Math.log10(m.gm), label: 'GM ' + fmt(20 * Math.log10(m.gm)) + ' dB', color: C.mark }] : [],
+      vlines: Number.isFinite(m.w_gc) ? [{ x: Math.log10(m.w_gc), label: 'ω_gc', color: '#999999' }] : [],
+    });
+  }
   // the phase: clipped below −720° (a dead time keeps turning it) so the margins stay readable
   const lo = -720;
   const ph = fr.l_phase.map((v) => (v >= lo ? v : null));
   const pmPt = Number.isFinite(m.pm) && Number.isFinite(m.w_gc) ? [{ x: Math.log10(m.w_gc), y: -180 + m.pm, label: 'PM ' + fmt(m.pm) + '°', color: C.mark }] : [];
-  drawSpec({
-    canvas: 'plot-bode-phase', kind: 'time', title: 'Phase of L(jω) (degrees, exact delay)', xlabel: 'log10 ω', ylabel: 'degrees',
-    series: [
-      { label: '∠L', x, y: ph, color: C.s },
-      { label: '−180°', x: [x[0], x[x.length - 1]], y: [-180, -180], color: C.ref, dash: 'dot', width: 1 },
-    ],
-    points: pmPt,
-    vlines: Number.isFinite(m.w_pc) ? [{ x: Math.log10(m.w_pc), label: 'ω_pc', color: '#999999' }] : [],
-  });
+  if (has(2)) {
+    drawSpec({
+      canvas: 'plot-bode-phase', kind: 'time', title: 'Phase of L(jω) (degrees, exact delay)', xlabel: 'log10 ω', ylabel: 'degrees',
+      series: [
+        { label: '∠L', x, y: ph, color: C.s },
+        { label: '−180°', x: [x[0], x[x.length - 1]], y: [-180, -180], color: C.ref, dash: 'dot', width: 1 },
+      ],
+      points: pmPt,
+      vlines: Number.isFinite(m.w_pc) ? [{ x: Math.log10(m.w_pc), label: 'ω_pc', color: '#999999' }] : [],
+    });
+  }
+  if (!lastPart) return;
   const text = summary(m);
   setText($('bode-summary'), text);
   for (const [id, v] of [['bode-ms', m.ms], ['bode-mt', m.mt], ['bode-bw', m.bandwidth]]) setText($(id), fmt(v));
+  last.sig = sig;
+  last.sizes = sizes;
 }
+
+// What drawBode drew last: the responses and pins (by identity) and the canvases' sizes.
+const last = { sig: [], sizes: '' };

@@ -24,3 +24,22 @@ export const setHidden = (node, hidden) => { if (node.hidden !== hidden) node.hi
 
 /** The message of an error (or the value as text). */
 export const errText = (e) => (e && typeof e === 'object' && 'message' in e ? String(e.message) : String(e));
+
+/**
+ * `fn()` in a task after the next frame (its pixels are committed by then): work that must not
+ * delay the frame that shows an input (a classroom panel, the history entry: pushState costs
+ * 6–20 ms on a long hash). Two hops: the task the frame's callbacks post first would run before
+ * those posted after it in the same frame (what measures "painted"); the second hop queues `fn`
+ * behind them. A hidden page has no frames: then after 200 ms.
+ */
+export function afterPaint(fn) {
+  let started = false;
+  const go = () => {
+    if (started) return;
+    started = true;
+    clearTimeout(timer);
+    setTimeout(() => setTimeout(fn, 0), 0);
+  };
+  const timer = setTimeout(go, 200);
+  requestAnimationFrame(go);
+}

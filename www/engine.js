@@ -66,10 +66,15 @@ function decodeBase64(b64) {
   return bytes;
 }
 
-/** Loads the module: from the base64 text the single-file page carries, else from pkg/. */
+/** Loads the module: the compilation the single-file page's early script started, else from
+ *  the base64 text that page carries, else from pkg/. */
 export async function load() {
   const b64 = globalThis.PIDLAB_WASM_B64;
-  if (typeof b64 === 'string') {
+  // (the single-file page's early script has started compiling it: scripts/inline.mjs)
+  const early = globalThis.PIDLAB_WASM_COMPILE;
+  if (early) {
+    eng.module = await early;
+  } else if (typeof b64 === 'string') {
     eng.module = await WebAssembly.compile(decodeBase64(b64));
   } else {
     const res = await fetch(new URL('./pkg/pidlab_bg.wasm', import.meta.url));

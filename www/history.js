@@ -10,7 +10,7 @@
 // steps back out of itself. An embedded page replaces its entry instead (Back in the host page
 // is the host's).
 import * as U from './url.js';
-import { $ } from './dom.js';
+import { $, afterPaint } from './dom.js';
 import { store } from './store.js';
 import { hashSuffix } from './instructor.js';
 
@@ -61,14 +61,15 @@ export function init(onRestore) {
   const up = () => { if (h.down) { h.down = false; commitSoon(); } };
   document.addEventListener('pointerup', up, true);
   document.addEventListener('pointercancel', up, true);
-  // A control's committed change (bubbles after the control's own listener has set the state).
+  // A control's committed change (bubbles after the control's own listener has set the state),
+  // entered after the frame that shows it (pushState costs 6–20 ms on a long hash).
   document.addEventListener('change', (e) => {
-    if (e.target && e.target.closest && e.target.closest('.controls, #embed-choices')) setTimeout(commit, 0);
+    if (e.target && e.target.closest && e.target.closest('.controls, #embed-choices')) afterPaint(commit);
   });
   // Buttons that change the state (pin, remove a pin, reset the perturbation, overlay …).
   document.addEventListener('click', (e) => {
     const b = e.target && e.target.closest ? e.target.closest('button') : null;
-    if (b && !b.closest('header')) setTimeout(commit, 0);
+    if (b && !b.closest('header')) afterPaint(commit);
   });
   document.addEventListener('keydown', (e) => {
     if (!(e.ctrlKey || e.metaKey) || e.altKey) return;

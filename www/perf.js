@@ -5,8 +5,10 @@
 // inputs: renders for a new input so far; shown: the `inputs` count whose results are on screen
 // (equal when the page shows its latest input).
 // startup: performance.now() at the app's start, the module compiled, the controls built;
-// firstPlotsAt: when the first response plots were drawn (bench/page-latency.mjs --first).
-export const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {}, inputs: 0, shown: 0, startup: {}, firstPlotsAt: 0 };
+// firstPlotsAt: when the first response plots were drawn (bench/page-latency.mjs --first), and
+// firstPhases: that render's phases;
+// classroom: the time of each later chunk that draws a classroom panel (app.js), the last 1000.
+export const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {}, inputs: 0, shown: 0, startup: {}, firstPlotsAt: 0, firstPhases: null, classroom: [] };
 
 /** Adds the time since `t0` to stage `name`; returns now (the next stage's start). */
 export const lap = (name, t0) => {

@@ -9,44 +9,10 @@ import * as P from './pins.js';
 import { showBanners } from './readouts.js';
 import { envelope } from './envelope.js';
 import { limitLines } from './realloop.js';
+import { dpr, sizeCanvas, cssSize } from './drawspec.js';
 
 const C_CUR = P.COLORS.current;
 const C_REF = P.COLORS.reference;
-
-const dpr = () => Math.max(1, Math.min(3, window.devicePixelRatio || 1));
-
-// CSS sizes of the canvases, kept by a ResizeObserver so a render never forces a layout.
-const cssSize = new Map();
-
-/** Watches the canvases' sizes; `onResize()` when one changed (the plots must be drawn again). */
-export function watchSizes(onResize) {
-  if (typeof ResizeObserver !== 'function') return;
-  const ro = new ResizeObserver((entries) => {
-    let any = false;
-    for (const e of entries) {
-      const old = cssSize.get(e.target.id);
-      const sz = { width: e.contentRect.width, height: e.contentRect.height };
-      if (!old || old.width !== sz.width || old.height !== sz.height) any = true;
-      cssSize.set(e.target.id, sz);
-    }
-    if (any) onResize();
-  });
-  for (const c of document.querySelectorAll('.plot canvas')) ro.observe(c);
-}
-
-function sizeCanvas(c) {
-  let sz = cssSize.get(c.id);
-  if (!sz) {
-    const rect = c.getBoundingClientRect();
-    sz = { width: rect.width, height: rect.height };
-    cssSize.set(c.id, sz);
-  }
-  const k = dpr();
-  const w = Math.max(60, Math.round(sz.width * k));
-  const h = Math.max(60, Math.round(sz.height * k));
-  if (c.width !== w) c.width = w;
-  if (c.height !== h) c.height = h;
-}
 
 /** Slice of a simulation between two times (samples at k·dt). */
 function windowed(sim, key, t0, t1) {

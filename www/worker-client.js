@@ -70,12 +70,15 @@ function remember(key, entry) {
   if (ctl.memo.size > MEMO_SIZE) ctl.memo.delete(ctl.memo.keys().next().value);
 }
 
-/** A worker served as a module next to this file, or the one scripts/inline.mjs inlined. */
+/** A worker served as a module next to this file, or the one scripts/inline.mjs inlined (the
+ *  two its early script started, then new ones). */
 function defaultMaker() {
   const src = globalThis.PIDLAB_WORKER_SRC;
   if (typeof src === 'string') {
-    const url = URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
-    return () => new Worker(url, { name: 'pidlab' });
+    // the workers the single-file page's early script started first (scripts/inline.mjs)
+    const early = Array.isArray(globalThis.PIDLAB_EARLY_WORKERS) ? globalThis.PIDLAB_EARLY_WORKERS.splice(0) : [];
+    const url = globalThis.PIDLAB_WORKER_URL || URL.createObjectURL(new Blob([src], { type: 'text/javascript' }));
+    return () => early.shift() || new Worker(url, { name: 'pidlab' });
   }
   const url = new URL('./worker.js', import.meta.url);
   return () => new Worker(url, { type: 'module', name: 'pidlab' });

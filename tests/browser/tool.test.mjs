@@ -351,14 +351,16 @@ test('undo/redo: buttons, Ctrl+Z / Ctrl+Shift+Z and Back step through committed 
     for (const v of [1.05, 1.1, 1.2, 1.3, 1.4]) { x.value = String(v); x.dispatchEvent(new Event('input', { bubbles: true })); }
     x.dispatchEvent(new Event('change', { bubbles: true }));
   });
-  await page.waitForTimeout(50);
+  // (the change is entered in the history after the frame that shows it: Undo is then enabled)
+  await page.waitForFunction(() => !document.getElementById('undo').disabled, null, { timeout: 3000 });
   const l1 = await lam();
   assert.ok(Math.abs(l1 - 1.4) < 0.01, `dragged to ${l1}`);
   const len1 = await page.evaluate(() => history.length);
   // a second change: the method's ε typed (committed when the box is left)
   await page.fill('#mp-epsilon-n', '0.5');
   await page.press('#mp-epsilon-n', 'Tab');
-  await page.waitForTimeout(50);
+  await page.waitForFunction((n) => history.length >= n, len1 + 1, { timeout: 3000 });
+  await page.waitForTimeout(50); // (no second entry follows)
   assert.equal(await page.evaluate(() => history.length), len1 + 1, 'one entry per change');
   assert.equal(await page.isDisabled('#undo'), false);
   // Undo button: ε back
