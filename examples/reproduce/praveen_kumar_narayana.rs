@@ -23,6 +23,15 @@ fn g(x: f64) -> String {
     }
 }
 
+/// A Markdown table row: the label, then the values formatted by [`g`].
+fn md_row(label: &str, vals: &[f64]) -> String {
+    let mut r = format!("| {label} |");
+    for v in vals {
+        let _ = write!(r, " {} |", g(*v));
+    }
+    r
+}
+
 /// IAE, ISE, ITAE, M_p, t_s, TV (dt = 0.01), TV (every 10th sample, 0.1).
 fn row(m: &RunMetrics) -> [f64; 7] {
     [m.iae, m.ise, m.itae, m.mp, m.ts, m.tv, m.tv_coarse]
@@ -778,16 +787,7 @@ fn pai_servo_setpoint_paths(s: &mut String) {
             .map_err(|e| e.to_string())
             .and_then(|c| studies::servo_and_regulatory(&plant, &c, 100.0));
         if let Ok((m, _)) = run {
-            let _ = writeln!(
-                s,
-                "| {eps} | {} | {} | {} | {} | {} | {} |",
-                g(m.iae),
-                g(m.ise),
-                g(m.itae),
-                g(m.mp),
-                g(m.ts),
-                g(m.tv)
-            );
+            let _ = writeln!(s, "{}", md_row(&eps.to_string(), &row(&m)[..6]));
         }
     }
     let p = t.pai_servo.values();
@@ -864,16 +864,7 @@ fn pai_near_boundary(s: &mut String) {
             .map_err(|e| e.to_string())
             .and_then(|c| studies::servo_and_regulatory(&plant, &c, 100.0));
         if let Ok((_, m)) = run {
-            let _ = writeln!(
-                s,
-                "| {theta} | {} | {} | {} | {} | {} | {} |",
-                g(m.iae),
-                g(m.ise),
-                g(m.itae),
-                g(m.mp),
-                g(m.ts),
-                g(m.tv)
-            );
+            let _ = writeln!(s, "{}", md_row(&theta.to_string(), &row(&m)[..6]));
         }
     }
     if let Some(p) = printed {
