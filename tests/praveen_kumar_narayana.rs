@@ -474,7 +474,7 @@ fn presets_load_and_tune_through_the_api() {
 /// filter. Its feedback path is the hand-written
 /// `(k_p + k_i/s + k_d s/(t_f s + 1))·(αs + 1)/(βs + 1)` (independent of `Pid`'s N
 /// convention) at several frequencies, to round-off.
-#[test]
+#[wasm_bindgen_test(unsupported = test)]
 fn filtered_design_is_the_hand_written_controller() {
     use pidlab::model::poly::C64 as C;
     use pidlab::rules::praveen_kumar_narayana::studies;
@@ -510,7 +510,7 @@ fn filtered_design_is_the_hand_written_controller() {
 
 /// As the lag shrinks, the filtered loop's metrics tend to the ideal-derivative loop's
 /// (Example 2's process, not neutral): the difference falls in proportion to t_f.
-#[test]
+#[wasm_bindgen_test(unsupported = test)]
 fn filtered_design_tends_to_the_ideal_one() {
     use pidlab::rules::praveen_kumar_narayana::studies;
     let plant = studies::simulated_plant(2, true);
