@@ -652,7 +652,8 @@ fn tables_2_to_5(s: &mut String) {
          filter and the log of an emulated ode45 run do not reproduce it (the rows list them).\n\
          - Example 2, proposed, nominal regulatory: IAE/ISE are 12 %/17 % above print while M_p, t_s \
          and TV agree within 5 %, and in the +40 % delay regulatory row IAE, ISE and M_p agree within \
-         1.5 % (ITAE 4 %, t_s 13 %, 1 % with Simulink's default derivative filter); we have \
+         1.5 % (ITAE 4 %; t_s 13 % with the ideal derivative, 1 % with Simulink's default \
+         derivative filter); we have \
          no explanation for the nominal IAE/ISE entries (possibly a different run).\n\
          - TV: the neutral loop's u has a jump every θ, so the sampled TV depends on the sampling \
          interval; our dt = 0.01 values are 3× the printed ones for Example 1, every-tenth-sample \
@@ -746,7 +747,8 @@ fn simulink_filter_rows(s: &mut String) {
          ideal derivative (TV of u on the 0.01 samples in both). The filter moves {toward} of \
          Example 2's {ex2_cells} cells toward print (the others move by {:.2} % or less) and reproduces the +40 % \
          regulatory t_s (the ideal derivative's 18.9 s is 13 % short); on Example 1 it brings \
-         M_p and t_s closer but leaves ITAE and TV where they were. This points to the authors' Simulink PID block \
+         every M_p closer (the servo peak becomes 0.20007, printed 0.2001), moves t_s by about \
+         1 % either way and leaves ITAE and TV where they were. This points to the authors' Simulink PID block \
          with its default filter, an unstated simulation detail; it is a study option here, \
          and the rows where it reproduces more cells than the default use it (the cause column \
          names it).\n",
