@@ -7,6 +7,7 @@ use pidlab::rules::praveen_kumar_narayana::{self as pk, tables};
 use std::fmt::Write;
 
 use crate::ledger;
+use pidlab::model::controller::Controller;
 // The fixed-grid TV of a run (a study option computed from the engine's samples).
 use pidlab::rules::medarametla_manimozhi2018::studies::{tv_on_grid, TvSignal};
 
@@ -20,6 +21,15 @@ fn g(x: f64) -> String {
     } else {
         format!("{x:.5}")
     }
+}
+
+/// A Markdown table row: the label, then the values formatted by [`g`].
+fn md_row(label: &str, vals: &[f64]) -> String {
+    let mut r = format!("| {label} |");
+    for v in vals {
+        let _ = write!(r, " {} |", g(*v));
+    }
+    r
 }
 
 /// IAE, ISE, ITAE, M_p, t_s, TV (dt = 0.01), TV (every 10th sample, 0.1).
@@ -56,14 +66,19 @@ const PAPER: &str = "praveen_kumar_narayana";
 
 const COLUMNS: [&str; 6] = ["IAE", "ISE", "ITAE", "M_p", "t_s", "TV"];
 
+/// The study option of the proposed rows: Simulink's PID block's default derivative filter.
+const SIMULINK_FILTER: &str =
+    "derivative on y filtered as Simulink's PID block does by default (N = 100, lag 0.01)";
+
 /// The TV the paper may have logged, as study options: fixed grids of 0.02, 0.05, 0.1 and 0.2
 /// instead of the 0.01 output samples (the neutral loop's u jumps every θ, so the grid
 /// matters), and for the load run the plant input u + d.
 fn tv_options(
-    c: &pidlab::model::controller::Controller,
+    c: &Controller,
     example: usize,
     delay_plus_40: bool,
     load: bool,
+    filtered: Option<&Controller>,
 ) -> Vec<(String, Option<f64>)> {
     let plant = studies::simulated_plant(example, delay_plus_40);
     let t_end = if example == 1 { 100.0 } else { 600.0 };
@@ -92,6 +107,21 @@ fn tv_options(
                 Some(tv_on_grid(&r, 0.0, t_end, grid, signal)),
             ));
         }
+    }
+    // The proposed design with Simulink's default derivative filter: TV on the 0.01 samples.
+    if let Some(f) = filtered {
+        let tv = pidlab::analysis::simulate(&plant, f, &sc)
+            .ok()
+            .filter(|r| !r.diverged)
+            .and_then(|r| {
+                if load {
+                    r.metrics.regulatory
+                } else {
+                    r.metrics.servo
+                }
+            })
+            .map(|m| m.tv);
+        out.push((SIMULINK_FILTER.into(), tv));
     }
     // The log of a Simulink run with its default ode45 settings (see `simulink.rs`).
     out.extend(
@@ -129,15 +159,17 @@ fn pai_stable_alternative(load: bool) -> Option<([f64; 6], String)> {
 
 /// Whole-run study options for a row of Tables 2-5 (IAE, ISE, ITAE, M_p, t_s): the dead time
 /// as a first- or second-order Padé approximant in the simulated plant (the paper's own
-/// simulation may have used one), and for Pai et al. 2010 the other PID structures their three
-/// printed numbers could mean.
+/// simulation may have used one); for Pai et al. 2010 the other PID structures their three
+/// printed numbers could mean and, for the servo rows, other set-point paths with our
+/// feedback path (which reproduces Example 1's regulatory row); and IAE, ISE, ITAE, M_p
+/// post-processed from the log of an emulated Simulink ode45 run ([`log_options`]).
 fn run_options(
     pai: bool,
     example: usize,
     delay_plus_40: bool,
     load: bool,
 ) -> Vec<(String, Vec<Option<f64>>)> {
-    use pidlab::model::controller::Pid;
+    use pidlab::model::controller::{lag, lead_lag, Pid};
     use pidlab::model::plant::Plant;
     let plant = studies::simulated_plant(example, delay_plus_40);
     let t_end = if example == 1 { 100.0 } else { 600.0 };
@@ -148,6 +180,7 @@ fn run_options(
     } else {
         studies::proposed_controller(example)
     };
+    let default_ctrl = default_c.clone();
     let mut cases: Vec<(
         String,
         Option<Plant>,
@@ -164,6 +197,10 @@ fn run_options(
             default_c.ok(),
         ),
     ];
+    if !pai {
+        let c = studies::proposed_controller_filtered(example, 1.0 / studies::SIMULINK_PID_N).ok();
+        cases.push((SIMULINK_FILTER.into(), Some(plant.clone()), c));
+    }
     if pai {
         for (name, pid) in [
             (
@@ -185,8 +222,42 @@ fn run_options(
         ] {
             cases.push((name.into(), Some(plant.clone()), pid.to_controller().ok()));
         }
+        for (name, n) in [
+            (
+                "series PID, derivative lag 0.05τ_D (N = 20), on the error",
+                20.0,
+            ),
+            (
+                "series PID, derivative lag 0.01τ_D (N = 100), on the error",
+                100.0,
+            ),
+        ] {
+            let c = Pid::parallel(q.kc, q.kc / q.ti, 0.0)
+                .series_filter(lead_lag(q.td * (1.0 + 1.0 / n), q.td / n))
+                .to_controller()
+                .ok();
+            cases.push((name.into(), Some(plant.clone()), c));
+        }
+        if !load {
+            // Other set-point paths with our feedback path (the regulatory run is the same).
+            if let Ok(ours) = pk::pai2010_controller(q.kc, q.ti, q.td) {
+                let pi = Pid::parallel(q.kc, q.kc / q.ti, 0.0).to_controller().ok();
+                for (name, c) in [
+                    (
+                        "our series PID with P and I on the error, the derivative lead-lag on y only",
+                        pi.and_then(|pi| Controller::new(pi.cr, ours.cy.clone()).ok()),
+                    ),
+                    (
+                        "our series PID with a set-point filter 1/(τ_I s + 1)",
+                        Some(ours.with_setpoint_filter(&lag(q.ti))),
+                    ),
+                ] {
+                    cases.push((name.into(), Some(plant.clone()), c));
+                }
+            }
+        }
     }
-    cases
+    let mut out: Vec<(String, Vec<Option<f64>>)> = cases
         .into_iter()
         .map(|(name, p, c)| {
             let m = p
@@ -200,6 +271,40 @@ fn run_options(
                     .collect()
             });
             (name, vals)
+        })
+        .collect();
+    if let Ok(c) = &default_ctrl {
+        out.extend(log_options(&plant, c, t_end, load));
+    }
+    out
+}
+
+/// IAE, ISE, ITAE and M_p post-processed (trapezoid rule, largest logged value) from the
+/// log of an emulated Simulink ode45 run with default tolerances and Refine 1 (see
+/// `simulink.rs`), MaxStep auto or capped at θ; t_s is not computed on the log (—).
+fn log_options(
+    plant: &pidlab::model::plant::Plant,
+    c: &Controller,
+    t_end: f64,
+    load: bool,
+) -> Vec<(String, Vec<Option<f64>>)> {
+    let (sp, d) = if load { (0.0, 0.2) } else { (0.2, 0.0) };
+    let sc = pidlab::sim::Scenario::steps(t_end, 0.01, 0.0, sp, 0.0, d);
+    [(false, "MaxStep auto"), (true, "MaxStep = θ")]
+        .into_iter()
+        .map(|(cap, step)| {
+            let m = crate::simulink::log_metrics(plant, c, &sc, cap, 1);
+            (
+                format!(
+                    "metrics from the logged points of an emulated Simulink ode45 run ({step})"
+                ),
+                m.map_or(vec![None; 5], |m| {
+                    m.iter()
+                        .map(|v| Some(*v).filter(|v| v.is_finite()))
+                        .chain([None])
+                        .collect()
+                }),
+            )
         })
         .collect()
 }
@@ -406,9 +511,26 @@ fn tables_2_to_5(s: &mut String) {
                         } else {
                             studies::proposed_controller(table.example)
                         };
+                        let filtered = (mi == 1)
+                            .then(|| {
+                                studies::proposed_controller_filtered(
+                                    table.example,
+                                    1.0 / studies::SIMULINK_PID_N,
+                                )
+                                .ok()
+                            })
+                            .flatten();
                         let opts = ctrl
                             .ok()
-                            .map(|c| tv_options(&c, table.example, table.delay_plus_40, ri == 1))
+                            .map(|c| {
+                                tv_options(
+                                    &c,
+                                    table.example,
+                                    table.delay_plus_40,
+                                    ri == 1,
+                                    filtered.as_ref(),
+                                )
+                            })
                             .unwrap_or_default();
                         let stable_alt = (mi == 0 && table.example == 2 && table.delay_plus_40)
                             .then(|| pai_stable_alternative(ri == 1))
@@ -513,6 +635,7 @@ fn tables_2_to_5(s: &mut String) {
         }
     }
     let _ = writeln!(s);
+    simulink_filter_rows(s);
     let _ = writeln!(
         s,
         "**What reproduces and what does not.**\n\n\
@@ -525,10 +648,12 @@ fn tables_2_to_5(s: &mut String) {
          small persistent error in the paper's simulation explains this pattern (ISE is blind to it, \
          ITAE weighs it by t): e.g. ≈1e-4 over 50 s adds ≈0.005 to IAE and ≈0.15 to ITAE; the printed \
          M_p = 0.2001 for a response whose exact peak is 0.2000 points the same way. This is our \
-         reading, not something the paper states.\n\
+         reading, not something the paper states; Padé delays, Simulink's default derivative \
+         filter and the log of an emulated ode45 run do not reproduce it (the rows list them).\n\
          - Example 2, proposed, nominal regulatory: IAE/ISE are 12 %/17 % above print while M_p, t_s \
          and TV agree within 5 %, and in the +40 % delay regulatory row IAE, ISE and M_p agree within \
-         1.5 % (ITAE 4 %, t_s 13 %); we have \
+         1.5 % (ITAE 4 %; t_s 13 % with the ideal derivative, 1 % with Simulink's default \
+         derivative filter); we have \
          no explanation for the nominal IAE/ISE entries (possibly a different run).\n\
          - TV: the neutral loop's u has a jump every θ, so the sampled TV depends on the sampling \
          interval; our dt = 0.01 values are 3× the printed ones for Example 1, every-tenth-sample \
@@ -539,7 +664,8 @@ fn tables_2_to_5(s: &mut String) {
          within 2.5 %), and its +40 % delay row roughly (M_p equal, IAE 11 % high); the servo rows \
          and Example 2 do not (Example 2 with +40 % delay is unstable with this mapping, the printed \
          one settles after 257 s, i.e. it is barely stable too). The comparison rows are reported, \
-         not held to a tolerance.\n"
+         not held to a tolerance; the subsections below show what was tried for the servo rows \
+         and how sensitive the near-unstable loops are.\n"
     );
     for (name, a) in studies::pai2010_example2_analysis() {
         if let Ok(a) = a {
@@ -554,6 +680,281 @@ fn tables_2_to_5(s: &mut String) {
             );
         }
     }
+    pai_servo_setpoint_paths(s);
+    pai_near_boundary(s);
+    log_integrals_note(s);
+}
+
+/// The proposed rows of Tables 2-5 with the study option "Simulink's PID block's default
+/// derivative filter" (N = 100, a lag 0.01 on the derivative of y), beside the default's:
+/// how many of the 48 printed cells each reproduces within 2 %.
+fn simulink_filter_rows(s: &mut String) {
+    let _ = writeln!(
+        s,
+        "#### The proposed rows with Simulink's default derivative filter\n\n\
+         A Simulink Transfer Fcn block cannot hold the improper k_d s of Eq. (5); the PID \
+         Controller block realizes it as k_d s·N/(s + N) with N = 100 by default, a lag of \
+         0.01 whatever the gains. The proposed rows with that filter on the derivative of y \
+         (ours / printed; everything else as above):\n"
+    );
+    let _ = writeln!(
+        s,
+        "| condition | response | IAE | ISE | ITAE | M_p | t_s | TV |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|");
+    let (mut n_filter, mut n_default, mut n_cells) = (0usize, 0usize, 0usize);
+    // Example 2's cells the filter moves toward print, of all Example 2's cells.
+    let (mut toward, mut ex2_cells, mut away_max) = (0usize, 0usize, 0.0f64);
+    for (st, table) in studies::tables_2_to_5()
+        .into_iter()
+        .zip(tables::TABLES_2_TO_5.iter())
+    {
+        let plant = studies::simulated_plant(table.example, table.delay_plus_40);
+        let t_end = if table.example == 1 { 100.0 } else { 600.0 };
+        let run =
+            studies::proposed_controller_filtered(table.example, 1.0 / studies::SIMULINK_PID_N)
+                .map_err(|e| e.to_string())
+                .and_then(|c| studies::servo_and_regulatory(&plant, &c, t_end));
+        let (Ok((fs, fr)), Ok((ds, dr))) = (run, st.proposed) else {
+            continue;
+        };
+        for (name, f, d, p) in [
+            ("servo", fs, ds, table.proposed_servo.values()),
+            ("regulatory", fr, dr, table.proposed_regulatory.values()),
+        ] {
+            let (f, d) = (row(&f), row(&d));
+            let mut line = format!("| {} | {name} |", table.title);
+            for k in 0..6 {
+                n_cells += 1;
+                n_filter += usize::from(ledger::within2(p[k], f[k]));
+                n_default += usize::from(ledger::within2(p[k], d[k]));
+                if table.example == 2 {
+                    ex2_cells += 1;
+                    if (f[k] - p[k]).abs() < (d[k] - p[k]).abs() {
+                        toward += 1;
+                    } else {
+                        away_max = away_max.max(((f[k] - d[k]) / d[k]).abs());
+                    }
+                }
+                let _ = write!(line, " {} / {} |", g(f[k]), p[k]);
+            }
+            let _ = writeln!(s, "{line}");
+        }
+    }
+    let _ = writeln!(
+        s,
+        "\nWithin 2 % of print: {n_filter} of {n_cells} cells with the filter, {n_default} with the \
+         ideal derivative (TV of u on the 0.01 samples in both). The filter moves {toward} of \
+         Example 2's {ex2_cells} cells toward print (the others move by {:.2} % or less) and reproduces the +40 % \
+         regulatory t_s (the ideal derivative's 18.9 s is 13 % short); on Example 1 it brings \
+         every M_p closer (the servo peak becomes 0.20007, printed 0.2001), moves t_s by about \
+         1 % either way and leaves ITAE and TV where they were. This points to the authors' Simulink PID block \
+         with its default filter, an unstated simulation detail; it is a study option here, \
+         and the rows where it reproduces more cells than the default use it (the cause column \
+         names it).\n",
+        100.0 * away_max
+    );
+}
+
+/// Pai et al. 2010, Example 1 nominal servo: set-point paths with our feedback path (which
+/// reproduces the regulatory row), a weight ε on P and the derivative lead-lag on y only.
+fn pai_servo_setpoint_paths(s: &mut String) {
+    use pidlab::model::controller::Pid;
+    let q = tables::TABLE1_PAI2010[0];
+    let Some(t) = tables::TABLES_2_TO_5
+        .iter()
+        .find(|t| t.example == 1 && !t.delay_plus_40)
+    else {
+        return;
+    };
+    let Ok(ours) = pk::pai2010_controller(q.kc, q.ti, q.td) else {
+        return;
+    };
+    let _ = writeln!(
+        s,
+        "#### Pai et al. 2010, Example 1 servo: set-point paths with our feedback path\n\n\
+         Our feedback path C_y (the series PID with derivative lag 0.1τ_D) reproduces Example 1's \
+         regulatory row, so the servo row can only differ through the set-point path C_r. With \
+         C_r = K_c(ε + 1/(τ_I s)) (P weighted by ε, the derivative lead-lag on y only; ε = 1 is \
+         \"P and I on the error\"):\n"
+    );
+    let _ = writeln!(s, "| ε | IAE | ISE | ITAE | M_p | t_s | TV |");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|");
+    let plant = studies::simulated_plant(1, false);
+    for eps in [0.0, 0.2, 0.4, 0.6, 0.8, 1.0] {
+        let run = Pid::parallel(q.kc, q.kc / q.ti, 0.0)
+            .weights(eps, 1.0)
+            .to_controller()
+            .and_then(|pi| Controller::new(pi.cr, ours.cy.clone()))
+            .map_err(|e| e.to_string())
+            .and_then(|c| studies::servo_and_regulatory(&plant, &c, 100.0));
+        if let Ok((m, _)) = run {
+            let _ = writeln!(s, "{}", md_row(&eps.to_string(), &row(&m)[..6]));
+        }
+    }
+    let p = t.pai_servo.values();
+    let _ = writeln!(
+        s,
+        "| printed | {} | {} | {} | {} | {} | {} |\n\n\
+         No ε gives the printed row: IAE, ISE and ITAE pass through their printed values near \
+         ε = 0.8, TV near 0.75, M_p near 0.9, while t_s is at its printed 13.88 s only near \
+         ε = 0.6, where M_p is 0.25. Exploratory scans (not part of this report) of set-point \
+         paths K_c(b + 1/(τ_I s) + c·D + d·D/(τ_I s)), with D the filtered derivative, and of set-point \
+         lags found none within 8 % on all six columns.\n",
+        p[0], p[1], p[2], p[3], p[4], p[5]
+    );
+}
+
+/// Whether the paper's integrals could be trapezoids over a default Simulink log: Example 2's
+/// proposed servo run, whose printed ITAE matches our exact one.
+fn log_integrals_note(s: &mut String) {
+    let plant = studies::simulated_plant(2, false);
+    let Ok(c) = studies::proposed_controller(2) else {
+        return;
+    };
+    let sc = pidlab::sim::Scenario::steps(600.0, 0.01, 0.0, 0.2, 0.0, 0.0);
+    let Ok((exact, _)) = studies::servo_and_regulatory(&plant, &c, 600.0) else {
+        return;
+    };
+    let Some(t) = tables::TABLES_2_TO_5
+        .iter()
+        .find(|t| t.example == 2 && !t.delay_plus_40)
+    else {
+        return;
+    };
+    if let Some(m) = crate::simulink::log_metrics(&plant, &c, &sc, false, 1) {
+        let _ = writeln!(
+            s,
+            "#### Integrals on a logged run\n\n\
+             The rows list, as a study option, IAE, ISE, ITAE and M_p computed from the logged \
+             points of an emulated Simulink ode45 run (default tolerances, Refine 1, the \
+             trapezoid rule; `tests/simulink_log.rs` pins the computation to analytic integrals \
+             and to the exact simulator). It reproduces no further cell, and it rules the idea \
+             out: on Example 2's proposed servo run (t_end = 600) the log gives ITAE {} where \
+             the exact integral is {} and the paper prints {} — the solver's small residual \
+             error, weighted by t over 600 s, dominates a logged ITAE. The paper's integrals \
+             were accurate ones.\n",
+            g(m[2]),
+            g(exact.itae),
+            t.proposed_servo.values()[2]
+        );
+    }
+}
+
+/// Pai et al. 2010's loops near their stability boundary: how much a small change of the
+/// simulated loop moves the printed columns (Example 1 at +40 % delay with the dead time
+/// 1-2 % shorter; Example 2 at +40 % delay with the series PID's derivative lag τ_D/N).
+fn pai_near_boundary(s: &mut String) {
+    use pidlab::model::controller::{lead_lag, Pid};
+    let _ = writeln!(
+        s,
+        "#### Pai et al. 2010: the near-unstable loops\n\n\
+         Example 1, +40 % dead time, our series mapping, regulatory run, with the dead time \
+         slightly shorter than 1.4 × 0.1 (a sensitivity study, not a reproduction):\n"
+    );
+    let _ = writeln!(s, "| θ | IAE | ISE | ITAE | M_p | t_s | TV |");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|");
+    let q = tables::TABLE1_PAI2010[0];
+    let printed = tables::TABLES_2_TO_5
+        .iter()
+        .find(|t| t.example == 1 && t.delay_plus_40)
+        .map(|t| t.pai_regulatory.values());
+    for theta in [0.14, 0.139, 0.138] {
+        let mut plant = studies::simulated_plant(1, false);
+        plant.delay = theta;
+        let run = pk::pai2010_controller(q.kc, q.ti, q.td)
+            .map_err(|e| e.to_string())
+            .and_then(|c| studies::servo_and_regulatory(&plant, &c, 100.0));
+        if let Ok((_, m)) = run {
+            let _ = writeln!(s, "{}", md_row(&theta.to_string(), &row(&m)[..6]));
+        }
+    }
+    if let Some(p) = printed {
+        let _ = writeln!(
+            s,
+            "| printed | {} | {} | {} | {} | {} | {} |",
+            p[0], p[1], p[2], p[3], p[4], p[5]
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\nExample 2: the series PID K_c(1 + 1/(τ_I s))(1 + τ_D s/((τ_D/N)s + 1)) on the error \
+         for several N (N = 10 is our mapping); stability of the +40 % loop by the Nyquist \
+         criterion:\n"
+    );
+    let _ = writeln!(
+        s,
+        "| N | +40 %: stable | servo IAE | servo t_s | reg. IAE | reg. ISE | reg. M_p | reg. t_s | nominal: reg. IAE | reg. ISE | reg. M_p | reg. t_s |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let q = tables::TABLE1_PAI2010[1];
+    let (Some(p40), Some(p0)) = (
+        tables::TABLES_2_TO_5
+            .iter()
+            .find(|t| t.example == 2 && t.delay_plus_40),
+        tables::TABLES_2_TO_5
+            .iter()
+            .find(|t| t.example == 2 && !t.delay_plus_40),
+    ) else {
+        return;
+    };
+    for n in [10.0, 20.0, 30.0, 50.0, 100.0] {
+        let Ok(c) = Pid::parallel(q.kc, q.kc / q.ti, 0.0)
+            .series_filter(lead_lag(q.td * (1.0 + 1.0 / n), q.td / n))
+            .to_controller()
+        else {
+            continue;
+        };
+        let mut row = format!("| {n} |");
+        let stable = pidlab::analysis::freq::analyze(&studies::simulated_plant(2, true), &c)
+            .map_or("—".to_string(), |a| {
+                if a.stable { "yes" } else { "no" }.into()
+            });
+        let _ = write!(row, " {stable} |");
+        for plus in [true, false] {
+            let plant = studies::simulated_plant(2, plus);
+            match studies::servo_and_regulatory(&plant, &c, 600.0) {
+                Ok((sv, rg)) if rg.ts.is_finite() => {
+                    if plus {
+                        let _ = write!(row, " {} | {} |", g(sv.iae), g(sv.ts));
+                    }
+                    let _ = write!(
+                        row,
+                        " {} | {} | {} | {} |",
+                        g(rg.iae),
+                        g(rg.ise),
+                        g(rg.mp),
+                        g(rg.ts)
+                    );
+                }
+                _ => {
+                    let cells = if plus { 6 } else { 4 };
+                    let _ = write!(row, "{}", " — |".repeat(cells));
+                }
+            }
+        }
+        let _ = writeln!(s, "{row}");
+    }
+    let (sv, rg, rg0) = (
+        p40.pai_servo.values(),
+        p40.pai_regulatory.values(),
+        p0.pai_regulatory.values(),
+    );
+    let _ = writeln!(
+        s,
+        "| printed | | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n\n\
+         Both loops sit close to their stability boundary, where the integrals and the settling \
+         time change by tens of per cent for a 1 % change of the loop: Example 1's printed \
+         +40 % regulatory row is met within 3 % by θ = 0.138 instead of 0.14, and Example 2's \
+         printed +40 % rows (settling in 257 s and 234 s) lie between N = 20 and N = 100 of the \
+         series family, whose N = 10 member (ours, which reproduces Example 1's nominal \
+         regulatory row) is unstable there; near N = 30 the regulatory IAE and t_s of both \
+         conditions come within 7 % of print, but the first peak (M_p) and ISE stay below print \
+         for every N (at N = 30 by 4-5 % and 12-16 %), so no member reproduces the rows. Neither detail \
+         is stated by the paper (it gives neither Pai et al.'s structure nor its filter), so the \
+         rows stay at our mapping and are not held to a tolerance.\n",
+        sv[0], sv[4], rg[0], rg[1], rg[3], rg[4], rg0[0], rg0[1], rg0[3], rg0[4]
+    );
 }
 
 /// Fig. 2 regenerated.

@@ -213,6 +213,16 @@ pub fn run(
     sc: &Scenario,
     cap_at_delay: bool,
 ) -> Option<(Vec<f64>, Vec<f64>)> {
+    run_log(plant, c, sc, cap_at_delay).map(|(ts, us, _)| (ts, us))
+}
+
+/// As [`run`], with the logged y beside u: `(t, u, y)`.
+pub fn run_log(
+    plant: &Plant,
+    c: &Controller,
+    sc: &Scenario,
+    cap_at_delay: bool,
+) -> Option<(Vec<f64>, Vec<f64>, Vec<f64>)> {
     if c.model_loop.is_some() {
         return None;
     }
@@ -260,7 +270,7 @@ pub fn run(
     let u0 = lp.eval(t, &x, w0, true, &mut k[0]);
     buf.t.push(t);
     buf.v.push(u0 + lp.load(t, true));
-    let (mut ts, mut us) = (vec![t], vec![u0]);
+    let (mut ts, mut us, mut ys) = (vec![t], vec![u0], vec![lp.p.out(&x[..np])]);
     // Initial step (ode45): ‖f₀ / max(|y₀|, AbsTol/RelTol)‖∞ with AbsTol = 1e-6.
     let threshold = 1e-6 / RTOL;
     let rh = k[0].iter().map(|f| f.abs() / threshold).fold(0.0, f64::max) / (0.8 * RTOL.powf(0.2));
@@ -346,6 +356,7 @@ pub fn run(
                     let uq = lp.eval(tq, &xq, buf.at(tq - lp.theta), false, &mut scratch);
                     ts.push(tq);
                     us.push(uq);
+                    ys.push(lp.p.out(&xq[..np]));
                 }
                 let t_new = if to_break {
                     next_break.unwrap_or(t + h)
@@ -389,7 +400,7 @@ pub fn run(
             to_break = false;
         }
     }
-    Some((ts, us))
+    Some((ts, us, ys))
 }
 
 /// TV = Σ|Δu| over the logged points with a ≤ t < b (t ≤ b at the run's end), the first
@@ -438,4 +449,42 @@ pub fn tv_options(
             v
         })
         .collect()
+}
+
+/// `∫ f dt` by the trapezoid rule over the logged points `ts` (f evaluated at each index).
+fn trapezoid(ts: &[f64], f: impl Fn(usize) -> f64) -> f64 {
+    (1..ts.len())
+        .map(|i| 0.5 * (ts[i] - ts[i - 1]) * (f(i - 1) + f(i)))
+        .sum()
+}
+
+/// IAE, ISE, ITAE and M_p of one run (a single set-point or load step at t = 0) computed on
+/// the log of an emulated Simulink run with Refine factor `refine` (1: the major steps, as a
+/// To Workspace block logs them by default; 4: `ode45`'s), the integrals by the trapezoid rule
+/// over the logged points, as a user who post-processes the logged signals would; M_p the
+/// largest logged y (servo) or |y| (load). `None` when the loop is not emulable.
+pub fn log_metrics(
+    plant: &Plant,
+    c: &Controller,
+    sc: &Scenario,
+    cap_at_delay: bool,
+    refine: usize,
+) -> Option<[f64; 4]> {
+    let (ts, _, ys) = run_log(plant, c, sc, cap_at_delay)?;
+    let stride = REFINE / refine.clamp(1, REFINE);
+    let ts: Vec<f64> = ts.into_iter().step_by(stride).collect();
+    let ys: Vec<f64> = ys.into_iter().step_by(stride).collect();
+    let r = sc.setpoint.size;
+    let e = |i: usize| r - ys[i];
+    let servo = r != 0.0;
+    let mp = ys
+        .iter()
+        .map(|y| if servo { *y } else { y.abs() })
+        .fold(f64::NEG_INFINITY, f64::max);
+    Some([
+        trapezoid(&ts, |i| e(i).abs()),
+        trapezoid(&ts, |i| e(i) * e(i)),
+        trapezoid(&ts, |i| ts[i] * e(i).abs()),
+        mp,
+    ])
 }

@@ -11,7 +11,7 @@ use super::{
 use crate::analysis::freq::{analyze, Analysis};
 use crate::analysis::simulate;
 use crate::error::Result;
-use crate::model::controller::Controller;
+use crate::model::controller::{lead_lag, Controller, Pid};
 use crate::model::plant::Plant;
 use crate::rules::{self, Params, Tuning};
 use crate::sim::Scenario;
@@ -97,6 +97,35 @@ pub fn proposed_controller(example: usize) -> Result<Controller> {
     let p = [EX1, EX2_REDUCED][example - 1];
     let d = design(&p, LAMBDA_PAPER[example - 1])?;
     controller(&d, EPSILON, Derivative::Measurement)
+}
+
+/// Simulink's PID Controller block's default derivative filter coefficient: the derivative
+/// is `K_d·s·N/(s + N)`, a lag `1/N` whatever the gains.
+pub const SIMULINK_PID_N: f64 = 100.0;
+
+/// The designed (proposed) controller as a study option: Example `example`'s Table 1 design
+/// with its derivative (on the measurement) filtered by a lag `t_f`,
+/// `Cy = (k_p + k_i/s + k_d s/(t_f s + 1))·(αs + 1)/(βs + 1)`, `Cr = (ε k_p + k_i/s)·(αs + 1)/(βs + 1)`
+/// (ε = 0.2). Errors (paths `example`, `t_f`): an example other than 1 or 2, `t_f` not
+/// finite and > 0. With `t_f = 1/`[`SIMULINK_PID_N`] it is the loop a Simulink model built from
+/// the PID Controller block with its default filter would simulate; `t_f → 0` gives
+/// [`proposed_controller`].
+pub fn proposed_controller_filtered(example: usize, t_f: f64) -> Result<Controller> {
+    if !(1..=2).contains(&example) {
+        return Err(crate::error::Error::new(
+            "example",
+            format!("must be 1 or 2 (got {example})"),
+        ));
+    }
+    crate::error::positive("t_f", t_f)?;
+    let p = [EX1, EX2_REDUCED][example - 1];
+    let d = design(&p, LAMBDA_PAPER[example - 1])?;
+    // Pid's filter is T_f = (K_d/K_p)/N: the N that gives the lag t_f.
+    Pid::parallel(d.kp, d.ki, d.kd)
+        .weights(EPSILON, 0.0)
+        .filter_n(d.kd / (d.kp * t_f))
+        .series_filter(lead_lag(d.alpha, d.beta))
+        .to_controller()
 }
 
 /// The plant a condition of Tables 2-5 is simulated on: Eq. (20) for Example 1, the process of
