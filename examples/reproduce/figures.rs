@@ -551,14 +551,43 @@ pub fn figures(dir: &Path) -> Result<Vec<Figure>, String> {
     {
         let f = "medarametla_fig2_ms_lambda.csv";
         let csv = Csv::read(dir, f)?;
-        let curves = groups(&csv, "lambda_over_theta", "ms", |id| format!("curve {id}"))?;
+        let mut all = groups(&csv, "lambda_over_theta", "ms", |id| id.to_string())?;
+        // Ms ≤ 4 shown (the range of Table 1's guidelines, 1.3-3, with room): near the
+        // smallest admissible λ Ms grows without bound and would flatten every curve.
+        window(&mut all, ((f64::NEG_INFINITY, f64::INFINITY), (0.0, 4.0)));
+        // The paper's panels, by the curve names' family (studies::fig2's names).
+        let mut panels = vec![];
+        for (title, family) in [
+            ("(a) pure integrating process with time delay", "PIPTD"),
+            ("(b) double integrating process with time delay", "DIPTD"),
+            (
+                "(c) integrating first order process with time delay",
+                "IFOPTD θ",
+            ),
+            ("(d) IFOPTD with zero", "IFOPTD+zero"),
+        ] {
+            let mut p = panel(
+                "Ms",
+                all.iter()
+                    .filter(|c| c.label.starts_with(family))
+                    .map(|c| curve(&c.label, c.points.clone()))
+                    .collect(),
+            );
+            p.title = title.into();
+            panels.push(p);
+        }
+        let drawn: usize = panels.iter().map(|p| p.curves.len()).sum();
+        if drawn != all.len() {
+            return Err(format!("{f}: {} curves, {drawn} in the panels", all.len()));
+        }
         let mut ch = chart(
-            "Medarametla & Manimozhi 2018, Fig. 2: Ms against λ/θ (curves as listed in the report)"
+            "Medarametla & Manimozhi 2018, Fig. 2: variation of Ms with λ/θ (k = θ = 1, Ms ≤ 4 shown)"
                 .into(),
             "λ/θ",
             None,
-            vec![panel("Ms", curves)],
+            panels,
         );
+        ch.legend = Legend::UpperRight;
         ch.x_log = true;
         add(MED, "Fig. 2", "medarametla_fig2.svg", &[f], ch);
         let s = "medarametla_cstr_servo.csv";
@@ -653,6 +682,14 @@ fn medarametla(dir: &Path, v: &mut Vec<Figure>) -> Result<(), String> {
             } else {
                 "perturbed response (gain and delay +20 %)"
             };
+            // Figs. 11-12 (Example 5) show the response only; the others also the control.
+            let mut panels = vec![panel("output y", wide(&csv, "y_", medarametla_label)?)];
+            if ex != 5 {
+                panels.push(panel(
+                    "control signal u",
+                    wide(&csv, "u_", medarametla_label)?,
+                ));
+            }
             v.push(Figure {
                 paper: MED,
                 number,
@@ -662,10 +699,7 @@ fn medarametla(dir: &Path, v: &mut Vec<Figure>) -> Result<(), String> {
                     format!("Medarametla & Manimozhi 2018, {number}: {what} of Example {ex}"),
                     "time (s)",
                     None,
-                    vec![
-                        panel("output y", wide(&csv, "y_", medarametla_label)?),
-                        panel("control signal u", wide(&csv, "u_", medarametla_label)?),
-                    ],
+                    panels,
                 ),
             });
         }

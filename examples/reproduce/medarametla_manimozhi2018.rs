@@ -796,27 +796,25 @@ fn fig2_part() -> String {
     let mut o = String::new();
     let curves = studies::fig2();
     let lams = studies::fig2_lambdas();
-    let mut rows = Vec::new();
-    for (ci, curve) in curves.iter().enumerate() {
+    // The curve's name in the first column (the figure's panels and legends come from it).
+    let mut csv = String::from("curve,lambda_over_theta,ms\n");
+    for curve in &curves {
         for (&l, ms) in lams.iter().zip(&curve.ms) {
-            rows.push(vec![ci as f64, l, ms.unwrap_or(f64::NAN)]);
+            let _ = writeln!(csv, "{},{l},{}", curve.name, ms.unwrap_or(f64::NAN));
         }
     }
-    let legend: Vec<String> = curves
-        .iter()
-        .enumerate()
-        .map(|(i, c)| format!("{i} = {}", c.name))
-        .collect();
-    let file = write_csv(
-        "medarametla_fig2_ms_lambda.csv",
-        "curve,lambda_over_theta,ms",
-        &rows,
-    );
+    let path = "docs/figures/medarametla_fig2_ms_lambda.csv";
+    let file = match ledger::write_file(path, &csv) {
+        Ok(()) => format!("`{path}`"),
+        Err(e) => format!("(could not write {path}: {e})"),
+    };
+    let names: Vec<&str> = curves.iter().map(|c| c.name.as_str()).collect();
     let _ = writeln!(
         o,
         "Fig. 2 (Ms against λ/θ, k = θ = 1; NaN where the design is invalid or the loop unstable): {file}; \
-         curves {}. The paper does not state the z/τ of Fig. 2(d); 5 (Example 4's) is used here.\n",
-        legend.join(", ")
+         curves {}, drawn as the paper's panels (a) PIPTD, (b) DIPTD, (c) IFOPTD, (d) IFOPTD with zero. \
+         The paper does not state the z/τ of Fig. 2(d); 5 (Example 4's) is used here.\n",
+        names.join(", ")
     );
     o
 }
