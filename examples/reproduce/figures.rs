@@ -665,7 +665,8 @@ fn medarametla_label(col: &str) -> String {
 }
 
 /// Medarametla & Manimozhi 2018, Figs. 3–12: Examples 1–5, nominal (odd) and gain and delay
-/// +20 % (even), output and control signal (`medarametla_ex*_*.csv`).
+/// +20 % (even), output and control signal (`medarametla_ex*_*.csv`; Examples 2 and 4 in four
+/// panels, servo and regulatory apart, as their captions list them).
 fn medarametla(dir: &Path, v: &mut Vec<Figure>) -> Result<(), String> {
     const MED: &str = "Medarametla & Manimozhi 2018";
     const NUMBERS: [&str; 10] = [
@@ -675,13 +676,60 @@ fn medarametla(dir: &Path, v: &mut Vec<Figure>) -> Result<(), String> {
     for ex in 1..=5 {
         for (j, cond) in ["nominal", "perturbed"].iter().enumerate() {
             let number = NUMBERS[2 * (ex - 1) + j];
-            let src = format!("medarametla_ex{ex}_{cond}.csv");
-            let csv = Csv::read(dir, &src)?;
+            let file = format!("medarametla_fig{}.svg", 3 + 2 * (ex - 1) + j);
             let what = if j == 0 {
                 "nominal response"
             } else {
                 "perturbed response (gain and delay +20 %)"
             };
+            if ex == 2 || ex == 4 {
+                // Figs. 5-6, 9-10: (a) servo response, (b) its control signal, (c) regulatory
+                // response, (d) its control signal (separate files; each panel its own time span).
+                let (sf, rf) = (
+                    format!("medarametla_ex{ex}_{cond}_servo.csv"),
+                    format!("medarametla_ex{ex}_{cond}_regulatory.csv"),
+                );
+                let (s, r) = (Csv::read(dir, &sf)?, Csv::read(dir, &rf)?);
+                let mut panels = vec![];
+                for (k, (csv, prefix, y, what)) in [
+                    (&s, "y_", "output y", "servo response"),
+                    (
+                        &s,
+                        "u_",
+                        "control signal u",
+                        "control signal for the servo response",
+                    ),
+                    (&r, "y_", "output y", "regulatory response"),
+                    (
+                        &r,
+                        "u_",
+                        "control signal u",
+                        "control signal for the regulatory response",
+                    ),
+                ]
+                .into_iter()
+                .enumerate()
+                {
+                    let mut p = panel(y, wide(csv, prefix, medarametla_label)?);
+                    p.title = format!("({}) {} {what}", ["a", "b", "c", "d"][k], cond);
+                    panels.push(p);
+                }
+                v.push(Figure {
+                    paper: MED,
+                    number,
+                    file,
+                    sources: vec![sf, rf],
+                    chart: chart(
+                        format!("Medarametla & Manimozhi 2018, {number}: Example {ex}, {what}"),
+                        "time (s)",
+                        None,
+                        panels,
+                    ),
+                });
+                continue;
+            }
+            let src = format!("medarametla_ex{ex}_{cond}.csv");
+            let csv = Csv::read(dir, &src)?;
             // Figs. 11-12 (Example 5) show the response only; the others also the control.
             let mut panels = vec![panel("output y", wide(&csv, "y_", medarametla_label)?)];
             if ex != 5 {
@@ -693,7 +741,7 @@ fn medarametla(dir: &Path, v: &mut Vec<Figure>) -> Result<(), String> {
             v.push(Figure {
                 paper: MED,
                 number,
-                file: format!("medarametla_fig{}.svg", 3 + 2 * (ex - 1) + j),
+                file,
                 sources: vec![src],
                 chart: chart(
                     format!("Medarametla & Manimozhi 2018, {number}: {what} of Example {ex}"),
