@@ -2,7 +2,9 @@
 //! optimal I-PD settings by minimizing ISTE / IST²E / IST³E (Eq. 1) of the unit set-point
 //! response **with the exact dead time** (pidlab's simulator, no Padé), on a grid of θ/T and
 //! T₀/T, and reports how far the printed fits (Eqs. 5-7, Tables I-II) are from the optima.
-//! Writes `docs/kaya_optimization.md`.
+//! Writes `docs/kaya_optimization.md`. `--fig-points` instead writes the ISTE optima of the
+//! paper's own design loop on a θ/T step of 0.1 (`docs/figures/kaya2020_optima.csv`, the
+//! asterisks of Figs. 2-3 as the reproduce example draws them).
 //!
 //! Normalization: K = 1, T = 1 (the fits are in K·K_c, T_i/T, T_d/T). The derivative is
 //! filtered exactly as the rule ships it (N from `default_n`, recomputed for every candidate
@@ -272,7 +274,62 @@ fn probe() -> String {
     o
 }
 
+/// The best Nelder-Mead minimum of `f` over `starts` (220 evaluations from the first, 120 from
+/// the others).
+fn best_of(f: &dyn Fn([f64; 3]) -> f64, starts: &[[f64; 3]]) -> ([f64; 3], f64) {
+    let mut best = (starts[0], f64::INFINITY);
+    for (i, st) in starts.iter().enumerate() {
+        let mut g = |p: [f64; 3]| f(p);
+        let (p, j, _) = nelder_mead(&mut g, *st, if i == 0 { 220 } else { 120 });
+        if j < best.1 {
+            best = (p, j);
+        }
+    }
+    best
+}
+
+/// `--fig-points`: the ISTE optima of the paper's design loop (3/3 Padé, ideal derivative) at
+/// θ/T = 0.1, 0.2, …, 2.0 and T₀/T ∈ {0.7, 1.0}, the asterisks of Kaya's Figs. 2-3 (the paper's
+/// PSO minimized this loop). Written to `docs/figures/kaya2020_optima.csv`, which the reproduce
+/// example draws beside the fitted formulas.
+fn fig_points() {
+    let t0 = std::time::Instant::now();
+    let mut csv = String::from("t0_over_t,theta_over_t,kkc,ti_over_t,td_over_t,iste\n");
+    for y in [0.7, 1.0] {
+        for i in 1..=20 {
+            let x = 0.1 * i as f64;
+            let tab = if table_for(x) == 1 {
+                &TABLE_I
+            } else {
+                &TABLE_II
+            };
+            let (a, b, c) = normalized_settings(tab, Criterion::Iste, x, y);
+            let starts = [[a, b, c], [a * 0.8, b * 1.3, (c * 0.6).max(0.02)]];
+            let (p, j) = best_of(&|q| cost_pade(x, y, Criterion::Iste, q), &starts);
+            let _ = writeln!(
+                csv,
+                "{y:.1},{x:.1},{:.4},{:.4},{:.4},{j:.4}",
+                p[0], p[1], p[2]
+            );
+            eprintln!(
+                "T₀/T {y} θ/T {x:.1} done ({:.0} s)",
+                t0.elapsed().as_secs_f64()
+            );
+        }
+    }
+    match std::fs::create_dir_all("docs/figures")
+        .and_then(|_| std::fs::write("docs/figures/kaya2020_optima.csv", &csv))
+    {
+        Ok(()) => eprintln!("wrote docs/figures/kaya2020_optima.csv"),
+        Err(e) => eprintln!("could not write docs/figures/kaya2020_optima.csv: {e}"),
+    }
+}
+
 fn main() {
+    if std::env::args().any(|a| a == "--fig-points") {
+        fig_points();
+        return;
+    }
     if std::env::args().any(|a| a == "--probe") {
         print!("{}", probe());
         return;
@@ -319,17 +376,6 @@ fn main() {
     // (sum, worst, count) of the excess: exact, exact at equal Ms, Padé
     // (θ/T, excess exact, excess exact at equal Ms, excess Padé) per case
     let mut cases: Vec<(f64, [f64; 3])> = Vec::new();
-    let best_of = |f: &dyn Fn([f64; 3]) -> f64, starts: &[[f64; 3]]| {
-        let mut best = (starts[0], f64::INFINITY);
-        for (i, st) in starts.iter().enumerate() {
-            let mut g = |p: [f64; 3]| f(p);
-            let (p, j, _) = nelder_mead(&mut g, *st, if i == 0 { 220 } else { 120 });
-            if j < best.1 {
-                best = (p, j);
-            }
-        }
-        best
-    };
     let fmt3 = |p: [f64; 3]| format!("{:.3}, {:.3}, {:.3}", p[0], p[1], p[2]);
     for &y in ys {
         for &x in xs {

@@ -294,6 +294,42 @@ fn section3_limits() {
     assert!((lp.magnitude(k, w) - 1.0).abs() < 1e-12);
 }
 
+/// τ_D,GMmax(τ_I) just below τ_I = d + τ_Z + 1, where K_u > 0 needs τ_D above a positive
+/// bound (K_u = 0 at it): the maximum of K_u over τ_D, against an independent golden-section
+/// search on K_u itself. (These τ_I are points of Fig. 6's grid where the bound itself used to
+/// be returned.)
+#[wasm_bindgen_test(unsupported = test)]
+fn tau_d_gm_max_near_the_stabilizability_bound() {
+    for (d, tz, ti) in [
+        (2.0, 2.0, 4.731512589614805),
+        (0.09434, 0.39434, 1.4125375446227544),
+        (0.5, 0.5, 1.99),
+        (1.0, 1.0, 2.5),
+    ] {
+        let ku = |td: f64| IpdLoop::new(d, tz, ti, td).ultimate_gain().0;
+        let bound = d + tz + 1.0 - ti;
+        let g = tau_d_gm_max(d, tz, ti).unwrap();
+        // golden section on −K_u over [bound, bound + 20] (K_u is unimodal in τ_D: Fig. 5)
+        let (mut a, mut b) = (bound, bound + 20.0);
+        let r = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..120 {
+            let (x1, x2) = (b - r * (b - a), a + r * (b - a));
+            if ku(x1) > ku(x2) {
+                b = x2;
+            } else {
+                a = x1;
+            }
+        }
+        let gs = 0.5 * (a + b);
+        // A maximum is flat: K_u(g) and K_u(gs) agree to ~1e-12 relative while the arguments
+        // agree only to ~1e-6 (sqrt of round-off); 1e-5 relative on τ_D leaves room for that.
+        assert!(
+            (g - gs).abs() <= 1e-5 * gs && g > bound + 0.1,
+            "d {d} τ_Z {tz} τ_I {ti}: {g} vs golden section {gs} (bound {bound})"
+        );
+    }
+}
+
 /// The critical points of φ_L (roots of Eq. 10 by polynomial root isolation) agree with an
 /// independent dense scan of Eq. (10)'s sign changes.
 #[wasm_bindgen_test(unsupported = test)]

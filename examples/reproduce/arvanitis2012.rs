@@ -34,6 +34,7 @@ pub fn report() -> String {
     section6(&mut o);
     section3(&mut o);
     tables(&mut o);
+    section3_figures(&mut o);
     figures(&mut o);
     convergence(&mut o);
     timings(&p);
@@ -256,6 +257,134 @@ fn figures(o: &mut String) {
         is better than Method I overall; Method II has no overshoot, the smallest load peak error and the shortest settling. \
         The printed Method I gains (×1.06) give slightly faster, slightly less robust loops than the consistent ones (Ms column).\n",
     );
+}
+
+/// `n` log-spaced values from `a` to `b`.
+fn logspace(a: f64, b: f64, n: usize) -> impl Iterator<Item = f64> {
+    (0..n).map(move |i| a * (b / a).powf(i as f64 / (n - 1) as f64))
+}
+
+/// A label for τ_I or τ_D values (∞ for the PD limit).
+fn val(x: f64) -> String {
+    if x.is_infinite() {
+        "inf".into()
+    } else {
+        format!("{x}")
+    }
+}
+
+/// Figs. 2-7: the Section 3 analysis of the normalized loop (7), computed with `frequency.rs`
+/// on grids, written as `docs/figures/arvanitis2012_fig{2..7}.csv` (long format: a `curve`
+/// column naming the parameter that varies, then x and y).
+fn section3_figures(o: &mut String) {
+    o.push_str("\n### Figs. 2-7: Section 3 analysis of the normalized loop (7)\n\n");
+    let mut written = vec![];
+    let mut put = |n: usize, csv: String| {
+        let path = format!("docs/figures/arvanitis2012_fig{n}.csv");
+        if crate::ledger::write_file(&path, &csv).is_ok() {
+            written.push(path);
+        }
+    };
+    // Figs. 2-3: G_L(jw) = A_L(w) e^{jφ_L(w)} (Eqs. 8-9), 500 w log-spaced over 0.05..20
+    // (below 0.05 every curve is far outside the window the figure shows; above 20 the
+    // biproper loop only circles the origin again at radius K_C τ_D τ_Z, the delay's spiral).
+    let nyquist = |kc: f64, loops: &[(String, IpdLoop)]| {
+        let mut csv = String::from("curve,w,re,im\n");
+        for (name, l) in loops {
+            for w in logspace(0.05, 20.0, 500) {
+                let (a, ph) = (l.magnitude(kc, w), l.phase(w));
+                let _ = writeln!(
+                    csv,
+                    "{name},{},{},{}",
+                    num6(w),
+                    num6(a * ph.cos()),
+                    num6(a * ph.sin())
+                );
+            }
+        }
+        csv
+    };
+    let (d, tz) = (0.5, 0.5);
+    let fig2: Vec<(String, IpdLoop)> = [0.5, 1.0, 2.0, 4.0, 10.0, f64::INFINITY]
+        .iter()
+        .map(|&ti| (format!("tau_i={}", val(ti)), IpdLoop::new(d, tz, ti, 1.5)))
+        .collect();
+    put(2, nyquist(0.5, &fig2));
+    let fig3: Vec<(String, IpdLoop)> = [0.0, 0.25, 0.5, 1.0, 2.0, 4.0]
+        .iter()
+        .map(|&td| (format!("tau_d={}", val(td)), IpdLoop::new(d, tz, 2.5, td)))
+        .collect();
+    put(3, nyquist(0.3, &fig3));
+    // Figs. 4-5: PM_max (Eq. 12, degrees) and K_u against τ_D, one curve per τ_I (Fig. 4: finite
+    // τ_I only; in the PD limit the phase has no peak for τ_D < d + τ_Z + 1, its supremum 90° is
+    // reached only as K_C → 0).
+    let tis = [1.0, 2.0, 4.0, 8.0, 16.0, 32.0];
+    let mut csv4 = String::from("curve,tau_d,pm_max_deg\n");
+    let mut csv5 = String::from("curve,tau_d,k_u\n");
+    for &ti in &tis {
+        for i in 0..=200 {
+            let td = 6.0 * i as f64 / 200.0;
+            let pm = IpdLoop::new(1.5, 1.5, ti, td)
+                .phase_peak()
+                .map_or(f64::NAN, |p| p.pm_max.to_degrees());
+            let _ = writeln!(csv4, "tau_i={},{td:.3},{}", val(ti), num6(pm));
+        }
+    }
+    for &ti in &[1.0, 2.0, 4.0, 8.0, 16.0, f64::INFINITY] {
+        for i in 0..=200 {
+            let td = 6.0 * i as f64 / 200.0;
+            let ku = IpdLoop::new(0.5, 0.5, ti, td).ultimate_gain().0;
+            let _ = writeln!(csv5, "tau_i={},{td:.3},{}", val(ti), num6(ku));
+        }
+    }
+    put(4, csv4);
+    put(5, csv5);
+    // Figs. 6-7: τ_D,GMmax and τ_D,maxGM,I-P against τ_I for several (τ_Z, d).
+    let pairs = [
+        (0.2, 0.2),
+        (0.39434, 0.09434),
+        (0.5, 0.5),
+        (1.0, 1.0),
+        (2.0, 2.0),
+    ];
+    let mut csv6 = String::from("curve,tau_i,tau_d_gm_max\n");
+    let mut csv7 = String::from("curve,tau_i,tau_d_max_gm_ip\n");
+    for &(tz, d) in &pairs {
+        let name = format!("tau_z={tz} d={d}");
+        for ti in logspace(0.1, 100.0, 121) {
+            let a = tau_d_gm_max(d, tz, ti).unwrap_or(f64::NAN);
+            let _ = writeln!(csv6, "{name},{ti:.6},{}", num6(a));
+            let b = if ti > d + tz + 1.0 {
+                tau_d_max_gm_ip(d, tz, ti).unwrap_or(f64::NAN)
+            } else {
+                f64::NAN
+            };
+            let _ = writeln!(csv7, "{name},{ti:.6},{}", num6(b));
+        }
+    }
+    put(6, csv6);
+    put(7, csv7);
+    let _ = writeln!(
+        o,
+        "Exact curves of `frequency.rs` (no fit). Parameters as the captions print them: Fig. 2 K_C = 0.5, d = τ_Z = 0.5, \
+         τ_D = 1.5, τ_I ∈ {{0.5 (= τ_I,min), 1, 2, 4, 10, ∞ (PD)}}; Fig. 3 K_C = 0.3, d = τ_Z = 0.5, τ_I = 2.5, \
+         τ_D ∈ {{0, 0.25, 0.5, 1, 2, 4}}; Fig. 4 d = τ_Z = 1.5, τ_I ∈ {{1, 2, 4, 8, 16, 32}} (in the PD limit the phase \
+         has no peak for τ_D < d + τ_Z + 1); Fig. 5 d = τ_Z = 0.5, τ_I ∈ {{1, 2, 4, 8, 16, ∞}}; Figs. 6-7 (τ_Z, d) ∈ \
+         {{(0.2, 0.2), (0.39434, 0.09434) (the boiler), (0.5, 0.5), (1, 1), (2, 2)}}, τ_I log-spaced over 0.1-100. The \
+         τ_I and τ_D values of Figs. 2-5 and the pairs of Figs. 6-7 are not printed: they are our choice. \
+         Fig. 5's GM_max is read as the ultimate gain K_u(τ_I, τ_D) (the largest stabilizing K_C, i.e. the gain margin at \
+         K_C = 1), whose maximum over τ_D is τ_D,GMmax (Fig. 6). Data: {}.",
+        if written.is_empty() { "not written".to_string() } else { written.join(", ") }
+    );
+}
+
+/// A figure value with 6 significant digits (empty when not finite).
+fn num6(x: f64) -> String {
+    if x.is_finite() {
+        crate::ledger::sig6(x)
+    } else {
+        String::new()
+    }
 }
 
 /// Figure data: t, r, then y and u of each curve of the figure, every 0.1 time unit.

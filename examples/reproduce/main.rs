@@ -1,6 +1,7 @@
 //! `cargo run --release --example reproduce` — regenerates every paper's worked examples and
 //! simulation study, prints them, and writes `docs/reproduction.md` (figure data as CSV under
-//! `docs/figures/`).
+//! `docs/figures/`). `reproduce SECTION…` prints only those sections (and writes their figure
+//! CSVs); `reproduce figures` only redraws the SVGs from the CSVs in `docs/figures/`.
 
 mod arvanitis2012;
 mod engine;
@@ -15,6 +16,11 @@ mod svg;
 
 fn main() {
     let only: Vec<String> = std::env::args().skip(1).collect();
+    if only == ["figures"] {
+        // Redraw the SVGs from the CSVs in docs/figures/ only (the report untouched).
+        write_figures();
+        return;
+    }
     type Section = (&'static str, fn() -> String);
     let sections: Vec<Section> = vec![
         ("engine", engine::report),

@@ -877,27 +877,25 @@ fn fig2_part() -> String {
     let mut o = String::new();
     let curves = studies::fig2();
     let lams = studies::fig2_lambdas();
-    let mut rows = Vec::new();
-    for (ci, curve) in curves.iter().enumerate() {
+    // The curve's name in the first column (the figure's panels and legends come from it).
+    let mut csv = String::from("curve,lambda_over_theta,ms\n");
+    for curve in &curves {
         for (&l, ms) in lams.iter().zip(&curve.ms) {
-            rows.push(vec![ci as f64, l, ms.unwrap_or(f64::NAN)]);
+            let _ = writeln!(csv, "{},{l},{}", curve.name, ms.unwrap_or(f64::NAN));
         }
     }
-    let legend: Vec<String> = curves
-        .iter()
-        .enumerate()
-        .map(|(i, c)| format!("{i} = {}", c.name))
-        .collect();
-    let file = write_csv(
-        "medarametla_fig2_ms_lambda.csv",
-        "curve,lambda_over_theta,ms",
-        &rows,
-    );
+    let path = "docs/figures/medarametla_fig2_ms_lambda.csv";
+    let file = match ledger::write_file(path, &csv) {
+        Ok(()) => format!("`{path}`"),
+        Err(e) => format!("(could not write {path}: {e})"),
+    };
+    let names: Vec<&str> = curves.iter().map(|c| c.name.as_str()).collect();
     let _ = writeln!(
         o,
         "Fig. 2 (Ms against λ/θ, k = θ = 1; NaN where the design is invalid or the loop unstable): {file}; \
-         curves {}. The paper does not state the z/τ of Fig. 2(d); 5 (Example 4's) is used here.\n",
-        legend.join(", ")
+         curves {}, drawn as the paper's panels (a) PIPTD, (b) DIPTD, (c) IFOPTD, (d) IFOPTD with zero. \
+         The paper does not state the z/τ of Fig. 2(d); 5 (Example 4's) is used here.\n",
+        names.join(", ")
     );
     o
 }
@@ -1018,30 +1016,36 @@ fn cstr_runs(o: &mut String, p: &CstrParams, op: &OperatingPoint) -> Vec<Vec<Vec
 /// (gain and delay +20 %), every method's loop as Tables 4-5 simulate it (`studies::row_loop`,
 /// `studies::performance_sim` at the paper's 0.1 s; Anil & Padma Sree's run is the load step
 /// alone where their set-point path is improper), every second sample. A loop that fails or
-/// diverges is written as empty cells.
+/// diverges is written as empty cells. Examples 2 and 4, whose figures show the servo and the
+/// regulatory responses in separate panels, are written as two files: `…_servo.csv` (the runs
+/// up to the load step, i.e. the set-point response alone; load-only runs left out) and
+/// `…_regulatory.csv` (every method's load step alone, from the step on).
 fn figure_data() {
     let methods = [
         (Method::Proposed, "proposed"),
         (Method::AnilPadmaSree, "anil_padma_sree"),
         (Method::AjmeriAli, "ajmeri_ali"),
     ];
+    let pick = |v: &Vec<f64>| -> Vec<f64> { v.iter().step_by(2).copied().collect() };
     for e in mm::examples().iter().filter(|e| e.id != "ex6") {
+        let split = e.id == "ex2" || e.id == "ex4";
         for (cond, name) in [
             (Condition::Nominal, "nominal"),
             (Condition::Perturbed, "perturbed"),
         ] {
             let mut t: Vec<f64> = vec![];
             let mut cols: Vec<(String, Vec<f64>)> = vec![];
+            let mut reg: Vec<(String, Vec<f64>)> = vec![];
             for (m, key) in methods {
-                let r = studies::row_loop(e, m, cond).and_then(|(plant, c, servo)| {
-                    studies::performance_sim(&plant, &c, e, servo, 0.1).map(|r| (r, servo))
+                let lp = studies::row_loop(e, m, cond);
+                let r = lp.as_ref().and_then(|(plant, c, servo)| {
+                    studies::performance_sim(plant, c, e, *servo, 0.1).map(|r| (r, *servo))
                 });
                 let (y, u, tag) = match &r {
                     Some((r, servo)) => {
                         if t.is_empty() {
-                            t = r.t.iter().step_by(2).copied().collect();
+                            t = pick(&r.t);
                         }
-                        let pick = |v: &Vec<f64>| v.iter().step_by(2).copied().collect();
                         (
                             pick(&r.y),
                             pick(&r.u),
@@ -1052,11 +1056,50 @@ fn figure_data() {
                 };
                 cols.push((format!("y_{key}{tag}"), y));
                 cols.push((format!("u_{key}{tag}"), u));
+                if split {
+                    let l = lp.as_ref().and_then(|(plant, c, _)| {
+                        studies::performance_sim(plant, c, e, false, 0.1)
+                    });
+                    reg.push((
+                        format!("y_{key}"),
+                        l.as_ref().map_or(vec![], |r| pick(&r.y)),
+                    ));
+                    reg.push((
+                        format!("u_{key}"),
+                        l.as_ref().map_or(vec![], |r| pick(&r.u)),
+                    ));
+                }
             }
-            let csv = ledger::time_columns_csv(&t, &cols);
+            let base = format!("docs/figures/medarametla_{}_{name}", e.id);
+            if !split {
+                let _ = ledger::write_file(
+                    &format!("{base}.csv"),
+                    &ledger::time_columns_csv(&t, &cols),
+                );
+                continue;
+            }
+            // rows up to and including the load step's time (the response is continuous there)
+            let n = t
+                .iter()
+                .position(|&x| x > e.d_time + 1e-9)
+                .unwrap_or(t.len());
+            let servo: Vec<(String, Vec<f64>)> = cols
+                .iter()
+                .filter(|(h, _)| !h.ends_with("_load_only"))
+                .map(|(h, v)| (h.clone(), v.iter().take(n).copied().collect()))
+                .collect();
             let _ = ledger::write_file(
-                &format!("docs/figures/medarametla_{}_{name}.csv", e.id),
-                &csv,
+                &format!("{base}_servo.csv"),
+                &ledger::time_columns_csv(&t[..n], &servo),
+            );
+            let k = n.saturating_sub(1);
+            let reg: Vec<(String, Vec<f64>)> = reg
+                .iter()
+                .map(|(h, v)| (h.clone(), v.iter().skip(k).copied().collect()))
+                .collect();
+            let _ = ledger::write_file(
+                &format!("{base}_regulatory.csv"),
+                &ledger::time_columns_csv(&t[k..], &reg),
             );
         }
     }

@@ -971,6 +971,19 @@ fn fig2(s: &mut String) {
         pk::EX1.tau * studies::lambda_for_ms2(&pk::EX1).unwrap_or(f64::NAN)
     );
     let zs = [0.1, 0.2, 0.4, 0.6, 0.8, 1.0];
+    // The figure's grid, θ/τ = 0.05, 0.10, …, 1.00 (i/20: the same doubles as the literals);
+    // the table prints the rows of `ths` from it.
+    let fig_ths: Vec<f64> = (1..=20).map(|i| i as f64 / 20.0).collect();
+    let fig_grid = studies::fig2_grid(&zs, &fig_ths);
+    let mut csv = String::from("curve,theta_over_tau,lambda_tau\n");
+    for (j, z) in zs.iter().enumerate() {
+        for (th, row) in fig_ths.iter().zip(&fig_grid) {
+            let cell = row[j].map_or(String::new(), |l| format!("{l:.6}"));
+            let _ = writeln!(csv, "z/τ = {z},{th:.2},{cell}");
+        }
+    }
+    let path = "docs/figures/praveen_kumar_fig2.csv";
+    let written = ledger::write_file(path, &csv).is_ok();
     let ths = [0.05, 0.1, 0.2, 0.4, 0.6];
     let _ = write!(s, "| θ/τ \\ z/τ |");
     for z in zs {
@@ -978,7 +991,11 @@ fn fig2(s: &mut String) {
     }
     let _ = writeln!(s);
     let _ = writeln!(s, "|---|{}", "---|".repeat(zs.len()));
-    for (th, cells) in ths.iter().zip(studies::fig2_grid(&zs, &ths)) {
+    for th in ths {
+        let cells = &fig_grid[fig_ths
+            .iter()
+            .position(|t| *t == th)
+            .expect("θ/τ on the grid")];
         let _ = write!(s, "| {th} |");
         for cell in cells {
             let cell = cell.map_or("—".into(), |l| format!("{l:.4}"));
@@ -988,7 +1005,10 @@ fn fig2(s: &mut String) {
     }
     let _ = writeln!(
         s,
-        "\n(— : Ms = 2 not reachable: the smallest Ms of the admissible λ interval exceeds 2.)\n"
+        "\n(— : Ms = 2 not reachable: the smallest Ms of the admissible λ interval exceeds 2.) The figure \
+         draws λτ against θ/τ = 0.05-1.00 (step 0.05) for these z/τ ({}); the paper prints neither its \
+         axes' ranges nor its z/τ values, so both are our choice.\n",
+        if written { path } else { "not written" }
     );
 }
 

@@ -12,6 +12,11 @@ pub struct Curve {
     pub label: String,
     /// (x, y) points.
     pub points: Vec<(f64, f64)>,
+    /// Drawn as asterisks at the points instead of a line (e.g. optimized points beside a
+    /// fitted formula).
+    pub markers: bool,
+    /// Palette index of the colour; `None`: the curve's position in its panel.
+    pub color: Option<usize>,
 }
 
 /// One panel of a figure (panels are stacked vertically and share the x axis).
@@ -36,6 +41,19 @@ pub struct Chart {
     pub x_log: bool,
     /// The panels.
     pub panels: Vec<Panel>,
+    /// Corner of every panel's legend.
+    pub legend: Legend,
+}
+
+/// Where a panel's legend goes (the corner the curves leave empty).
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub enum Legend {
+    /// Lower right (the default).
+    LowerRight,
+    /// Upper right.
+    UpperRight,
+    /// Upper left.
+    UpperLeft,
 }
 
 const PALETTE: [RGBColor; 8] = [
@@ -145,59 +163,84 @@ fn draw_panel(
             .build_cartesian_2d((x0.max(1e-300)..x1).log_scale(), y0..y1)
             .map_err(e)?;
         mesh!(c);
-        for (i, curve) in panel.curves.iter().enumerate() {
-            let col = PALETTE[i % PALETTE.len()];
-            for (j, seg) in segments(&curve.points).into_iter().enumerate() {
-                let s = c
-                    .draw_series(LineSeries::new(seg, col.stroke_width(2)))
-                    .map_err(e)?;
-                if j == 0 {
-                    s.label(curve.label.as_str()).legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 20, y)], col.stroke_width(2))
-                    });
-                }
-            }
-        }
-        legend(&mut c)
+        draw_curves(&mut c, &panel.curves, None)?;
+        legend(&mut c, chart.legend)
     } else {
         let mut c = b.build_cartesian_2d(x0..x1, y0..y1).map_err(e)?;
         mesh!(c);
-        for (i, curve) in panel.curves.iter().enumerate() {
-            let col = PALETTE[i % PALETTE.len()];
-            let pts: Vec<(f64, f64)> = curve
-                .points
-                .iter()
-                .map(|&(x, y)| {
-                    if x < x0 || x > x1 {
-                        (f64::NAN, y)
-                    } else {
-                        (x, y)
-                    }
-                })
-                .collect();
-            for (j, seg) in segments(&pts).into_iter().enumerate() {
-                let s = c
-                    .draw_series(LineSeries::new(seg, col.stroke_width(2)))
-                    .map_err(e)?;
-                if j == 0 {
-                    s.label(curve.label.as_str()).legend(move |(x, y)| {
-                        PathElement::new(vec![(x, y), (x + 20, y)], col.stroke_width(2))
-                    });
-                }
+        draw_curves(&mut c, &panel.curves, Some((x0, x1)))?;
+        legend(&mut c, chart.legend)
+    }
+}
+
+/// An asterisk (a cross over a plus, 4 px arms) centred at `$at`.
+macro_rules! asterisk {
+    ($at:expr, $style:expr) => {
+        EmptyElement::at($at)
+            + Cross::new((0, 0), 3, $style)
+            + PathElement::new(vec![(0, -4), (0, 4)], $style)
+            + PathElement::new(vec![(-4, 0), (4, 0)], $style)
+    };
+}
+
+/// Draws `curves` as lines (points with x outside `x_clip` break them) or asterisks, each with
+/// its legend entry.
+fn draw_curves<'a, X: Ranged<ValueType = f64>, Y: Ranged<ValueType = f64>>(
+    c: &mut ChartContext<'a, SVGBackend<'a>, Cartesian2d<X, Y>>,
+    curves: &[Curve],
+    x_clip: Option<(f64, f64)>,
+) -> Result<(), String> {
+    let e = |e: plotters::drawing::DrawingAreaErrorKind<std::io::Error>| e.to_string();
+    for (i, curve) in curves.iter().enumerate() {
+        let col = PALETTE[curve.color.unwrap_or(i) % PALETTE.len()];
+        let pts: Vec<(f64, f64)> = curve
+            .points
+            .iter()
+            .map(|&(x, y)| match x_clip {
+                Some((x0, x1)) if x < x0 || x > x1 => (f64::NAN, y),
+                _ => (x, y),
+            })
+            .collect();
+        if curve.markers {
+            let style = col.stroke_width(1);
+            let s = c
+                .draw_series(
+                    pts.iter()
+                        .filter(|p| p.0.is_finite() && p.1.is_finite())
+                        .map(|&p| asterisk!(p, style)),
+                )
+                .map_err(e)?;
+            s.label(curve.label.as_str())
+                .legend(move |(x, y)| asterisk!((x + 10, y), style));
+            continue;
+        }
+        for (j, seg) in segments(&pts).into_iter().enumerate() {
+            let s = c
+                .draw_series(LineSeries::new(seg, col.stroke_width(2)))
+                .map_err(e)?;
+            if j == 0 {
+                s.label(curve.label.as_str()).legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], col.stroke_width(2))
+                });
             }
         }
-        legend(&mut c)
     }
+    Ok(())
 }
 
 fn legend<'a, X: Ranged, Y: Ranged>(
     c: &mut ChartContext<'a, SVGBackend<'a>, Cartesian2d<X, Y>>,
+    at: Legend,
 ) -> Result<(), String> {
     c.configure_series_labels()
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 12))
-        .position(SeriesLabelPosition::LowerRight)
+        .position(match at {
+            Legend::LowerRight => SeriesLabelPosition::LowerRight,
+            Legend::UpperRight => SeriesLabelPosition::UpperRight,
+            Legend::UpperLeft => SeriesLabelPosition::UpperLeft,
+        })
         .draw()
         .map_err(|e| e.to_string())
 }

@@ -334,10 +334,14 @@ pub fn tau_d_gm_max_near(d: f64, tz: f64, ti: f64, hint: Option<f64>) -> Result<
             }
         }
     }
-    // K_u > 0 needs τ_I + τ_D > d + τ_Z + 1
+    // K_u > 0 needs τ_I + τ_D > d + τ_Z + 1. Above that bound K_u grows from 0 (linearly in
+    // τ_D − bound), so d ln K_u/dτ_D > 0 there and the maximum lies well inside; the search
+    // starts 1e-6 (relative) above the bound, where the phase crossover is not yet at a
+    // vanishing frequency (within 1e-10 of the bound w_u ~ 1e-5 and the derivative's sign
+    // can come out wrong, which returned the bound itself as the maximum).
     let lo_bound = (d + tz + 1.0 - ti).max(0.0);
     let mut lo = if lo_bound > 0.0 {
-        lo_bound * (1.0 + 1e-9) + 1e-12
+        lo_bound + 1e-6 * (1.0 + lo_bound)
     } else {
         0.0
     };
