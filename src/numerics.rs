@@ -19,6 +19,23 @@ pub fn brent(
     xtol: f64,
     maxit: usize,
 ) -> Option<(f64, usize)> {
+    brent_dyn(&mut f, a0, b0, fa0, fb0, xtol, maxit)
+}
+
+/// [`brent`]'s body, not generic: with `impl FnMut` and LTO, each of the 11 call sites (rules,
+/// saturation, closed-loop analysis) inlined its own copy of the iteration (issue 15, module
+/// size). One indirect call per evaluation is nothing beside an evaluation (a frequency
+/// response or a polynomial at least); the arithmetic is the same, so are the results.
+#[inline(never)]
+fn brent_dyn(
+    f: &mut dyn FnMut(f64) -> f64,
+    a0: f64,
+    b0: f64,
+    fa0: f64,
+    fb0: f64,
+    xtol: f64,
+    maxit: usize,
+) -> Option<(f64, usize)> {
     let (mut a, mut b, mut fa, mut fb) = (a0, b0, fa0, fb0);
     if !(fa.is_finite() && fb.is_finite()) || fa * fb > 0.0 {
         return None;
