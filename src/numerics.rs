@@ -19,6 +19,23 @@ pub fn brent(
     xtol: f64,
     maxit: usize,
 ) -> Option<(f64, usize)> {
+    brent_dyn(&mut f, a0, b0, fa0, fb0, xtol, maxit)
+}
+
+/// [`brent`]'s body, not generic: with `impl FnMut` and LTO, each of the 11 call sites (rules,
+/// saturation, closed-loop analysis) inlined its own copy of the iteration (issue 15, module
+/// size). One indirect call per evaluation is nothing beside an evaluation (a frequency
+/// response or a polynomial at least); the arithmetic is the same, so are the results.
+#[inline(never)]
+fn brent_dyn(
+    f: &mut dyn FnMut(f64) -> f64,
+    a0: f64,
+    b0: f64,
+    fa0: f64,
+    fb0: f64,
+    xtol: f64,
+    maxit: usize,
+) -> Option<(f64, usize)> {
     let (mut a, mut b, mut fa, mut fb) = (a0, b0, fa0, fb0);
     if !(fa.is_finite() && fb.is_finite()) || fa * fb > 0.0 {
         return None;
@@ -380,4 +397,33 @@ pub fn equilibrated_solve(
         x[j] *= c;
     }
     x.iter().all(|v| v.is_finite()).then_some(x)
+}
+
+/// Sorts `v` ascending in IEEE 754 total order (`f64::total_cmp`: −0 before +0, NaNs at the
+/// ends by sign). The one instance of the standard library's stable sort for `f64`s in the
+/// module: every `f64` sort calls this (each `sort_by` with its own closure was a separate
+/// ~3–5 kB copy of the sort, issue 15).
+#[inline(never)]
+pub fn sort_f64(v: &mut [f64]) {
+    v.sort_by(f64::total_cmp);
+}
+
+/// The permutation that sorts `keys` ascending in total order, stably (equal keys keep their
+/// order): `keys[order[0]] ≤ keys[order[1]] ≤ …`. Not generic, so one sort instance serves
+/// every [`sort_by_f64_key`].
+#[inline(never)]
+pub fn sorted_order(keys: &[f64]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..keys.len()).collect();
+    order.sort_by(|&a, &b| keys[a].total_cmp(&keys[b]));
+    order
+}
+
+/// Stable sort of `v` by an `f64` key in total order (what `v.sort_by(|a, b|
+/// key(a).total_cmp(&key(b)))` does, without a sort instance per element type: the keys are
+/// sorted by [`sorted_order`] and the elements moved once). `key` is called once per element.
+pub fn sort_by_f64_key<T>(v: &mut Vec<T>, key: impl Fn(&T) -> f64) {
+    let keys: Vec<f64> = v.iter().map(key).collect();
+    let order = sorted_order(&keys);
+    let mut slots: Vec<Option<T>> = v.drain(..).map(Some).collect();
+    v.extend(order.iter().filter_map(|&i| slots[i].take()));
 }

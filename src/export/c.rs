@@ -21,7 +21,8 @@ pub fn write(d: &Design, dc: &DiscreteController, name: &str) -> String {
     s.push_str(" */\n");
     let eq = diff_eq(dc);
     let n = eq.order();
-    let up = name.to_uppercase();
+    // ASCII: `name` is a `stem` (no Unicode case tables in the wasm module, issue 15)
+    let up = name.to_ascii_uppercase();
     let _ = write!(
         s,
         r#"

@@ -173,7 +173,8 @@ pub fn export_sampled(target: Target, d: &Design, dc: &DiscreteController) -> Re
     let id = stem(&d.origin);
     let text = match target {
         Target::C => c::write(d, dc, &id),
-        Target::St => st::write(d, dc, &id.to_uppercase()),
+        // `stem` is ASCII: no Unicode case tables needed (wasm module size, issue 15)
+        Target::St => st::write(d, dc, &id.to_ascii_uppercase()),
         _ => {
             return Err(Error::new(
                 "sampling",

@@ -40,7 +40,12 @@ VAR CONSTANT
         h = num(dc.h)
     );
     for (t, xs) in tables(eq) {
-        let _ = writeln!(s, "    {} : {arr} := [{}];", t.to_uppercase(), nums(xs));
+        let _ = writeln!(
+            s,
+            "    {} : {arr} := [{}];",
+            t.to_ascii_uppercase(),
+            nums(xs)
+        );
     }
     if let Law::Clamped { integrator: ig, .. } = &dc.law {
         let _ = writeln!(

@@ -237,7 +237,7 @@ fn scales(d: &Data) -> Scales {
     let mut d2: Vec<f64> = (2..n)
         .map(|i| (d.y[i] - 2.0 * d.y[i - 1] + d.y[i - 2]).abs())
         .collect();
-    d2.sort_by(|a, b| a.total_cmp(b));
+    crate::numerics::sort_f64(&mut d2);
     let noise = if d2.is_empty() {
         0.0
     } else {
@@ -390,7 +390,7 @@ pub fn fit(d: &Data, id: &str, max_iter: usize) -> Result<Fit> {
         .filter_map(|x| cost_at(&x).ok().map(|r| (sq(&r), x)))
         .filter(|(c, _)| c.is_finite())
         .collect();
-    scored.sort_by(|a, b| a.0.total_cmp(&b.0));
+    crate::numerics::sort_by_f64_key(&mut scored, |s| s.0);
     if scored.is_empty() {
         return Err(Error::new(
             "y",
@@ -920,7 +920,7 @@ pub fn rank(d: &Data, families: &[&str], max_iter: usize) -> Result<(Vec<Fit>, V
         ));
     }
     // stable sort: an exact tie keeps the order of `families` (the simpler first)
-    fits.sort_by(|a, b| a.aicc.total_cmp(&b.aicc));
+    crate::numerics::sort_by_f64_key(&mut fits, |f| f.aicc);
     Ok((fits, failed))
 }
 

@@ -149,8 +149,10 @@ pub(super) fn draw_mesh<'a, DB: DrawingBackend>(
         .y_labels(ny as usize)
         .x_label_formatter(&xf)
         .y_label_formatter(&yf)
-        .label_style(("sans-serif", small).into_font().color(&fg))
-        .axis_desc_style(("sans-serif", font).into_font().color(&fg))
+        // FontFamily::SansSerif, not "sans-serif": plotters' From<&str> lowercases the name
+        // (str::to_lowercase and Unicode tables in the wasm module, issue 15); the same font
+        .label_style((FontFamily::SansSerif, small).into_font().color(&fg))
+        .axis_desc_style((FontFamily::SansSerif, font).into_font().color(&fg))
         .x_desc(s.xlabel.as_str())
         .y_desc(s.ylabel.as_str())
         .bold_line_style(RGBAColor(0, 0, 0, 0.12).stroke_width(st.px(1.0).max(1) as u32))

@@ -71,7 +71,7 @@ impl Legend {
             for seg in segs {
                 root.draw(&PathElement::new(seg, ls)).map_err(derr)?;
             }
-            let ts = ("sans-serif", st.small)
+            let ts = (FontFamily::SansSerif, st.small)
                 .into_font()
                 .color(&st.fg)
                 .pos(Pos::new(HPos::Left, VPos::Center));

@@ -17,7 +17,7 @@ pub(super) fn draw_title<DB: DrawingBackend>(
     left: i32,
 ) -> Result<()> {
     if !s.title.is_empty() {
-        let ts = ("sans-serif", st.font)
+        let ts = (FontFamily::SansSerif, st.font)
             .into_font()
             .style(FontStyle::Bold)
             .color(&st.fg)
@@ -64,7 +64,7 @@ pub(super) fn draw_vlines<DB: DrawingBackend, F: Fn((f64, f64)) -> (i32, i32)>(
                 root.draw(&PathElement::new(d, ls)).map_err(derr)?;
             }
             if !v.label.is_empty() {
-                let ts = ("sans-serif", st.small)
+                let ts = (FontFamily::SansSerif, st.small)
                     .into_font()
                     .color(&v.color.style())
                     .pos(Pos::new(HPos::Left, VPos::Top));
@@ -94,7 +94,7 @@ pub(super) fn draw_points<DB: DrawingBackend, F: Fn((f64, f64)) -> (i32, i32)>(
             root.draw(&PathElement::new(vec![(c.0, c.1 - r), (c.0, c.1 + r)], ls))
                 .map_err(derr)?;
             if !p.label.is_empty() {
-                let ts = ("sans-serif", st.small)
+                let ts = (FontFamily::SansSerif, st.small)
                     .into_font()
                     .color(&p.color.style())
                     .pos(Pos::new(HPos::Left, VPos::Bottom));

@@ -642,7 +642,13 @@ pub fn intervals(rule: &dyn Rule, plant: &Plant, params: &Params) -> Result<Vec<
         });
     }
     // In declaration order, as methods() lists them.
-    out.sort_by_key(|i| info.params.iter().position(|p| p.name == i.name));
+    // (an unknown name, None, first as `Option`'s order has it; positions are exact in f64)
+    crate::numerics::sort_by_f64_key(&mut out, |i| {
+        info.params
+            .iter()
+            .position(|p| p.name == i.name)
+            .map_or(-1.0, |p| p as f64)
+    });
     Ok(out)
 }
 

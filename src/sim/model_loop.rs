@@ -452,7 +452,7 @@ fn breakpoints(events: &[f64], delays: &[f64], t_end: f64, tol: f64) -> Result<V
             return Err(too_many());
         }
     }
-    pts.sort_by(f64::total_cmp);
+    crate::numerics::sort_f64(&mut pts);
     pts.dedup_by(|a, b| (*a - *b).abs() <= tol);
     Ok(pts)
 }

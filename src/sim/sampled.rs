@@ -187,7 +187,7 @@ fn events(sc: &Scenario, h: f64, theta: f64, max_len: f64, tol: f64) -> Result<V
         }
     }
     ev.retain(|t| *t >= 0.0 && *t <= t_end + tol);
-    ev.sort_by(f64::total_cmp);
+    crate::numerics::sort_f64(&mut ev);
     let mut out: Vec<f64> = Vec::with_capacity(ev.len());
     for t in ev {
         match out.last() {

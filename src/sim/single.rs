@@ -291,7 +291,7 @@ fn step_pieces(sc: &Scenario, h: f64, tol: f64) -> (Vec<f64>, Vec<f64>) {
             offs.push(o);
         }
     }
-    offs.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+    crate::numerics::sort_f64(&mut offs);
     let lens: Vec<f64> = (0..offs.len())
         .map(|i| {
             if i + 1 < offs.len() {

@@ -54,11 +54,8 @@ pub(super) fn raise_to_peaks(
     let mut cands: Vec<usize> = (1..mags.len().saturating_sub(1))
         .filter(|&i| mags[i] >= mags[i - 1] && mags[i] >= mags[i + 1])
         .collect();
-    cands.sort_by(|&a, &b| {
-        mags[b]
-            .partial_cmp(&mags[a])
-            .unwrap_or(std::cmp::Ordering::Equal)
-    });
+    // descending (stable: ties keep their order)
+    crate::numerics::sort_by_f64_key(&mut cands, |&i| -mags[i]);
     cands.truncate(8);
     for &i in &cands {
         let (x, v) = golden_max(s_mag, samples[i - 1].0, samples[i + 1].0);

@@ -160,7 +160,7 @@ pub fn freqresp(plant: &Plant, c: &Controller, opt: FreqOptions) -> Result<FreqR
         .map(|i| lo * (hi / lo).powf(i as f64 / n as f64))
         .collect();
     ws.extend(marks.iter().filter(|w| **w > lo && **w < hi));
-    ws.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+    crate::numerics::sort_f64(&mut ws);
     ws.dedup();
     let mut pts: Vec<Point> = ws.iter().map(|&w| point(&lt, plant, c, w)).collect();
     // breadth-first refinement

@@ -55,7 +55,7 @@ impl Tail {
                 }
             }
         }
-        w.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+        crate::numerics::sort_f64(&mut w);
         let vals: Vec<C64> = w.iter().map(|&x| l.rat_jw(x)).collect();
         let mut sup = vec![0.0; w.len()];
         let mut m = l_inf;

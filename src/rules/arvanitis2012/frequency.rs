@@ -160,7 +160,7 @@ impl IpdLoop {
             .map(|x| self.polish(x.sqrt()))
             .filter(|w| w.is_finite() && *w > 0.0)
             .collect();
-        ws.sort_by(|a, b| a.total_cmp(b));
+        crate::numerics::sort_f64(&mut ws);
         ws.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * b.abs());
         ws
     }

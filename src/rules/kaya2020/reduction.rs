@@ -68,7 +68,7 @@ fn lag_time_constants(den: &crate::model::poly::Poly) -> Result<Vec<f64>> {
             "the plant has no pole: the FOPDT-IR model needs at least one lag",
         ));
     }
-    roots.sort_by(|a, b| a.re.partial_cmp(&b.re).unwrap_or(std::cmp::Ordering::Equal));
+    crate::numerics::sort_by_f64_key(&mut roots, |z| z.re);
     // Cluster neighbouring roots (relative distance ≤ 2 %).
     let mut out = Vec::new();
     let mut i = 0;
@@ -130,7 +130,9 @@ fn lag_time_constants(den: &crate::model::poly::Poly) -> Result<Vec<f64>> {
         }
         i = j;
     }
-    out.sort_by(|a, b| b.partial_cmp(a).unwrap_or(std::cmp::Ordering::Equal));
+    // descending
+    crate::numerics::sort_f64(&mut out);
+    out.reverse();
     Ok(out)
 }
 

@@ -135,7 +135,7 @@ pub fn typed_presets() -> Vec<Preset> {
     for crit in [Criterion::Iste, Criterion::Ist2e, Criterion::Ist3e] {
         v.push(Preset {
             id: format!("kaya2020/ex1/ipd_{}", crit.id()),
-            title: format!("Kaya 2020 Ex. 1: I-PD ({})", crit.id().to_uppercase()),
+            title: format!("Kaya 2020 Ex. 1: I-PD ({})", crit.id().to_ascii_uppercase()),
             description: "Isothermal CSTR model 0.5848(−0.3546s+1)e^{−0.3567s}/(0.6302s+1); I-PD \
                           from Eqs. (5)-(7), Table I (Table III); derivative filtered with the \
                           default N (the plant is biproper). Unit set-point step, load 0.5 at t = 10 (Fig. 4)."

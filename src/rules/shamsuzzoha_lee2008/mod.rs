@@ -108,7 +108,7 @@ pub struct ImcPid {
 /// Groups equal (to a relative 1e-9) time constants into (pole, multiplicity).
 fn group_poles(lags: &[f64]) -> Vec<(f64, usize)> {
     let mut t: Vec<f64> = lags.to_vec();
-    t.sort_by(|a, b| a.total_cmp(b));
+    crate::numerics::sort_f64(&mut t);
     let mut out: Vec<(f64, usize)> = vec![];
     for x in t {
         match out.last_mut() {
