@@ -842,8 +842,8 @@ fn differences(o: &mut String) {
          the set-point and load responses simulated apart and followed for 200 s each (a study \
          option, `studies::perf_separate`; the load response alone, without the tail of the \
          set-point one). Ours with that option against ours by default (set point 1 at 0, load \
-         at 400, to 800) below; the set-point TV stays off (the jump of u at the step, K_c = \
-         1.6, is most of the difference).\n\
+         at 400, to 800) below; the set-point TV stays off: 2.23 from u(0+) as every row (printed \
+         2.11), 3.83 with the jump of u at the step (K_c = 1.6).\n\
          - Example 2, Liu et al.: a set-point controller around a delay-free model, a stabilizer \
          R(s) = 0.4s/(0.1s+1) and a disturbance estimator F₀ acting on y − G̃e^(-θs)u. With a \
          perfect model the load response depends on F₀ alone, y = Ge^(-θs)(1 − F₀Ge^(-θs))d, \
