@@ -10,7 +10,7 @@
 //! registered method tuned on its first preset.
 //!
 //! A slider drag changes λ at every update, so the update, tune, simulate and analyze are timed
-//! over a drag: λ cycles through [`DRAG`] (1.800, 1.802, …, 2.000), never the same input twice
+//! over a drag: λ cycles through [`DRAG`] (1.800, 1.802, …, 1.960), never the same input twice
 //! in a row; a cache that pays only on a repeated identical input gains nothing here. (The
 //! per-method table at the end repeats one input per method.)
 
@@ -33,8 +33,8 @@ use cpu::cpu_now;
 
 const WARMUP: usize = 100;
 
-/// The λ of a slider drag on the boiler: 1.800, 1.802, …, 2.000 (101 values, cycled).
-const DRAG: usize = 101;
+/// The λ of a slider drag on the boiler: 1.800, 1.802, …, 1.960 (81 values, cycled; the admissible λ ends at 1.973).
+const DRAG: usize = 81;
 fn drag_lambda(i: usize) -> f64 {
     // (1800 + 2i)/1000: λ = 1.9 exactly at i = 50
     (1800 + 2 * (i % DRAG)) as f64 / 1000.0
@@ -158,7 +158,7 @@ fn main() {
     println!("# pidlab benchmark: native");
     println!();
     println!(
-        "One slider update on the boiler: {} + simulate (3001 points, set-point + load step) + analyze; {runs} runs after {WARMUP} warm-up runs, λ cycling 1.800, 1.802, …, 2.000 (a drag).",
+        "One slider update on the boiler: {} + simulate (3001 points, set-point + load step) + analyze; {runs} runs after {WARMUP} warm-up runs, λ cycling 1.800, 1.802, …, 1.960 (a drag).",
         match &tune_call {
             Some((id, _)) => format!("tune({id})"),
             None => "literal I-PD (no boiler rule registered yet)".into(),
