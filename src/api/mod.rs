@@ -567,15 +567,23 @@ mod tests {
     fn update_analyses_once_with_the_same_answer() {
         let plant_v = serde_json::json!(
             {"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1});
-        let tuned = tune(&serde_json::json!({"method": "praveen_kumar", "plant": plant_v,
-            "params": {"lambda": 1.87, "epsilon": 0.2}}))
+        let tuned = tune(
+            &serde_json::json!({"method": "praveen_kumar", "plant": plant_v,
+            "params": {"lambda": 1.87, "epsilon": 0.2}}),
+        )
         .expect("tune");
         let input = serde_json::json!({"plant": plant_v, "controller": tuned["controller"]});
         let plant = input::plant(&input["plant"], "plant").expect("plant");
         let c = input::controller(&input["controller"], "controller").expect("controller");
-        assert!(crate::analysis::freq::is_kept(&plant, &c), "tune kept its analysis");
+        assert!(
+            crate::analysis::freq::is_kept(&plant, &c),
+            "tune kept its analysis"
+        );
         let reused = analyze(&input).expect("analyze");
-        assert!(!crate::analysis::freq::is_kept(&plant, &c), "analyze took it");
+        assert!(
+            !crate::analysis::freq::is_kept(&plant, &c),
+            "analyze took it"
+        );
         let fresh = analysis_json(&crate::analysis::freq::analyze(&plant, &c).expect("fresh"));
         assert_eq!(reused, fresh);
         assert_eq!(analyze(&input).expect("again"), fresh);

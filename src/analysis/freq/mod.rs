@@ -203,7 +203,11 @@ fn loop_bits(plant: &Plant, c: &Controller) -> Vec<u64> {
         tf(&ml.cy);
     }
     bits.push(plant.delay.to_bits());
-    bits.push(c.model_loop.as_ref().map_or(u64::MAX, |ml| ml.model.delay.to_bits()));
+    bits.push(
+        c.model_loop
+            .as_ref()
+            .map_or(u64::MAX, |ml| ml.model.delay.to_bits()),
+    );
     bits
 }
 
@@ -508,8 +512,14 @@ mod tests {
         slower.delay = 0.1000001;
         for (p, cc) in [(&plant, &c_ulp), (&plant, &other_cr), (&slower, &c)] {
             assert!(!is_kept(p, cc));
-            assert_eq!(analyze_reusing(p, cc).expect("other"), analyze(p, cc).expect("other"));
-            assert!(is_kept(&plant, &c), "an other loop's call must not take the kept one");
+            assert_eq!(
+                analyze_reusing(p, cc).expect("other"),
+                analyze(p, cc).expect("other")
+            );
+            assert!(
+                is_kept(&plant, &c),
+                "an other loop's call must not take the kept one"
+            );
         }
         // the same loop: taken, equal to the fresh one, and gone afterwards
         assert_eq!(analyze_reusing(&plant, &c).expect("reuse"), fresh);
