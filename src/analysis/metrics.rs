@@ -232,7 +232,11 @@ fn quadrature_with<const U: bool>(
         }
         // monomial forms once per piece, Horner at the quadrature points
         let yc = monomial_coeffs(yv);
-        let uc = if U { monomial_coeffs(&uv) } else { [0.0; NODES] };
+        let uc = if U {
+            monomial_coeffs(&uv)
+        } else {
+            [0.0; NODES]
+        };
         let e_at = |s: f64| r - horner(&yc, s);
         let (cuts, nc) = sign_cuts(&e_at, s0, s1);
         for w in cuts[..nc].windows(2) {
