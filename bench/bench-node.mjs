@@ -4,6 +4,11 @@
 // limited valve and anti-windup, and continuous with that valve; then every method of methods() on its first preset.
 //
 //   node bench/bench-node.mjs [runs]      (scripts/bench.sh builds pkg-node and runs this)
+//
+// A slider drag changes λ at every update, so the update, tune, simulate and analyze are timed
+// over a drag: λ cycles through 1.800, 1.802, …, 1.960 (DRAG), never the same input twice in a
+// row; a cache that pays only on a repeated identical input gains nothing here. (The
+// per-method table at the end repeats one input per method.)
 import { createRequire } from 'node:module';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
@@ -48,18 +53,31 @@ let tuneCall = null;
 if (ids.has('praveen_kumar')) tuneCall = { method: 'praveen_kumar', plant: BOILER, params: { lambda: 1.9, epsilon: 0.2 } };
 else if (ids.has('arvanitis_alg1')) tuneCall = { method: 'arvanitis_alg1', plant: BOILER, params: {} };
 
+// The λ of a slider drag on the boiler: 1.800, 1.802, …, 1.960 (81 values, cycled; the admissible λ ends at 1.973); λ = 1.9 is
+// the paper's (the printed Ms, python-control's half). Rules without λ: the same input each time.
+const DRAG = 81;
+const dragLambda = (i) => (1800 + 2 * (i % DRAG)) / 1000; // exact 1.9 at i = 50
+let k = 0;
+const dragCall = (i) => (tuneCall && tuneCall.params.lambda !== undefined
+  ? { ...tuneCall, params: { ...tuneCall.params, lambda: dragLambda(i) } } : tuneCall);
+const DRAG_CALLS = Array.from({ length: DRAG }, (_, i) => dragCall(i));
+const designAt = (i) => (tuneCall ? pidlab.tune(DRAG_CALLS[i % DRAG]).controller : IPD);
+
 function update() {
-  const controller = tuneCall ? pidlab.tune(tuneCall).controller : IPD;
+  const controller = designAt(k++);
   const sim = pidlab.simulate({ plant: BOILER, controller, scenario: SCENARIO });
   const an = pidlab.analyze({ plant: BOILER, controller });
   return [sim, an];
 }
-const [sim0, an0] = update();
+const [sim0, an0] = (() => {
+  const controller = designAt(50);
+  return [pidlab.simulate({ plant: BOILER, controller, scenario: SCENARIO }), pidlab.analyze({ plant: BOILER, controller })];
+})();
 if (sim0.y.length !== 3001) throw new Error(`expected 3001 samples, got ${sim0.y.length}`);
 
 console.log(`# pidlab benchmark: wasm in Node ${process.version} (${os.cpus()[0]?.model ?? '?'}, ${os.cpus().length} cpus)`);
 console.log();
-console.log(`One slider update on the boiler: ${tuneCall ? `tune(${tuneCall.method}${tuneCall.params.lambda ? `, λ = ${tuneCall.params.lambda}` : ''})` : 'literal I-PD (no rule on main yet)'} + simulate (3001 points, set-point + load step) + analyze; ${RUNS} runs after ${WARMUP} warm-up runs.`);
+console.log(`One slider update on the boiler: ${tuneCall ? `tune(${tuneCall.method}${tuneCall.params.lambda ? `, λ = ${tuneCall.params.lambda}` : ''})` : 'literal I-PD (no rule on main yet)'} + simulate (3001 points, set-point + load step) + analyze; ${RUNS} runs after ${WARMUP} warm-up runs, λ cycling 1.800, 1.802, …, 1.960 (a drag).`);
 console.log(`(Ms = ${an0.ms?.toFixed?.(3)}, stable = ${an0.stable}, diverged = ${sim0.diverged ?? false})`);
 console.log();
 console.log('| step | median | p95 | min | mean | CPU-time median |');
@@ -67,16 +85,16 @@ console.log('|---|---:|---:|---:|---:|---:|');
 const row = (name, s) => console.log(`| ${name} | ${f(s.median)} | ${f(s.p95)} | ${f(s.min)} | ${f(s.mean)} | ${f(s.cpuMedian)} |`);
 const full = time(update, RUNS);
 row('**update (tune + simulate + analyze)**', full);
-let ctl = IPD;
 const phases = {};
 if (tuneCall) {
-  phases.tune = time(() => pidlab.tune(tuneCall), RUNS);
+  phases.tune = time(() => pidlab.tune(DRAG_CALLS[k++ % DRAG]), RUNS);
   row('tune', phases.tune);
-  ctl = pidlab.tune(tuneCall).controller;
 }
-phases.simulate = time(() => pidlab.simulate({ plant: BOILER, controller: ctl, scenario: SCENARIO }), RUNS);
+const ctl = designAt(50);
+const drag = Array.from({ length: DRAG }, (_, i) => designAt(i));
+phases.simulate = time(() => pidlab.simulate({ plant: BOILER, controller: drag[k++ % DRAG], scenario: SCENARIO }), RUNS);
 row('simulate (3001 points)', phases.simulate);
-phases.analyze = time(() => pidlab.analyze({ plant: BOILER, controller: ctl }), RUNS);
+phases.analyze = time(() => pidlab.analyze({ plant: BOILER, controller: drag[k++ % DRAG] }), RUNS);
 row('analyze', phases.analyze);
 // For scripts/bench.sh: the update's figures, its phases and the controller, which the
 // python-control half (bench/python_control_bench.py) simulates the same way.
@@ -92,7 +110,7 @@ const SATURATED = { ...SAMPLED, actuator: { u_min: -1.5, u_max: 1.5, anti_windup
 const CONTINUOUS = { actuator: SATURATED.actuator };
 for (const [name, extra] of [['update, sampled h = 0.01 (tune + simulate + analyze)', SAMPLED], ['update, sampled h = 0.01, valve ±1.5, tracking anti-windup', SATURATED], ['update, continuous, valve ±1.5, tracking anti-windup', CONTINUOUS]]) {
   row(name, time(() => {
-    const controller = tuneCall ? pidlab.tune(tuneCall).controller : IPD;
+    const controller = designAt(k++);
     pidlab.simulate({ plant: BOILER, controller, scenario: SCENARIO, ...extra });
     pidlab.analyze({ plant: BOILER, controller });
   }, RUNS));

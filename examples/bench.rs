@@ -8,8 +8,13 @@
 //! (valve ±1.5, tracking anti-windup), and the continuous controller with the same valve.
 //! Median and p95 over `runs` (default 1000, at least 200) after 100 warm-up runs; then each
 //! registered method tuned on its first preset.
+//!
+//! A slider drag changes λ at every update, so the update, tune, simulate and analyze are timed
+//! over a drag: λ cycles through [`DRAG`] (1.800, 1.802, …, 1.960), never the same input twice
+//! in a row; a cache that pays only on a repeated identical input gains nothing here. (The
+//! per-method table at the end repeats one input per method.)
 
-use pidlab::analysis::freq::analyze;
+use pidlab::analysis::freq::{analyze, analyze_reusing};
 use pidlab::analysis::{simulate, simulate_real};
 use pidlab::api;
 use pidlab::model::controller::Controller;
@@ -27,6 +32,13 @@ mod cpu;
 use cpu::cpu_now;
 
 const WARMUP: usize = 100;
+
+/// The λ of a slider drag on the boiler: 1.800, 1.802, …, 1.960 (81 values, cycled; the admissible λ ends at 1.973).
+const DRAG: usize = 81;
+fn drag_lambda(i: usize) -> f64 {
+    // (1800 + 2i)/1000: λ = 1.9 exactly at i = 50
+    (1800 + 2 * (i % DRAG)) as f64 / 1000.0
+}
 
 struct Stats {
     median: f64,
@@ -114,18 +126,31 @@ fn main() {
     } else {
         None
     };
-    let controller = |call: &Option<(&str, Params)>| -> Controller {
+    // The design at the i-th λ of the drag (the rule's other parameters as in `tune_call`;
+    // Arvanitis Algorithm I has no λ and the literal I-PD no rule: the same input every time).
+    let controller = |call: &Option<(&str, Params)>, i: usize| -> Controller {
         match call {
             Some((id, p)) => {
-                rules::tune(id, &plant, p)
+                let p = if *id == "praveen_kumar" {
+                    p.clone().with("lambda", drag_lambda(i))
+                } else {
+                    p.clone()
+                };
+                rules::tune(id, &plant, &p)
                     .expect("tune the boiler")
                     .controller
             }
             None => ipd.clone(),
         }
     };
-
-    let c0 = controller(&tune_call);
+    // λ = 1.9 (the paper's), for the printed Ms and python-control's half.
+    let c0 = controller(&tune_call, 50);
+    let drag: Vec<Controller> = (0..DRAG).map(|i| controller(&tune_call, i)).collect();
+    let mut k = 0usize;
+    let mut next = move || {
+        k += 1;
+        k
+    };
     let s0 = simulate(&plant, &c0, &scenario).expect("simulate");
     let a0 = analyze(&plant, &c0).expect("analyze");
     assert_eq!(s0.y.len(), 3001);
@@ -133,7 +158,7 @@ fn main() {
     println!("# pidlab benchmark: native");
     println!();
     println!(
-        "One slider update on the boiler: {} + simulate (3001 points, set-point + load step) + analyze; {runs} runs after {WARMUP} warm-up runs.",
+        "One slider update on the boiler: {} + simulate (3001 points, set-point + load step) + analyze; {runs} runs after {WARMUP} warm-up runs, λ cycling 1.800, 1.802, …, 1.960 (a drag).",
         match &tune_call {
             Some((id, _)) => format!("tune({id})"),
             None => "literal I-PD (no boiler rule registered yet)".into(),
@@ -150,9 +175,10 @@ fn main() {
     println!("|---|---:|---:|---:|---:|---:|");
     let full = time(
         || {
-            let c = controller(&tune_call);
+            let c = controller(&tune_call, next());
             black_box(simulate(&plant, &c, &scenario).ok());
-            black_box(analyze(&plant, &c).ok());
+            // as `api::analyze` does: the rule's design check already analysed c
+            black_box(analyze_reusing(&plant, &c).ok());
         },
         runs,
         WARMUP,
@@ -165,10 +191,16 @@ fn main() {
         "setpoint": {"time": 0, "size": 1}, "disturbance": {"time": 15, "size": 1}});
     let ipd_v = serde_json::json!({"cr": {"num": [0.6029], "den": [1, 0]},
         "cy": {"num": [1.4976, 1.9849, 0.6029], "den": [1, 0]}});
-    let json_update = || -> Option<()> {
+    let mut json_update = || -> Option<()> {
         let ctl = match &tune_call {
             Some((id, p)) => {
-                let params = serde_json::to_value(p).unwrap_or(Value::Null);
+                let i = next();
+                let p = if *id == "praveen_kumar" {
+                    p.clone().with("lambda", drag_lambda(i))
+                } else {
+                    p.clone()
+                };
+                let params = serde_json::to_value(&p).unwrap_or(Value::Null);
                 let input = serde_json::json!({"method": id, "plant": plant_v, "params": params});
                 api::tune(&input).ok()?.get("controller")?.clone()
             }
@@ -192,17 +224,29 @@ fn main() {
         ),
     );
     let tune_stats = tune_call.as_ref().map(|_| {
-        let s = time(|| drop(black_box(controller(&tune_call))), runs, WARMUP);
+        let s = time(
+            || drop(black_box(controller(&tune_call, next()))),
+            runs,
+            WARMUP,
+        );
         row("tune", &s);
         s
     });
     let sim_stats = time(
-        || drop(black_box(simulate(&plant, &c0, &scenario).ok())),
+        || {
+            drop(black_box(
+                simulate(&plant, &drag[next() % DRAG], &scenario).ok(),
+            ))
+        },
         runs,
         WARMUP,
     );
     row("simulate (3001 points)", &sim_stats);
-    let an_stats = time(|| drop(black_box(analyze(&plant, &c0).ok())), runs, WARMUP);
+    let an_stats = time(
+        || drop(black_box(analyze(&plant, &drag[next() % DRAG]).ok())),
+        runs,
+        WARMUP,
+    );
     row("analyze", &an_stats);
     // For scripts/bench.sh: the update and its phases as JSON (the summary table and ratio).
     if let Ok(path) = std::env::var("BENCH_NATIVE_OUT") {
@@ -259,9 +303,9 @@ fn main() {
             name,
             &time(
                 || {
-                    let c = controller(&tune_call);
+                    let c = controller(&tune_call, next());
                     black_box(simulate_real(&plant, &c, &scenario, rl).ok());
-                    black_box(analyze(&plant, &c).ok());
+                    black_box(analyze_reusing(&plant, &c).ok());
                 },
                 runs,
                 WARMUP,
@@ -308,7 +352,7 @@ fn main() {
             || {
                 if let Ok(t) = rules::tune(&m.id, &dp, params) {
                     black_box(simulate(&pl, &t.controller, &sc).ok());
-                    black_box(analyze(&pl, &t.controller).ok());
+                    black_box(analyze_reusing(&pl, &t.controller).ok());
                 }
             },
             per,

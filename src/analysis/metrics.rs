@@ -132,6 +132,19 @@ pub fn quadrature(
     a: f64,
     b: f64,
     u_scale: f64,
+    f: impl FnMut(QuadPoint),
+) -> Scan {
+    quadrature_with::<true>(traj, a, b, u_scale, f)
+}
+
+/// [`quadrature`], with `u`, `du` and [`Scan::u_jumps`] computed only when `U` (the generic
+/// metrics read `t`, `e` and the node samples only; without `U` the points carry `u = du = 0`
+/// and `u_jumps` is false). `t`, `e`, `w` and the node samples are the same either way.
+fn quadrature_with<const U: bool>(
+    traj: &Trajectory,
+    a: f64,
+    b: f64,
+    u_scale: f64,
     mut f: impl FnMut(QuadPoint),
 ) -> Scan {
     let (k0, _) = traj.locate(a);
@@ -167,15 +180,17 @@ pub fn quadrature(
         let yv = traj.y_nodes(k);
         let vv = traj.v_nodes(k);
         let mut uv = [0.0; NODES];
-        for (u, v) in uv.iter_mut().zip(vv) {
-            *u = v - d;
-        }
-        if let Some(pu) = prev_u_end {
-            if (uv[0] - pu).abs() > 1e-9 * u_scale {
-                scan.u_jumps = true;
+        if U {
+            for (u, v) in uv.iter_mut().zip(vv) {
+                *u = v - d;
             }
+            if let Some(pu) = prev_u_end {
+                if (uv[0] - pu).abs() > 1e-9 * u_scale {
+                    scan.u_jumps = true;
+                }
+            }
+            prev_u_end = Some(uv[DEG]);
         }
-        prev_u_end = Some(uv[DEG]);
         let s0 = (c0 - t0) / len;
         let s1 = (c1 - t0) / len;
         for (j, y) in yv.iter().enumerate() {
@@ -194,10 +209,16 @@ pub fn quadrature(
                 let mut y = 0.0;
                 let mut u = 0.0;
                 let mut du = 0.0;
-                for ((&lj, &dlj), (&yj, &uj)) in l.iter().zip(dl).zip(yv.iter().zip(&uv)) {
-                    y += lj * yj;
-                    u += lj * uj;
-                    du += dlj * uj;
+                if U {
+                    for ((&lj, &dlj), (&yj, &uj)) in l.iter().zip(dl).zip(yv.iter().zip(&uv)) {
+                        y += lj * yj;
+                        u += lj * uj;
+                        du += dlj * uj;
+                    }
+                } else {
+                    for (&lj, &yj) in l.iter().zip(yv) {
+                        y += lj * yj;
+                    }
                 }
                 f(QuadPoint {
                     t: t0 + s * len - a,
@@ -211,7 +232,11 @@ pub fn quadrature(
         }
         // monomial forms once per piece, Horner at the quadrature points
         let yc = monomial_coeffs(yv);
-        let uc = monomial_coeffs(&uv);
+        let uc = if U {
+            monomial_coeffs(&uv)
+        } else {
+            [0.0; NODES]
+        };
         let e_at = |s: f64| r - horner(&yc, s);
         let (cuts, nc) = sign_cuts(&e_at, s0, s1);
         for w in cuts[..nc].windows(2) {
@@ -222,8 +247,8 @@ pub fn quadrature(
                 f(QuadPoint {
                     t: t0 + s * len - a,
                     e: e_at(s),
-                    u: horner(&uc, s),
-                    du: horner_d(&uc, s) / len,
+                    u: if U { horner(&uc, s) } else { 0.0 },
+                    du: if U { horner_d(&uc, s) / len } else { 0.0 },
                     w: wt * half,
                 });
             }
@@ -405,7 +430,8 @@ fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool)
     let ss = res.steady_state(r_w, d_w);
     let (mut iae, mut ise, mut itae, mut iste, mut ist2e, mut ist3e) =
         (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    let scan = quadrature(traj, a, b, u_scale(&res.u), |q| {
+    // t and e only: u, du and the jumps of u are not needed here
+    let scan = quadrature_with::<false>(traj, a, b, 0.0, |q| {
         let e2 = q.e * q.e;
         iae += q.w * q.e.abs();
         ise += q.w * e2;

@@ -3,7 +3,7 @@
 //! `crate::wasm` converts JavaScript values to and from these; native tests and fuzzing drive
 //! the very same functions.
 
-use crate::analysis::freq::{analyze as analyze_loop, Analysis};
+use crate::analysis::freq::{analyze_reusing as analyze_loop, Analysis};
 use crate::analysis::metrics::Metrics;
 use crate::analysis::SimResult;
 use crate::error::{Error, Result};
@@ -554,4 +554,38 @@ pub fn sweep(input: &Value) -> Result<Value> {
         })
         .collect();
     Ok(json!({ "method": inp.method, "param": r.param, "points": pts }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// One slider update through the JSON API analyses its design once: `tune` keeps the
+    /// rule's analysis, and `analyze` of the controller it returned (read back from JSON, the
+    /// page's path) takes it; the answer is that of a fresh analysis, field for field.
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn update_analyses_once_with_the_same_answer() {
+        let plant_v = serde_json::json!(
+            {"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1});
+        let tuned = tune(
+            &serde_json::json!({"method": "praveen_kumar", "plant": plant_v,
+            "params": {"lambda": 1.87, "epsilon": 0.2}}),
+        )
+        .expect("tune");
+        let input = serde_json::json!({"plant": plant_v, "controller": tuned["controller"]});
+        let plant = input::plant(&input["plant"], "plant").expect("plant");
+        let c = input::controller(&input["controller"], "controller").expect("controller");
+        assert!(
+            crate::analysis::freq::is_kept(&plant, &c),
+            "tune kept its analysis"
+        );
+        let reused = analyze(&input).expect("analyze");
+        assert!(
+            !crate::analysis::freq::is_kept(&plant, &c),
+            "analyze took it"
+        );
+        let fresh = analysis_json(&crate::analysis::freq::analyze(&plant, &c).expect("fresh"));
+        assert_eq!(reused, fresh);
+        assert_eq!(analyze(&input).expect("again"), fresh);
+    }
 }

@@ -181,21 +181,28 @@ pub enum DesignCheck {
 }
 
 impl DesignCheck {
-    /// Analyses `c` on `plant`.
+    /// Analyses `c` on `plant`, and keeps the analysis for the next
+    /// [`crate::analysis::freq::analyze_reusing`] of the same loop (the `analyze` call of the
+    /// same slider update, `api::analyze`).
     pub fn of(plant: &Plant, c: &Controller) -> DesignCheck {
-        match crate::analysis::freq::analyze(plant, c) {
-            Ok(a) => DesignCheck::Done {
-                stable: a.stable,
-                verdict: a.verdict.clone(),
-                ms: a.ms,
-                w_ms: a.w_ms,
-                ms_at_infinity: a.ms_at_infinity,
-                l_inf_analysis: a.l_inf,
-                gm: a.gm,
-                pm: a.pm,
-                w_gc: a.w_gc,
-                delay_margin: a.delay_margin,
-            },
+        use crate::analysis::freq;
+        match freq::analyze(plant, c) {
+            Ok(a) => {
+                let check = DesignCheck::Done {
+                    stable: a.stable,
+                    verdict: a.verdict.clone(),
+                    ms: a.ms,
+                    w_ms: a.w_ms,
+                    ms_at_infinity: a.ms_at_infinity,
+                    l_inf_analysis: a.l_inf,
+                    gm: a.gm,
+                    pm: a.pm,
+                    w_gc: a.w_gc,
+                    delay_margin: a.delay_margin,
+                };
+                freq::keep_for_reuse(plant, c, a);
+                check
+            }
             Err(e) => DesignCheck::Failed {
                 analysis_error: e.to_string(),
             },

@@ -169,6 +169,82 @@ pub fn analyze(plant: &Plant, c: &Controller) -> Result<Analysis> {
     Ok(out)
 }
 
+/// The analysis a rule's design check computed last, kept for the next [`analyze_reusing`] of
+/// the same loop: one slider update tunes (the rule analyses its design) and then asks for the
+/// analysis of that design, and the second call takes the first one's result instead of
+/// computing it again. One slot, taken (not copied) by the call that uses it, so only that
+/// duplicate is saved: a repeated identical input is analysed afresh each time.
+struct Kept {
+    key: Vec<u64>,
+    analysis: Analysis,
+}
+
+std::thread_local! {
+    static KEPT: std::cell::RefCell<Option<Kept>> = const { std::cell::RefCell::new(None) };
+}
+
+/// What identifies the analysed loop: the exact bit patterns of everything [`analyze`] reads
+/// (the plant's rational part and dead time, Cr and Cy, and a model loop's plant, Cr and Cy),
+/// each polynomial preceded by its length. Equal keys mean the same analysis, bit for bit.
+fn loop_bits(plant: &Plant, c: &Controller) -> Vec<u64> {
+    let mut bits = Vec::with_capacity(32);
+    let mut tf = |t: &Tf| {
+        for p in [&t.num, &t.den] {
+            bits.push(p.asc().len() as u64);
+            bits.extend(p.asc().iter().map(|x| x.to_bits()));
+        }
+    };
+    tf(&plant.tf);
+    tf(&c.cr);
+    tf(&c.cy);
+    if let Some(ml) = &c.model_loop {
+        tf(&ml.model.tf);
+        tf(&ml.cr);
+        tf(&ml.cy);
+    }
+    bits.push(plant.delay.to_bits());
+    bits.push(
+        c.model_loop
+            .as_ref()
+            .map_or(u64::MAX, |ml| ml.model.delay.to_bits()),
+    );
+    bits
+}
+
+/// Keeps `a`, the [`analyze`] of `plant` with `c`, for the next [`analyze_reusing`] of the
+/// same loop (replacing whatever was kept).
+pub fn keep_for_reuse(plant: &Plant, c: &Controller, a: Analysis) {
+    let key = loop_bits(plant, c);
+    KEPT.with(|k| *k.borrow_mut() = Some(Kept { key, analysis: a }));
+}
+
+/// Whether an analysis of this loop is kept (unit tests: that the update's two calls meet).
+#[cfg(test)]
+pub(crate) fn is_kept(plant: &Plant, c: &Controller) -> bool {
+    let key = loop_bits(plant, c);
+    KEPT.with(|k| k.borrow().as_ref().is_some_and(|kept| kept.key == key))
+}
+
+/// [`analyze`], taking the analysis [`keep_for_reuse`] kept when it is of the same loop (the
+/// exact bits of plant and controller): the same value, computed once per update.
+pub fn analyze_reusing(plant: &Plant, c: &Controller) -> Result<Analysis> {
+    let key = loop_bits(plant, c);
+    let hit = KEPT.with(|k| {
+        let mut k = k.borrow_mut();
+        match k.take() {
+            Some(kept) if kept.key == key => Some(kept.analysis),
+            other => {
+                *k = other;
+                None
+            }
+        }
+    });
+    match hit {
+        Some(a) => Ok(a),
+        None => analyze(plant, c),
+    }
+}
+
 /// Only the stability verdict and Ms of [`analyze`] (`(stable, ms)`), computed by the same
 /// functions in the same order but without the margins, Mt, bandwidth and Nyquist plot: for
 /// scans that judge many designs (`rules::admissible`). `ms` is `None` when `analyze` has none.
@@ -407,6 +483,49 @@ fn nyquist_plot(samples: &[(f64, C64)]) -> Vec<[f64; 3]> {
 mod tests {
     use super::*;
     use crate::model::poly::Poly;
+
+    /// The kept analysis is taken once, by a call for the same loop only, and is the value
+    /// `analyze` computes; any other loop (one coefficient's last bit, the set-point path, the
+    /// dead time) is analysed afresh and leaves it in place.
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn kept_analysis_is_taken_once_by_the_same_loop() {
+        let plant = crate::model::plant::Family::IpdtIr {
+            k: 0.547,
+            tau: 1.06,
+            tau_z: 0.418,
+            theta: 0.1,
+        }
+        .plant();
+        let pid = |kp: f64| {
+            Controller::from_desc(&[kp * 0.2, 0.6], &[1.0, 0.0], &[1.5, kp, 0.6], &[1.0, 0.0])
+                .expect("controller")
+        };
+        let c = pid(1.9849);
+        let fresh = analyze(&plant, &c).expect("analyze");
+        keep_for_reuse(&plant, &c, fresh.clone());
+        assert!(is_kept(&plant, &c));
+        // other loops: computed, and the kept one stays
+        let c_ulp = pid(f64::from_bits(1.9849f64.to_bits() + 1));
+        let mut other_cr = c.clone();
+        other_cr.cr = pid(1.0).cr;
+        let mut slower = plant.clone();
+        slower.delay = 0.1000001;
+        for (p, cc) in [(&plant, &c_ulp), (&plant, &other_cr), (&slower, &c)] {
+            assert!(!is_kept(p, cc));
+            assert_eq!(
+                analyze_reusing(p, cc).expect("other"),
+                analyze(p, cc).expect("other")
+            );
+            assert!(
+                is_kept(&plant, &c),
+                "an other loop's call must not take the kept one"
+            );
+        }
+        // the same loop: taken, equal to the fresh one, and gone afterwards
+        assert_eq!(analyze_reusing(&plant, &c).expect("reuse"), fresh);
+        assert!(!is_kept(&plant, &c));
+        assert_eq!(analyze_reusing(&plant, &c).expect("again"), fresh);
+    }
 
     /// `horner_jw` is `Poly::eval_c` at `0 + jω`, value for value (== compares ±0 as equal,
     /// which is the only difference the module docs allow).

@@ -388,7 +388,47 @@ fn admissible(p: &IpdtIr, l: f64, neutral: bool) -> bool {
 /// scan from λ_b up to 10⁶·λ_b refined by bisection (the set is taken to be one interval, as it
 /// is on every plant we scanned). `max` is `None` when no bound exists in that range (e.g. z = 0
 /// or θ = 0, where |L(j∞)| = 0 and β stays > 0). Errors (path `plant`) when no λ is admissible.
+///
+/// The interval depends on the plant only (and `neutral`), not on λ: the last
+/// [`LAMBDA_RANGE_CACHE_SIZE`] are kept by the exact bits of k, τ, z, θ (a λ drag scans once;
+/// the scan is deterministic, so a kept interval is the one a new scan would find, bit for bit).
 pub fn lambda_range(p: &IpdtIr, neutral: bool) -> Result<(f64, Option<f64>)> {
+    let key = [
+        p.k.to_bits(),
+        p.tau.to_bits(),
+        p.z.to_bits(),
+        p.theta.to_bits(),
+        neutral as u64,
+    ];
+    if let Some(r) = LAMBDA_RANGES.with(|c| c.borrow().iter().find(|(k, _)| *k == key).map(|e| e.1))
+    {
+        return Ok(r);
+    }
+    let r = scan_lambda_range(p, neutral)?;
+    LAMBDA_RANGES.with(|c| {
+        let mut c = c.borrow_mut();
+        if c.len() >= LAMBDA_RANGE_CACHE_SIZE {
+            c.remove(0);
+        }
+        c.push((key, r));
+    });
+    Ok(r)
+}
+
+/// How many plants' λ intervals [`lambda_range`] keeps.
+const LAMBDA_RANGE_CACHE_SIZE: usize = 8;
+
+/// One λ interval kept by [`lambda_range`]: (the bits of k, τ, z, θ and `neutral`, the interval).
+type KeptRange = ([u64; 5], (f64, Option<f64>));
+
+std::thread_local! {
+    /// The last λ intervals found by [`scan_lambda_range`], oldest first.
+    static LAMBDA_RANGES: std::cell::RefCell<Vec<KeptRange>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// [`lambda_range`]'s scan (600 designs from λ_b up, the ends bisected).
+fn scan_lambda_range(p: &IpdtIr, neutral: bool) -> Result<(f64, Option<f64>)> {
     let lb = lambda_b(p);
     let steps = 600;
     let ratio = (1e6f64).powf(1.0 / steps as f64);
@@ -410,7 +450,7 @@ pub fn lambda_range(p: &IpdtIr, neutral: bool) -> Result<(f64, Option<f64>)> {
     }
     match min {
         Some(m) => Ok((m, None)),
-        None if neutral && lambda_range(p, false).is_ok() => Err(Error::new(
+        None if neutral && scan_lambda_range(p, false).is_ok() => Err(Error::new(
             "plant",
             format!(
                 "no λ gives |L(j∞)| = |k z k_d α/(τ β)| < 1 with the ideal derivative on the \
@@ -969,4 +1009,35 @@ fn lambda_for_ms(p: &IpdtIr, ms: f64, epsilon: f64, deriv: Derivative) -> Result
             target_ms: ms,
         },
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A kept λ interval is the scan's, bit for bit, for the plant (and derivative structure)
+    /// it was found for: two plants differing in the last bit of θ and both structures, asked
+    /// in turn, each get their own scan's interval.
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn kept_lambda_range_is_the_scan_of_its_plant() {
+        let a = EX1;
+        let b = IpdtIr {
+            theta: f64::from_bits(a.theta.to_bits() + 1),
+            ..a
+        };
+        let c = IpdtIr { theta: 0.2, ..a };
+        let bits = |r: (f64, Option<f64>)| (r.0.to_bits(), r.1.map(f64::to_bits));
+        for _ in 0..2 {
+            for p in [&a, &b, &c] {
+                for neutral in [true, false] {
+                    let kept = lambda_range(p, neutral).expect("range");
+                    let scan = scan_lambda_range(p, neutral).expect("scan");
+                    assert_eq!(bits(kept), bits(scan), "{p:?}, neutral {neutral}");
+                }
+            }
+        }
+        // the three plants' intervals differ (so a key mix-up would have been caught)
+        let upper = |p: &IpdtIr| lambda_range(p, true).expect("range").1;
+        assert_ne!(upper(&a), upper(&c));
+    }
 }
