@@ -24,6 +24,7 @@ pub mod arvanitis2012;
 pub mod chen_seborg2002;
 pub mod classic;
 pub mod kaya2020;
+mod kept;
 pub mod medarametla_manimozhi2018;
 pub mod praveen_kumar_narayana;
 pub mod shamsuzzoha_lee2008;

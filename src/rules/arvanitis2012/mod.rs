@@ -559,10 +559,9 @@ const ALG3_CACHE_SIZE: usize = 16;
 type Alg3Key = ([u64; 5], bool);
 
 std::thread_local! {
-    /// The last Algorithm III solutions: (key, solution). The solve is deterministic, so a hit
-    /// is bit-identical to solving again.
-    static ALG3_CACHE: std::cell::RefCell<Vec<(Alg3Key, (MethodISolution, Alg3Info))>> =
-        const { std::cell::RefCell::new(Vec::new()) };
+    /// The last Algorithm III solutions by key.
+    static ALG3_CACHE: std::cell::RefCell<crate::rules::kept::Kept<Alg3Key, (MethodISolution, Alg3Info)>> =
+        const { std::cell::RefCell::new(crate::rules::kept::Kept::new(ALG3_CACHE_SIZE)) };
 }
 
 fn alg3_key(p: &Process, zeta: f64, criterion: &str) -> Alg3Key {
@@ -580,16 +579,12 @@ fn alg3_key(p: &Process, zeta: f64, criterion: &str) -> Alg3Key {
 /// makes the first parabolic step poor).
 pub fn alg3_cached(p: &Process, zeta: f64, criterion: &str) -> Result<(MethodISolution, Alg3Info)> {
     let key = alg3_key(p, zeta, criterion);
-    let hit = ALG3_CACHE.with(|c| c.borrow().iter().find(|e| e.0 == key).map(|e| e.1.clone()));
+    let hit = ALG3_CACHE.with(|c| c.borrow().get(&key));
     if let Some(r) = hit {
         return Ok(r);
     }
     let r = algorithm3(p, zeta, criterion, None)?;
-    ALG3_CACHE.with(|c| {
-        let mut c = c.borrow_mut();
-        c.insert(0, (key, r.clone()));
-        c.truncate(ALG3_CACHE_SIZE);
-    });
+    ALG3_CACHE.with(|c| c.borrow_mut().put(key, r.clone()));
     Ok(r)
 }
 

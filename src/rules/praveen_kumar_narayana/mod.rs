@@ -85,6 +85,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::{lead_lag, Controller, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::model::poly::Poly;
+use crate::rules::kept::Kept;
 use nalgebra::{Matrix4, Vector4};
 
 pub mod settings;
@@ -400,31 +401,25 @@ pub fn lambda_range(p: &IpdtIr, neutral: bool) -> Result<(f64, Option<f64>)> {
         p.theta.to_bits(),
         neutral as u64,
     ];
-    if let Some(r) = LAMBDA_RANGES.with(|c| c.borrow().iter().find(|(k, _)| *k == key).map(|e| e.1))
-    {
+    if let Some(r) = LAMBDA_RANGES.with(|c| c.borrow().get(&key)) {
         return Ok(r);
     }
     let r = scan_lambda_range(p, neutral)?;
-    LAMBDA_RANGES.with(|c| {
-        let mut c = c.borrow_mut();
-        if c.len() >= LAMBDA_RANGE_CACHE_SIZE {
-            c.remove(0);
-        }
-        c.push((key, r));
-    });
+    LAMBDA_RANGES.with(|c| c.borrow_mut().put(key, r));
     Ok(r)
 }
+
+/// A λ interval: (min, max if any).
+type Interval = (f64, Option<f64>);
 
 /// How many plants' λ intervals [`lambda_range`] keeps.
 const LAMBDA_RANGE_CACHE_SIZE: usize = 8;
 
-/// One λ interval kept by [`lambda_range`]: (the bits of k, τ, z, θ and `neutral`, the interval).
-type KeptRange = ([u64; 5], (f64, Option<f64>));
-
 std::thread_local! {
-    /// The last λ intervals found by [`scan_lambda_range`], oldest first.
-    static LAMBDA_RANGES: std::cell::RefCell<Vec<KeptRange>> =
-        const { std::cell::RefCell::new(Vec::new()) };
+    /// The last λ intervals found by [`scan_lambda_range`], by the bits of k, τ, z, θ and
+    /// `neutral`.
+    static LAMBDA_RANGES: std::cell::RefCell<Kept<[u64; 5], Interval>> =
+        const { std::cell::RefCell::new(Kept::new(LAMBDA_RANGE_CACHE_SIZE)) };
 }
 
 /// [`lambda_range`]'s scan (600 designs from λ_b up, the ends bisected).
@@ -844,8 +839,8 @@ const MS_MIN_CACHE_SIZE: usize = 8;
 std::thread_local! {
     /// The last Ms minima found by [`lambda_for_ms`]: (key, λ at the minimum, Ms there). The
     /// search is deterministic, so a hit gives bit-identical results.
-    static MS_MIN_CACHE: std::cell::RefCell<Vec<([u64; 7], f64, f64)>> =
-        const { std::cell::RefCell::new(Vec::new()) };
+    static MS_MIN_CACHE: std::cell::RefCell<Kept<[u64; 7], (f64, f64)>> =
+        const { std::cell::RefCell::new(Kept::new(MS_MIN_CACHE_SIZE)) };
 }
 
 /// How many solved targets [`lambda_for_ms`] keeps (a drag's recent values).
@@ -854,8 +849,8 @@ const MS_SOLVED_SIZE: usize = 16;
 std::thread_local! {
     /// The last λ solved for a target Ms: (loop key, target Ms, λ). A new target of the same
     /// loop starts from the nearest one ([`lambda_near`]).
-    static MS_SOLVED: std::cell::RefCell<Vec<([u64; 7], f64, f64)>> =
-        const { std::cell::RefCell::new(Vec::new()) };
+    static MS_SOLVED: std::cell::RefCell<Kept<([u64; 7], f64), f64>> =
+        const { std::cell::RefCell::new(Kept::new(MS_SOLVED_SIZE)) };
 }
 
 /// λ for the target Ms `ms` starting from a solved neighbour `(ms0, l0)` of the same loop on
@@ -947,26 +942,21 @@ fn lambda_for_ms(p: &IpdtIr, ms: f64, epsilon: f64, deriv: Derivative) -> Result
     // the target, so the last few are kept by loop (a target-Ms slider drag reuses it: 41 of
     // the ~55 frequency analyses of one solve).
     let key = ms_min_key(p, epsilon, deriv);
-    let (l_min, ms_min) =
-        match MS_MIN_CACHE.with(|c| c.borrow().iter().find(|e| e.0 == key).map(|e| (e.1, e.2))) {
-            Some(hit) => hit,
-            None => {
-                let (a, b) = crate::numerics::golden_bracket(
-                    |x| ms_of(x.exp()),
-                    (lo * 1.0001).ln(),
-                    (hi * 0.9999).ln(),
-                    40,
-                );
-                let l_min = (0.5 * (a + b)).exp();
-                let ms_min = ms_of(l_min);
-                MS_MIN_CACHE.with(|c| {
-                    let mut c = c.borrow_mut();
-                    c.insert(0, (key, l_min, ms_min));
-                    c.truncate(MS_MIN_CACHE_SIZE);
-                });
-                (l_min, ms_min)
-            }
-        };
+    let (l_min, ms_min) = match MS_MIN_CACHE.with(|c| c.borrow().get(&key)) {
+        Some(hit) => hit,
+        None => {
+            let (a, b) = crate::numerics::golden_bracket(
+                |x| ms_of(x.exp()),
+                (lo * 1.0001).ln(),
+                (hi * 0.9999).ln(),
+                40,
+            );
+            let l_min = (0.5 * (a + b)).exp();
+            let ms_min = ms_of(l_min);
+            MS_MIN_CACHE.with(|c| c.borrow_mut().put(key, (l_min, ms_min)));
+            (l_min, ms_min)
+        }
+    };
     if ms <= ms_min {
         return Err(Error::new(
             "params.target_ms",
@@ -980,9 +970,9 @@ fn lambda_for_ms(p: &IpdtIr, ms: f64, epsilon: f64, deriv: Derivative) -> Result
     let near = MS_SOLVED.with(|c| {
         c.borrow()
             .iter()
-            .filter(|e| e.0 == key && e.1 > ms_min)
-            .min_by(|a, b| (a.1 - ms).abs().total_cmp(&(b.1 - ms).abs()))
-            .map(|e| (e.1, e.2))
+            .filter(|((k, ms0), _)| *k == key && *ms0 > ms_min)
+            .min_by(|a, b| (a.0 .1 - ms).abs().total_cmp(&(b.0 .1 - ms).abs()))
+            .map(|&((_, ms0), l0)| (ms0, l0))
     });
     let warm = near.and_then(|(ms0, l0)| {
         if ms0 == ms {
@@ -995,12 +985,7 @@ fn lambda_for_ms(p: &IpdtIr, ms: f64, epsilon: f64, deriv: Derivative) -> Result
         Some(l) => l,
         None => crate::analysis::freq::solve_for_ms(ms, l_min, top, loop_of)?,
     };
-    MS_SOLVED.with(|c| {
-        let mut c = c.borrow_mut();
-        c.retain(|e| !(e.0 == key && e.1 == ms));
-        c.insert(0, (key, ms, l));
-        c.truncate(MS_SOLVED_SIZE);
-    });
+    MS_SOLVED.with(|c| c.borrow_mut().put((key, ms), l));
     Ok((
         l,
         MsSearch {
