@@ -65,8 +65,12 @@ const state = (over) => ({ ...S.defaultState(), plant: { ...boiler }, target: nu
 const pk = (lambda, extra = {}) => ({ method: 'praveen_kumar', params: { lambda, epsilon: 0.2, ...extra } });
 const real = { actuator: { u_min: -1.5, u_max: 2.5, anti_windup: { kind: 'tracking', tt: 1 } }, sampling: { h: 0.1, method: 'tustin' }, noise: { std: 0.01, seed: 1 } };
 
-// kind: slider (range input, values over `range`), number (typed value), select (options in
-// turn), check (toggled), click (a button). `st`: the page's state (hash); `hash`: extra hash.
+// kind: slider (range input, values over `range`), number (typed value), text (typed text, the
+// strings of `values` in turn), select (options in turn), check (toggled), click (a button).
+// `st`: the page's state (hash); `hash`: extra hash; `setup`: [selector, kind, value] inputs
+// made once after the page opened (e.g. the custom family chosen); `before`/`beforeValues`: a
+// slider moved before each step, `beforeClick`: a button pressed before each step (after it),
+// `commit`: each of those committed to the history first.
 const CONTROLS = [
   { name: 'lambda', what: 'λ slider (Praveen Kumar, boiler)', st: state(pk(1.0)), sel: '#mp-lambda', kind: 'slider', range: [0.5, 1.8] },
   { name: 'epsilon', what: 'ε slider (Praveen Kumar)', st: state(pk(1.0)), sel: '#mp-epsilon', kind: 'slider', range: [0.05, 0.95] },
@@ -106,6 +110,13 @@ const CONTROLS = [
   { name: 'embed-choice', what: 'classroom: embed slider choice checkbox', st: state(pk(1.0)), sel: '#embed-choices input[type=checkbox]', kind: 'check', noRender: true },
   { name: 'reveal', what: 'classroom: instructor reveal button (Ms hidden)', st: state(pk(1.0)), hash: '&hide=ms', sel: 'button.reveal', kind: 'click', fresh: true, noRender: true },
   { name: 'undo', what: 'undo button (after λ moves)', st: state(pk(1.0)), sel: '#undo', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], commit: true },
+  { name: 'redo', what: 'redo button (after a λ move and an undo)', st: state(pk(1.0)), sel: '#redo', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], beforeClick: '#undo', commit: true },
+  { name: 'reset-all', what: 'reset-to-defaults button (after a plant k move)', st: state(pk(1.0)), sel: '#reset-all', kind: 'click', before: '#fp-k', beforeValues: [0.4, 0.7] },
+  { name: 'pin-remove', what: 'classroom: remove a pinned design', st: state(pk(1.0)), setup: [['#pin', 'click']], sel: '#pin-list button', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], beforeClick: '#pin' },
+  { name: 'pin-example', what: 'preset: overlay the other settings of the example (Kaya 2020 ex. 2)', st: state(pk(1.0)), setup: [['#preset', 'select', 'kaya2020/ex2/irshad_ali']], sel: '#pin-example', kind: 'click' },
+  { name: 'custom-den', what: 'plant: custom denominator (typed text)', st: state(pk(1.0)), setup: [['#family', 'select', 'custom']], sel: '#custom-den', kind: 'text', values: ['1.06, 1, 0', '0.9, 1, 0', '1.2, 1, 0', '1.0, 1, 0'] },
+  { name: 'custom-num', what: 'plant: custom numerator (typed text)', st: state(pk(1.0)), setup: [['#family', 'select', 'custom']], sel: '#custom-num', kind: 'text', values: ['-0.2286, 0.547', '-0.2, 0.547', '-0.25, 0.5', '-0.22, 0.6'] },
+  { name: 'custom-delay', what: 'plant: custom dead time θ slider', st: state(pk(1.0)), setup: [['#family', 'select', 'custom']], sel: '#fp-delay', kind: 'slider', range: [0.05, 0.4] },
 ];
 
 const q = (a, p) => {
@@ -192,8 +203,22 @@ const HELPERS = () => {
   };
 };
 
+/** The control's `setup` inputs, each followed by a settled page. */
+async function prepare(page, c) {
+  for (const [sel, kind, v] of c.setup || []) {
+    await page.evaluate(([s, k, x]) => {
+      const e = document.querySelector(s);
+      if (!e) throw new Error('setup: no element ' + s);
+      if (k === 'click') e.click();
+      else { e.value = String(x); e.dispatchEvent(new Event(k === 'select' ? 'change' : 'input', { bubbles: true })); }
+    }, [sel, kind, v]);
+    await page.evaluate(() => window.__pidlab.settled(true));
+  }
+}
+
 async function run(c) {
   const { page, errors } = await openPage(U.encodeHash(c.st) + (c.hash || ''));
+  await prepare(page, c);
   await page.evaluate(HELPERS);
   const out = { step: { frame: [], result: [], settled: [] }, drag: null, errors };
   const info = await page.evaluate((sel) => {
@@ -205,7 +230,7 @@ async function run(c) {
   const range = c.range || (Number.isFinite(info.lo) && Number.isFinite(info.hi) ? [info.lo + 0.1 * (info.hi - info.lo), info.hi - 0.1 * (info.hi - info.lo)] : [info.min, info.max]);
   const opts = info.options ? info.options.filter((o) => !(c.skipEmpty && o === '')) : null;
   // event i of count: values spread over the range in a scrambled order
-  const value = (i, count) => (opts ? opts[(i + 1) % opts.length] : range[0] + (range[1] - range[0]) * (((i * 37) % count) + 0.5) / count);
+  const value = (i, count) => (c.values ? c.values[i % c.values.length] : opts ? opts[(i + 1) % opts.length] : range[0] + (range[1] - range[0]) * (((i * 37) % count) + 0.5) / count);
   const steps = opts ? Math.max(n, Math.min(opts.length, maxOptions)) : n;
   for (let i = 0; i < steps; i++) {
     if (c.before) {
@@ -214,9 +239,16 @@ async function run(c) {
       await page.evaluate(() => window.__pidlab.settled());
       if (c.commit) await page.waitForTimeout(700); // history commits a settled change
     }
+    if (c.beforeClick) {
+      // a button pressed for this one to act on (undo before redo, pin before remove)
+      await page.evaluate((s) => document.querySelector(s).click(), c.beforeClick);
+      await page.evaluate(() => window.__pidlab.settled());
+      if (c.commit) await page.waitForTimeout(700);
+    }
     if (c.fresh && i > 0) {
       await page.close();
       const o = await openPage(U.encodeHash(c.st) + (c.hash || ''));
+      await prepare(o.page, c);
       Object.assign(out, { errors: [...out.errors, ...o.errors] });
       await o.page.evaluate(HELPERS);
       const r = await o.page.evaluate(([s, k, v, nr]) => window.__bench.step(s, k, v, nr), [c.sel, c.kind, value(i, steps), !!c.noRender]);

@@ -49,13 +49,15 @@ export function compute() {
   const perturbed = S.isPerturbed(state.pert);
   r.truePlant = perturbed ? S.perturbPlant(state.plant, state.pert) : state.plant;
   const real = simInput(state); // actuator limits, sampling, noise (issue 13), when set
+  // (typed: the samples come as Float64Arrays, whose buffers the worker transfers to this
+  // thread instead of cloning 5 × 3001 numbers; plots.js and export-data.js take either kind)
   try {
-    r.sim = get(r, 'simulate', { plant: r.truePlant, controller, scenario: state.scenario, ...real });
+    r.sim = get(r, 'simulate', { plant: r.truePlant, controller, scenario: state.scenario, ...real, typed: true });
   } catch (e) {
     failed(r, 'Ill-posed loop: cannot simulate', e);
   }
   if (perturbed) {
-    try { r.simNom = get(r, 'simulate', { plant: state.plant, controller, scenario: state.scenario, ...real }); } catch { r.simNom = null; }
+    try { r.simNom = get(r, 'simulate', { plant: state.plant, controller, scenario: state.scenario, ...real, typed: true }); } catch { r.simNom = null; }
   }
   t0 = lap('simulate', t0);
   try {

@@ -7,7 +7,7 @@ import * as E from './engine.js';
 import { $, el } from './dom.js';
 import { store, methodInfo, methodParams } from './store.js';
 import * as P from './pins.js';
-import { specOf } from './plots.js';
+import { specOf, specText } from './plots.js';
 
 /** What each quantity is measured in: the plant's own units (the page has no unit system). */
 export const UNITS = {
@@ -51,7 +51,7 @@ function responseColumns() {
   const r = store.last;
   if (r && r.sim) {
     cols.push(['t', r.sim.t], ['r', r.sim.r], ['d', r.sim.d], ['y', r.sim.y], ['u', r.sim.u]);
-    if (Array.isArray(r.sim.v)) cols.push(['v', r.sim.v]); // before the limits (sampled loop)
+    if (r.sim.v && r.sim.v.length) cols.push(['v', r.sim.v]); // before the limits (sampled loop)
     if (r.simNom) cols.push(['y_nominal', r.simNom.y], ['u_nominal', r.simNom.u]);
   }
   P.pinned().forEach((p, i) => {
@@ -89,7 +89,7 @@ export function jsonText() {
   const r = store.last || {};
   const an = r.an ? { ms: r.an.ms, gm: r.an.gm, pm: r.an.pm, w_gc: r.an.w_gc, w_pc: r.an.w_pc, stable: r.an.stable } : null;
   const responses = {};
-  for (const [k, v] of responseColumns()) responses[k] = v;
+  for (const [k, v] of responseColumns()) responses[k] = Array.from(v); // (a Float64Array of compute.js's typed samples → number[])
   return JSON.stringify({ pidlab: 'design', design: designOf(), analysis: an, metrics: r.sim ? r.sim.metrics : null, responses }, null, 1) + '\n';
 }
 
@@ -126,7 +126,7 @@ export function exportPng(canvasId, scale = 2) {
   const tmp = el('canvas', { id: canvasId + '-export', width: w, height: h, class: 'export-canvas', 'aria-hidden': 'true' });
   document.body.append(tmp);
   try {
-    E.call('plot', { ...spec, canvas: tmp.id, dpr: k });
+    E.call('plot', specText({ ...spec, canvas: tmp.id, dpr: k }));
   } catch (e) {
     tmp.remove();
     c.toBlob((blob) => { if (blob) download(blob, canvasId + '.png'); }, 'image/png');

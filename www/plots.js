@@ -77,19 +77,24 @@ function series(sim, key, t0, t1, nb) {
 }
 
 // JSON text of sample arrays, kept with the array: the curves of pinned designs and of
-// memoized simulations are serialized once, not on every render.
+// memoized simulations are serialized once, not on every render. A Float64Array (simulate's
+// typed samples, compute.js) is written as the JSON array of its numbers: join() writes each
+// finite number as JSON.stringify does (both use Number::toString); a non-finite one, which
+// JSON writes as null, goes through Array.from.
 const jsonOf = new WeakMap();
 function arrayText(a) {
   let t = jsonOf.get(a);
   if (t === undefined) {
-    t = JSON.stringify(a);
+    if (ArrayBuffer.isView(a)) t = a.every(Number.isFinite) ? '[' + a.join(',') + ']' : JSON.stringify(Array.from(a));
+    else t = JSON.stringify(a);
     jsonOf.set(a, t);
   }
   return t;
 }
 
-/** The JSON text of a plot spec (as JSON.stringify, with each series' x and y placed last). */
-function specText(spec) {
+/** The JSON text of a plot spec (as JSON.stringify, with each series' x and y placed last; a
+ *  Float64Array series as the array of its numbers). */
+export function specText(spec) {
   const open = (o) => { const t = JSON.stringify(o); return t === '{}' ? '{' : t.slice(0, -1) + ','; };
   const series = spec.series.map(({ x, y, ...rest }) => open(rest) + '"x":' + arrayText(x) + ',"y":' + arrayText(y) + '}');
   const { series: _, ...head } = spec;
@@ -192,7 +197,7 @@ export function drawPlots(r) {
     return { label: run.label.replace(/^y/, 'u'), x: w.x, y: w.y, color: run.color, faint: run.faint };
   });
   // The real loop (issue 13): the controller's output before the limits, v, and the limits.
-  if (r.sim && Array.isArray(r.sim.v) && r.sim.v.length === r.sim.t.length) {
+  if (r.sim && r.sim.v && r.sim.v.length === r.sim.t.length) {
     const w = series(r.sim, 'v', null, null, nb);
     u.push({ label: 'v (controller output before the limits)', x: w.x, y: w.y, color: '#56B4E9', dash: 'dash', width: 1.5 });
   }

@@ -9,6 +9,9 @@
 //                                                        away (start-up: see worker-client.js)
 // Messages out: { ready: true } | { ready: false, error }
 //               { id, ok: true, value, ms }              the answer and the time it took here
+//                                                        (the buffers of its Float64Array fields,
+//                                                        simulate's samples with typed: true,
+//                                                        are transferred, not copied)
 //               { id, ok: false, error: { name, message }, ms }   the module refused the input
 //               { id, trap: true, error }                the instance trapped (a Rust panic):
 //                                                        it is dead; the page ends this worker
@@ -19,6 +22,17 @@ import * as glue from './pkg/pidlab.js';
 
 const self_ = globalThis;
 const st = { poisoned: false, dead: false };
+
+/** The buffers of a result's top-level Float64Array fields (simulate with `typed: true`), each
+ *  the array's own whole buffer: moved to the page with the message instead of cloned. */
+function buffersOf(value) {
+  const out = [];
+  if (!value || typeof value !== 'object') return out;
+  for (const a of Object.values(value)) {
+    if (a instanceof Float64Array && a.byteOffset === 0 && a.byteLength === a.buffer.byteLength && !out.includes(a.buffer)) out.push(a.buffer);
+  }
+  return out;
+}
 
 const isTrap = (e) => e instanceof WebAssembly.RuntimeError || (e && e.name === 'RuntimeError');
 
@@ -55,7 +69,7 @@ self_.onmessage = (ev) => {
     if (st.dead) throw new WebAssembly.RuntimeError('the instance has trapped before');
     if (st.poisoned) throw new WebAssembly.RuntimeError('unreachable (forced by the test hook)');
     const value = glue[m.fn](m.input);
-    self_.postMessage({ id: m.id, ok: true, value, ms: performance.now() - t0 });
+    self_.postMessage({ id: m.id, ok: true, value, ms: performance.now() - t0 }, buffersOf(value));
   } catch (e) {
     if (isTrap(e)) {
       st.dead = true;
