@@ -921,4 +921,20 @@ fn ajmeri_ali_study_options() {
             assert!(both > tv * (1.0 + 1e-3), "perturbed: {both} vs {tv}");
         }
     }
+    // The helpers' errors name the field: no model loop in the proposed design's controller,
+    // a scenario other than the run's, a filter order other than 2 or 3.
+    let (plant, c, _) = studies::row_loop(&e, Method::Proposed, Condition::Nominal).unwrap();
+    let r = studies::performance_sim(&plant, &c, &e, true, 0.01).unwrap();
+    let sc = pidlab::sim::Scenario::steps(2.0 * e.d_time, 0.01, 0.0, e.sp_size, e.d_time, e.d_size);
+    let err = studies::tv_both_outputs(&r, &c, &sc, 0.0, e.d_time, 0.1).unwrap_err();
+    assert_eq!(err.path, "controller.model_loop");
+    let (_, ca, _) = studies::row_loop(&e, Method::AjmeriAli, Condition::Nominal).unwrap();
+    let short =
+        pidlab::sim::Scenario::steps(1.5 * e.d_time, 0.01, 0.0, e.sp_size, e.d_time, e.d_size);
+    let err = studies::tv_both_outputs(&r, &ca, &short, 0.0, e.d_time, 0.1).unwrap_err();
+    assert_eq!(err.path, "sc");
+    assert_eq!(
+        studies::servo_check(&e, 4).unwrap_err().path,
+        "params.p_order"
+    );
 }

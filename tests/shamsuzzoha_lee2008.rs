@@ -794,6 +794,35 @@ fn separate_runs_option_matches_closed_forms() {
 /// Tolerance: half a unit of the printed last digit, widened to 0.1 % for the IAE (four
 /// significant digits; the output-sample quadrature and the simulator's tolerance are far
 /// below that; measured worst 0.07 %, load IAE mismatch 16.528 vs 16.54).
+/// The study helpers' errors name the field: a window that is not > 0, a scenario without a
+/// set-point or load step, a comparison row with no (Cr, Cy) form (Liu et al.).
+#[wasm_bindgen_test(unsupported = test)]
+fn study_helpers_errors_name_the_field() {
+    use pidlab::rules::shamsuzzoha_lee2008::settings::literature_settings;
+    use pidlab::rules::shamsuzzoha_lee2008::studies::{perf, perf_separate};
+    let st = studies().into_iter().find(|s| s.id == "ex1").unwrap();
+    let c = st.rows[0].controller.as_ref().unwrap();
+    let plant = st.plant.plant();
+    let err = perf_separate(&plant, c, &st.scenario, 0.0).unwrap_err();
+    assert_eq!(err.path, "window");
+    let no_sp = Scenario::steps(40.0, 0.01, 0.0, 0.0, 20.0, 1.0);
+    assert_eq!(
+        perf(&plant, c, &no_sp).unwrap_err().path,
+        "scenario.setpoint"
+    );
+    let no_load = Scenario::steps(40.0, 0.01, 0.0, 1.0, 20.0, 0.0);
+    assert_eq!(
+        perf(&plant, c, &no_load).unwrap_err().path,
+        "scenario.disturbance"
+    );
+    assert!(perf(&plant, c, &st.scenario).is_ok());
+    let liu = literature_settings()
+        .into_iter()
+        .find(|l| l.row.key == "liu")
+        .unwrap();
+    assert_eq!(liu.controller().unwrap_err().path, "liu.mapping");
+}
+
 #[wasm_bindgen_test(unsupported = test)]
 fn table4_wang_cluett_with_200s_windows() {
     use pidlab::rules::shamsuzzoha_lee2008::studies::perf_separate;

@@ -303,10 +303,10 @@ fn tv_options(
     method: Method,
     condition: Condition,
 ) -> [Vec<(String, Option<f64>)>; 2] {
-    let Some((plant, c, servo)) = studies::row_loop(e, method, condition) else {
+    let Ok((plant, c, servo)) = studies::row_loop(e, method, condition) else {
         return [vec![], vec![]];
     };
-    let sim = studies::performance_sim(&plant, &c, e, servo, 0.01);
+    let sim = studies::performance_sim(&plant, &c, e, servo, 0.01).ok();
     let mut out = [vec![], vec![]];
     for (grid, signal) in [
         (0.1, TvSignal::PlantInput),
@@ -347,7 +347,7 @@ const AJMERI_TF: f64 = 0.01;
 /// outputs summed (TV(u₁) + TV(u₂), with the load step for the regulatory column).
 fn ajmeri_options(e: &mm::Example, condition: Condition) -> [Vec<(String, Option<f64>)>; 8] {
     let mut out: [Vec<(String, Option<f64>)>; 8] = Default::default();
-    let Some((plant, c, _)) = studies::row_loop(e, Method::AjmeriAli, condition) else {
+    let Ok((plant, c, _)) = studies::row_loop(e, Method::AjmeriAli, condition) else {
         return out;
     };
     let (a, b) = (e.d_time, 2.0 * e.d_time);
@@ -360,7 +360,7 @@ fn ajmeri_options(e: &mm::Example, condition: Condition) -> [Vec<(String, Option
     );
     let run = filtered
         .as_ref()
-        .and_then(|cf| studies::performance_sim(&plant, cf, e, true, 0.01));
+        .and_then(|cf| studies::performance_sim(&plant, cf, e, true, 0.01).ok());
     let m = run
         .as_ref()
         .and_then(|r| Some((r.metrics.servo.clone()?, r.metrics.regulatory.clone()?)));
@@ -379,11 +379,11 @@ fn ajmeri_options(e: &mm::Example, condition: Condition) -> [Vec<(String, Option
     for (o, v) in out.iter_mut().zip(cells) {
         o.push((label.clone(), v));
     }
-    let sim = studies::performance_sim(&plant, &c, e, true, 0.01);
+    let sim = studies::performance_sim(&plant, &c, e, true, 0.01).ok();
     let sc = pidlab::sim::Scenario::steps(b, 0.01, 0.0, e.sp_size, a, e.d_size);
     let both = |x: f64, y: f64| {
         sim.as_ref()
-            .and_then(|r| studies::tv_both_outputs(r, &c, &sc, x, y, 0.1))
+            .and_then(|r| studies::tv_both_outputs(r, &c, &sc, x, y, 0.1).ok())
     };
     out[1].push((
         "TV(u₁) + TV(u₂), the two controllers' outputs, on the 0.1 s grid".into(),
@@ -436,7 +436,7 @@ fn anil_servo(
     condition: Condition,
     printed: &[f64; 8],
 ) -> Option<([Option<f64>; 4], String)> {
-    let (plant, c, _) = studies::row_loop(e, Method::AnilPadmaSree, condition)?;
+    let (plant, c, _) = studies::row_loop(e, Method::AnilPadmaSree, condition).ok()?;
     let setting = mm::comparisons().into_iter().find(|s| s.example == e.id)?;
     let conv = |a: &[f64], b: &[f64]| {
         let mut out = vec![0.0; a.len() + b.len() - 1];
@@ -483,7 +483,7 @@ fn anil_servo(
             .ok();
         let vals = cc
             .as_ref()
-            .and_then(|cc| studies::performance_run(&plant, cc, e, true))
+            .and_then(|cc| studies::performance_run(&plant, cc, e, true).ok())
             .and_then(|run| run.servo)
             .map_or([None; 4], |m| {
                 [
@@ -524,8 +524,9 @@ fn anil_servo(
     // The servo TV with the window closed at the load time, as for the other rows (a study
     // option, taken only when the default is not within 2 % and it is).
     if let (Some(tv), Some(cc)) = (vals[1], cc) {
-        let closed =
-            studies::performance_sim(&plant, &cc, e, true, 0.01).map(|r| servo_tv_closed(&r, e));
+        let closed = studies::performance_sim(&plant, &cc, e, true, 0.01)
+            .ok()
+            .map(|r| servo_tv_closed(&r, e));
         if let Some(v) =
             closed.filter(|v| !ledger::within2(printed[1], tv) && ledger::within2(printed[1], *v))
         {
@@ -556,7 +557,7 @@ fn ts_options(
     method: Method,
     condition: Condition,
 ) -> [Vec<(String, Option<f64>)>; 2] {
-    let Some((plant, c, servo)) = studies::row_loop(e, method, condition) else {
+    let Ok((plant, c, servo)) = studies::row_loop(e, method, condition) else {
         return [vec![], vec![]];
     };
     let long = 5.0 * e.d_time;
@@ -1037,9 +1038,11 @@ fn figure_data() {
             let mut cols: Vec<(String, Vec<f64>)> = vec![];
             let mut reg: Vec<(String, Vec<f64>)> = vec![];
             for (m, key) in methods {
-                let lp = studies::row_loop(e, m, cond);
+                let lp = studies::row_loop(e, m, cond).ok();
                 let r = lp.as_ref().and_then(|(plant, c, servo)| {
-                    studies::performance_sim(plant, c, e, *servo, 0.1).map(|r| (r, *servo))
+                    studies::performance_sim(plant, c, e, *servo, 0.1)
+                        .ok()
+                        .map(|r| (r, *servo))
                 });
                 let (y, u, tag) = match &r {
                     Some((r, servo)) => {
@@ -1058,7 +1061,7 @@ fn figure_data() {
                 cols.push((format!("u_{key}{tag}"), u));
                 if split {
                     let l = lp.as_ref().and_then(|(plant, c, _)| {
-                        studies::performance_sim(plant, c, e, false, 0.1)
+                        studies::performance_sim(plant, c, e, false, 0.1).ok()
                     });
                     reg.push((
                         format!("y_{key}"),

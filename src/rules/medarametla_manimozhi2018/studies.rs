@@ -12,7 +12,7 @@ use super::{
 use crate::analysis::freq::analyze;
 use crate::analysis::metrics::Metrics;
 use crate::analysis::simulate;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::{Family, Plant};
 use crate::model::tf::Tf;
@@ -61,10 +61,11 @@ fn ideal_servo(t: f64, theta: f64, p: f64, n: u32) -> f64 {
     1.0 - (-x).exp() * sum
 }
 
-/// The servo check of one example for one n; `None` when the design or the controller fails.
-pub fn servo_check(e: &Example, order: u32) -> Option<ServoCheck> {
-    let d = design(&e.family, e.lambda).ok()?;
-    let c = d.controller_order(e.p, order).ok()?;
+/// The servo check of one example for one n; the design's or the controller's error when
+/// either fails (e.g. `params.p_order` for an n other than 2 or 3).
+pub fn servo_check(e: &Example, order: u32) -> Result<ServoCheck> {
+    let d = design(&e.family, e.lambda)?;
+    let c = d.controller_order(e.p, order)?;
     let th = e.family.theta();
     let t_end = 6.0 * (th + 3.0 * e.p) + e.lambda * 6.0;
     let sc = Scenario::steps(t_end, t_end / 600.0, 0.0, 1.0, 0.0, 0.0);
@@ -83,7 +84,7 @@ pub fn servo_check(e: &Example, order: u32) -> Option<ServoCheck> {
             .map(|(y, v)| (y - v).abs())
             .fold(0.0, f64::max)
     });
-    Some(ServoCheck {
+    Ok(ServoCheck {
         example: *e,
         order,
         exact_delay,
@@ -104,7 +105,7 @@ pub fn servo_checks() -> Vec<ServoCheck> {
             };
             orders.into_iter().map(move |n| (e, n))
         })
-        .filter_map(|(e, n)| servo_check(&e, n))
+        .filter_map(|(e, n)| servo_check(&e, n).ok())
         .collect()
 }
 
@@ -163,17 +164,20 @@ pub struct Run {
 }
 
 /// Simulates `c` on `plant` with the example's load step at `d_time` (and the unit set-point
-/// step at 0 when `servo`), over `2·d_time`, dt = 0.1; `None` when it fails or diverges.
-pub fn performance_run(plant: &Plant, c: &Controller, e: &Example, servo: bool) -> Option<Run> {
-    let sp = if servo { e.sp_size } else { 0.0 };
-    let sc = Scenario::steps(2.0 * e.d_time, 0.1, 0.0, sp, e.d_time, e.d_size);
-    let r = simulate(plant, c, &sc).ok()?;
-    if r.diverged {
-        return None;
-    }
-    Some(Run {
+/// step at 0 when `servo`), over `2·d_time`, dt = 0.1; the simulation's error, or an error
+/// (path `scenario`) when the loop diverges, (path `scenario.disturbance`) when the example
+/// has no load window.
+pub fn performance_run(plant: &Plant, c: &Controller, e: &Example, servo: bool) -> Result<Run> {
+    let r = performance_sim(plant, c, e, servo, 0.1)?;
+    let regulatory = r.metrics.regulatory.ok_or_else(|| {
+        Error::new(
+            "scenario.disturbance",
+            "no load window: the example's load step must be non-zero",
+        )
+    })?;
+    Ok(Run {
         servo: r.metrics.servo,
-        regulatory: r.metrics.regulatory?,
+        regulatory,
     })
 }
 
@@ -217,12 +221,12 @@ pub fn tables_4_5(condition: Condition) -> Vec<PerformanceRow> {
             .ok();
         rows.push(row(
             Method::Proposed,
-            prop.and_then(|c| performance_run(&plant, &c, &e, true)),
+            prop.and_then(|c| performance_run(&plant, &c, &e, true).ok()),
         ));
         if let Some(cmp) = comparisons().into_iter().find(|c| c.example == e.id) {
             let run = cmp.controller().ok().and_then(|c| {
                 let servo = c.cr.relative_degree() >= 0;
-                performance_run(&plant, &c, &e, servo)
+                performance_run(&plant, &c, &e, servo).ok()
             });
             rows.push(row(Method::AnilPadmaSree, run));
         }
@@ -230,7 +234,7 @@ pub fn tables_4_5(condition: Condition) -> Vec<PerformanceRow> {
             let run = aa
                 .controller(&e.family.plant())
                 .ok()
-                .and_then(|c| performance_run(&plant, &c, &e, true));
+                .and_then(|c| performance_run(&plant, &c, &e, true).ok());
             rows.push(row(Method::AjmeriAli, run));
         }
     }
@@ -681,8 +685,9 @@ pub fn tv_on_grid(
 /// (Ajmeri & Ali's parallel control structure): the TVs of the set-point controller's output
 /// `u₁` and of the disturbance controller's `u₂ = u − u₁` summed, as a simulation logging the
 /// two controllers apart may have. `u₁` is the model loop's own output (its input is `r`
-/// only), simulated alone on the run's grid with scenario `sc` (the run's). `None` without a
-/// model loop or when that run fails.
+/// only), simulated alone on the run's grid with scenario `sc` (the run's). An error (path
+/// `controller.model_loop`) without a model loop, the run's error when that run fails, and
+/// (path `sc`) when `sc` is not the scenario of `r` (a different sample count).
 pub fn tv_both_outputs(
     r: &crate::analysis::SimResult,
     c: &Controller,
@@ -690,69 +695,93 @@ pub fn tv_both_outputs(
     a: f64,
     b: f64,
     grid: f64,
-) -> Option<f64> {
-    let ml = c.model_loop.as_ref()?;
+) -> Result<f64> {
+    let ml = c.model_loop.as_ref().ok_or_else(|| {
+        Error::new(
+            "controller.model_loop",
+            "absent: the TV of two controllers' outputs needs a controller with a model loop",
+        )
+    })?;
     let mut alone = sc.clone();
     alone.disturbance.size = 0.0;
-    let r1 = simulate(&ml.model, &ml.controller(), &alone).ok()?;
+    let r1 = simulate(&ml.model, &ml.controller(), &alone)?;
     if r1.u.len() != r.u.len() {
-        return None;
+        return Err(Error::new(
+            "sc",
+            format!(
+                "must be the run's scenario ({} samples in the run, {} with sc)",
+                r.u.len(),
+                r1.u.len()
+            ),
+        ));
     }
     let mut r2 = r.clone();
     r2.u = r.u.iter().zip(&r1.u).map(|(u, u1)| u - u1).collect();
-    Some(tv_on_grid(&r1, a, b, grid, TvSignal::U) + tv_on_grid(&r2, a, b, grid, TvSignal::U))
+    Ok(tv_on_grid(&r1, a, b, grid, TvSignal::U) + tv_on_grid(&r2, a, b, grid, TvSignal::U))
 }
 
 /// The loop of a Tables 4-5 row as [`tables_4_5`] simulates it: (plant, controller, whether
-/// the set-point step is applied).
+/// the set-point step is applied); the design's or mapping's error, or an error (path
+/// `example`) when the method has no setting for the example.
 pub fn row_loop(
     e: &Example,
     method: Method,
     condition: Condition,
-) -> Option<(Plant, Controller, bool)> {
+) -> Result<(Plant, Controller, bool)> {
+    let missing = || {
+        Error::new(
+            "example",
+            format!("{}: the method has no setting for this example", e.id),
+        )
+    };
     let mut plant = process(e);
     if condition == Condition::Perturbed {
         plant = plant.with_gain_delay(1.2, 1.2);
     }
     let (c, servo) = match method {
         Method::Proposed => (
-            design(&e.family, e.lambda)
-                .and_then(|d| d.controller_order(e.p, e.p_order))
-                .ok()?,
+            design(&e.family, e.lambda).and_then(|d| d.controller_order(e.p, e.p_order))?,
             true,
         ),
         Method::AnilPadmaSree => {
             let c = comparisons()
                 .into_iter()
-                .find(|c| c.example == e.id)?
-                .controller()
-                .ok()?;
+                .find(|c| c.example == e.id)
+                .ok_or_else(missing)?
+                .controller()?;
             let servo = c.cr.relative_degree() >= 0;
             (c, servo)
         }
         Method::AjmeriAli => (
             ajmeri_ali()
                 .into_iter()
-                .find(|a| a.example == e.id)?
-                .controller(&e.family.plant())
-                .ok()?,
+                .find(|a| a.example == e.id)
+                .ok_or_else(missing)?
+                .controller(&e.family.plant())?,
             true,
         ),
     };
-    Some((plant, c, servo))
+    Ok((plant, c, servo))
 }
 
 /// A Tables 4-5 run as [`performance_run`] makes it, but with output step `dt` (for
-/// [`tv_on_grid`] on grids finer than the paper's 0.1 s); `None` when it fails or diverges.
+/// [`tv_on_grid`] on grids finer than the paper's 0.1 s); the simulation's error, or an
+/// error (path `scenario`) when the loop diverges.
 pub fn performance_sim(
     plant: &Plant,
     c: &Controller,
     e: &Example,
     servo: bool,
     dt: f64,
-) -> Option<crate::analysis::SimResult> {
+) -> Result<crate::analysis::SimResult> {
     let sp = if servo { e.sp_size } else { 0.0 };
     let sc = Scenario::steps(2.0 * e.d_time, dt, 0.0, sp, e.d_time, e.d_size);
-    let r = simulate(plant, c, &sc).ok()?;
-    (!r.diverged).then_some(r)
+    let r = simulate(plant, c, &sc)?;
+    if r.diverged {
+        return Err(Error::new(
+            "scenario",
+            "the loop diverged: no performance indices (a stable loop is needed)",
+        ));
+    }
+    Ok(r)
 }

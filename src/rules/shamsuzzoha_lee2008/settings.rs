@@ -76,22 +76,37 @@ pub struct LiteratureSetting {
 
 impl LiteratureSetting {
     /// Our (Cr, Cy) for the row: the printed PID in the mapped form with the printed set-point
-    /// filter and series lag; None when the structure cannot be mapped.
-    pub fn controller(&self) -> Option<Controller> {
-        self.controller_with(self.mapping?.d_on_y)
+    /// filter and series lag; an error (path `<row key>.mapping`) when the structure cannot be
+    /// mapped.
+    pub fn controller(&self) -> Result<Controller> {
+        self.controller_with(self.mapping()?.d_on_y)
     }
 
     /// A study option (the default is [`LiteratureSetting::controller`]): the row's controller
     /// with the derivative on the measurement (set-point weight c = 0; the printed set-point
     /// filter and series lag kept), for rows the paper calls "1DOF" without saying where the
     /// derivative acts. Table 4's Rivera et al. row reproduces its set-point cells with it.
-    pub fn controller_d_on_y(&self) -> Option<Controller> {
+    pub fn controller_d_on_y(&self) -> Result<Controller> {
         self.controller_with(true)
     }
 
-    fn controller_with(&self, d_on_y: bool) -> Option<Controller> {
-        let m = self.mapping?;
-        let p = self.row.pid?;
+    fn mapping(&self) -> Result<Mapping> {
+        self.mapping.ok_or_else(|| {
+            Error::new(
+                format!("{}.mapping", self.row.key),
+                "the row's structure has no (Cr, Cy) form (see the row's description)",
+            )
+        })
+    }
+
+    fn controller_with(&self, d_on_y: bool) -> Result<Controller> {
+        let m = self.mapping()?;
+        let p = self.row.pid.ok_or_else(|| {
+            Error::new(
+                format!("{}.pid", self.row.key),
+                "not printed (the table prints \"-\"): no PID to simulate",
+            )
+        })?;
         lit_pid(
             p.kc,
             p.ti,
@@ -264,7 +279,7 @@ pub(super) fn lit_pid(
     d_on_y: bool,
     fr: Option<Tf>,
     ft: Option<f64>,
-) -> Option<Controller> {
+) -> Result<Controller> {
     let mut p = if series {
         Pid::series_form(kc, ti, td)
     } else {
@@ -279,7 +294,7 @@ pub(super) fn lit_pid(
     if let Some(t) = ft {
         p = p.series_filter(lag(t));
     }
-    p.to_controller().ok()
+    p.to_controller()
 }
 
 /// Zhang, Xu & Sun (1999)'s IMC-PID for the FODIP `K e^{−θs}/(s(τs + 1))`, the comparison rule

@@ -7,6 +7,7 @@ use super::tables::*;
 use super::{design, imc_pid, lambda_for_ms, ImcModel, CITATION};
 use crate::analysis::freq::{analyze, solve_for_ms};
 use crate::analysis::simulate;
+use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::{Family, Plant};
 use crate::rules::Params;
@@ -93,7 +94,7 @@ fn literature_row(s: &LiteratureSetting) -> StudyRow {
         printed_pid: s.row.pid,
         printed_note: s.row.note,
         printed: s.row.perf,
-        controller: s.controller(),
+        controller: s.controller().ok(),
         tune: None,
         description: s.description.into(),
         citation: s.citation,
@@ -244,15 +245,30 @@ impl Perf {
     }
 }
 
-/// Simulates `c` on `plant` over the scenario; None when the simulation fails or diverges.
-pub fn perf(plant: &Plant, c: &Controller, sc: &Scenario) -> Option<Perf> {
-    let r = simulate(plant, c, sc).ok()?;
+/// Simulates `c` on `plant` over the scenario; the simulation's error, or an error (path
+/// `scenario`, `scenario.setpoint`, `scenario.disturbance`) when the loop diverges or the
+/// scenario has no set-point or no load window.
+pub fn perf(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<Perf> {
+    let r = simulate(plant, c, sc)?;
     if r.diverged {
-        return None;
+        return Err(Error::new(
+            "scenario",
+            "the loop diverged: no performance indices (a stable loop is needed)",
+        ));
     }
-    let s = r.metrics.servo?;
-    let g = r.metrics.regulatory?;
-    Some(Perf::of(&s, &g))
+    let s = r.metrics.servo.ok_or_else(|| {
+        Error::new(
+            "scenario.setpoint",
+            "no set-point window: a non-zero set-point step before the load step is needed",
+        )
+    })?;
+    let g = r.metrics.regulatory.ok_or_else(|| {
+        Error::new(
+            "scenario.disturbance",
+            "no load window: a non-zero load step after the set-point step is needed",
+        )
+    })?;
+    Ok(Perf::of(&s, &g))
 }
 
 /// A study option (the default is [`perf`]): the set-point and the load responses simulated
@@ -261,16 +277,38 @@ pub fn perf(plant: &Plant, c: &Controller, sc: &Scenario) -> Option<Perf> {
 /// makes the load run the load response of the combined run without the tail of the set-point
 /// response. Example 4's printed indices are those of 200 s windows (Wang & Cluett's
 /// set-point response is still at 1.02 at 200 s: the paper's "offset of 3 %"); `None` when a
-/// run fails or diverges.
-pub fn perf_separate(plant: &Plant, c: &Controller, sc: &Scenario, window: f64) -> Option<Perf> {
-    let run = |sp: f64, d: f64| {
+/// run fails (its error), diverges (path `scenario`) or has no window (a zero step: path
+/// `scenario.setpoint` or `scenario.disturbance`); `window` must be finite and > 0.
+pub fn perf_separate(plant: &Plant, c: &Controller, sc: &Scenario, window: f64) -> Result<Perf> {
+    crate::error::finite("window", window)?;
+    if window <= 0.0 {
+        return Err(Error::new("window", format!("must be > 0 (got {window})")));
+    }
+    let run = |sp: f64, d: f64| -> Result<crate::analysis::metrics::Windows> {
         let mut s = Scenario::steps(window, sc.dt, 0.0, sp, 0.0, d);
         s.settling_band = sc.settling_band;
-        simulate(plant, c, &s).ok().filter(|r| !r.diverged)
+        let r = simulate(plant, c, &s)?;
+        if r.diverged {
+            return Err(Error::new(
+                "scenario",
+                "the loop diverged: no performance indices (a stable loop is needed)",
+            ));
+        }
+        Ok(r.metrics)
     };
-    let s = run(sc.setpoint.size, 0.0)?.metrics.servo?;
-    let g = run(0.0, sc.disturbance.size)?.metrics.regulatory?;
-    Some(Perf::of(&s, &g))
+    let s = run(sc.setpoint.size, 0.0)?.servo.ok_or_else(|| {
+        Error::new(
+            "scenario.setpoint",
+            "no set-point window: a non-zero set-point step is needed",
+        )
+    })?;
+    let g = run(0.0, sc.disturbance.size)?.regulatory.ok_or_else(|| {
+        Error::new(
+            "scenario.disturbance",
+            "no load window: a non-zero load step is needed",
+        )
+    })?;
+    Ok(Perf::of(&s, &g))
 }
 
 /// A row of a study simulated: Ms on the nominal plant, and the performance on the nominal and
@@ -290,8 +328,8 @@ pub fn simulate_row(study: &Study, c: &Controller) -> RowResult {
     let plant = study.plant.plant();
     RowResult {
         ms: analyze(&plant, c).ok().and_then(|a| a.ms),
-        nominal: perf(&plant, c, &study.scenario),
-        mismatch: perf(&study.mismatch, c, &study.scenario),
+        nominal: perf(&plant, c, &study.scenario).ok(),
+        mismatch: perf(&study.mismatch, c, &study.scenario).ok(),
     }
 }
 
@@ -311,7 +349,7 @@ pub struct PrintedClosedForms {
 
 /// Evaluates the printed Eqs. (23c) (Example 1: K = 1, τ = 1, θ = 0.2, λ = 0.433) and (30c)
 /// (Example 5: K = 0.0506, θ = 6, λ = 3.437), ζ = 1, φ = 100, with β from the routine.
-pub fn printed_closed_forms() -> Option<PrintedClosedForms> {
+pub fn printed_closed_forms() -> Result<PrintedClosedForms> {
     let fo = ImcModel {
         gain: 100.0,
         lags: vec![1.0, 100.0],
@@ -322,10 +360,7 @@ pub fn printed_closed_forms() -> Option<PrintedClosedForms> {
         lags: vec![100.0],
         theta: 6.0,
     };
-    let (p1, p5) = (
-        imc_pid(&fo, 0.433, 1.0).ok()?,
-        imc_pid(&dip, 3.437, 1.0).ok()?,
-    );
+    let (p1, p5) = (imc_pid(&fo, 0.433, 1.0)?, imc_pid(&dip, 3.437, 1.0)?);
     let (th, l, z, phi, tau) = (0.2, 0.433, 1.0, 100.0, 1.0);
     let (b1, b2) = (p1.beta[0], p1.beta[1]);
     let e0 = 4.0 * l * z + th - b1;
@@ -337,7 +372,7 @@ pub fn printed_closed_forms() -> Option<PrintedClosedForms> {
     let e0 = th - b + 2.0 * l * z;
     let e1 = l * l - th * th / 2.0 + b * th;
     let td30c = (phi * b - (th * th / 6.0 - b * th * th / 2.0) / e0) / p5.ti - e1 / e0;
-    Some(PrintedClosedForms {
+    Ok(PrintedClosedForms {
         td_23c_printed: td23c,
         td_ex1: p1.td,
         td_30c_printed: td30c,
