@@ -6,6 +6,8 @@
 // Spawns python and cc: native only.
 #![cfg(not(target_arch = "wasm32"))]
 
+mod common;
+
 use pidlab::api;
 use pidlab::model::poly::C64;
 use serde_json::{json, Value};
@@ -110,7 +112,7 @@ fn exact_json(text: &str) -> Value {
 /// set-point filter, PID × lead-lag with weights, a literal filtered 2-DOF PID on a custom
 /// plant without dead time.
 fn designs() -> Vec<(&'static str, Value, Value)> {
-    let ipdt = json!({"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1});
+    let ipdt = common::boiler_json();
     let tune = |m: &str, plant: &Value, params: Value| -> Value {
         api::tune(&json!({"method": m, "plant": plant, "params": params})).unwrap()["controller"]
             .clone()
@@ -228,7 +230,7 @@ fn assert_carries(text: &str, xs: &[f64], what: &str) {
 /// The header names the method, the plant and the date, and the text is reproducible.
 #[test]
 fn header_and_determinism() {
-    let plant = json!({"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1});
+    let plant = common::boiler_json();
     for target in ["python-control", "matlab", "julia"] {
         let inp = json!({"plant": plant, "tuning": {"method": "arvanitis_alg1"}, "target": target, "date": DATE});
         let a = export(inp.clone());
@@ -316,7 +318,7 @@ fn matlab_content() {
     assert!(!t.contains("pidstd2"), "{t}");
     assert!(t.contains("L = Cy * P;"), "improper Cy goes through L: {t}");
     // a non-PID structure (PID × lead-lag): tf only
-    let ipdt = json!({"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1});
+    let ipdt = common::boiler_json();
     let t = export(
         json!({"plant": ipdt, "tuning": {"method": "praveen_kumar", "params": {"lambda": 1.2}}, "target": "matlab", "date": DATE}),
     );
@@ -556,7 +558,7 @@ fn sampled_cases() -> Vec<(String, Value, Value, Value, Value)> {
         }
     }
     // I-PD with an ideal derivative from a rule: backward Euler (the only method for it)
-    let ipdt = json!({"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1});
+    let ipdt = common::boiler_json();
     let ipd = api::tune(&json!({"method": "arvanitis_alg1", "plant": ipdt})).unwrap()["controller"]
         .clone();
     out.push((
@@ -742,8 +744,7 @@ fn c_export_runs_like_pidlab() {
 fn c_export_reproduces_pidlab_sampled_simulation() {
     use std::io::Write as _;
     let dir = tmp_dir("c_sim");
-    let boiler =
-        json!({"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1});
+    let boiler = common::boiler_json();
     let piptd = json!({"family": "piptd", "k": 0.2, "theta": 1.5});
     let filtered = api::controller_json(
         &pidlab::model::controller::Pid::parallel(2.0, 0.5, 0.8)
@@ -1221,7 +1222,7 @@ fn export_survives_random_inputs() {
     ];
     let plants = [
         json!({"family": "piptd", "k": 0.2, "theta": 1.5}),
-        json!({"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1}),
+        common::boiler_json(),
         json!({"num": [1.0], "den": [1.0, 1.0], "delay": 0.0}),
         json!({"num": [1.0, 1.0, 1.0], "den": [1.0, 1.0], "delay": 1.0}),
         json!({"family": "nope"}),

@@ -7,6 +7,8 @@
 //! event list, no pieces, no interpolation (the engine's method, `sim::sampled`, cuts the time
 //! axis into pieces at every event instead).
 
+mod common;
+
 use nalgebra::{DMatrix, DVector};
 use pidlab::analysis::simulate_real;
 use pidlab::model::controller::{lead_lag, Controller, Pid};
@@ -160,16 +162,7 @@ fn check(case: &Case, noise: Option<NoiseSpec>) -> f64 {
         );
     }
     if case.limits.is_active() {
-        let hits = res
-            .u
-            .iter()
-            .filter(|u| **u <= case.limits.u_min || **u >= case.limits.u_max)
-            .count();
-        assert!(
-            hits > 3,
-            "{}: the limits must act ({hits} samples)",
-            case.name
-        );
+        common::assert_limits_act(case.name, &res.u, case.limits);
     }
     // Issue 13: ≤ 1e-6 per unit step against the exact discrete solution (steps here are 1
     // and 0.5).
@@ -183,17 +176,8 @@ fn cases() -> Vec<Case> {
     vec![
         Case {
             name: "boiler (ipdt_ir), Luyben PID N = 10, tustin",
-            plant: Family::IpdtIr {
-                k: 0.547,
-                tau: 1.06,
-                tau_z: 0.418,
-                theta: 0.1,
-            }
-            .plant(),
-            c: Pid::ideal(1.61, 11.5, 1.15)
-                .filter_n(10.0)
-                .to_controller()
-                .unwrap(),
+            plant: common::boiler(),
+            c: common::luyben_pid().to_controller().unwrap(),
             h: 0.03,
             method: Method::Tustin,
             limits: lim,
@@ -202,13 +186,7 @@ fn cases() -> Vec<Case> {
         },
         Case {
             name: "fopdt_ir (biproper), PI, one-sided valve u_min = 0, tracking",
-            plant: Family::FopdtIr {
-                k: 1.0,
-                tau: 2.0,
-                tau_z: 0.5,
-                theta: 0.7,
-            }
-            .plant(),
+            plant: common::fopdt_ir(0.7).plant(),
             c: Pid::parallel(0.8, 0.6, 0.0).to_controller().unwrap(),
             h: 0.25,
             method: Method::Tustin,
@@ -238,12 +216,7 @@ fn cases() -> Vec<Case> {
         },
         Case {
             name: "ifoptd, PI, forward",
-            plant: Family::Ifoptd {
-                k: 1.0,
-                tau: 1.0,
-                theta: 0.5,
-            }
-            .plant(),
+            plant: common::ifoptd(),
             c: Pid::parallel(0.4, 0.03, 0.0).to_controller().unwrap(),
             h: 0.1,
             method: Method::Forward,
@@ -253,13 +226,7 @@ fn cases() -> Vec<Case> {
         },
         Case {
             name: "ifoptd_zero (inverse response), 2-DOF PI with set-point lead-lag, tustin, limits, tracking",
-            plant: Family::IfoptdZero {
-                k: 1.0,
-                tau: 1.0,
-                z: -0.3,
-                theta: 0.3,
-            }
-            .plant(),
+            plant: common::ifoptd_zero(),
             c: Pid::parallel(0.3, 0.02, 0.0)
                 .setpoint_filter(lead_lag(0.5, 2.0))
                 .to_controller()
@@ -272,13 +239,7 @@ fn cases() -> Vec<Case> {
         },
         Case {
             name: "ifoptd_zero_unstable, filtered PID, tustin",
-            plant: Family::IfoptdZeroUnstable {
-                k: 1.0,
-                tau: 5.0,
-                z: 0.5,
-                theta: 0.2,
-            }
-            .plant(),
+            plant: common::ifoptd_zero_unstable(),
             c: Pid::ideal(3.0, 10.0, 0.5)
                 .filter_n(10.0)
                 .to_controller()
@@ -331,13 +292,7 @@ const NOISE_SEED7: [u64; 4] = [
 #[wasm_bindgen_test(unsupported = test)]
 fn tracking_pi_is_textbook_back_calculation_in_the_loop() {
     let (kp, ki, tt, h) = (1.2, 0.4, 1.5, 0.1);
-    let plant = Family::FopdtIr {
-        k: 1.0,
-        tau: 2.0,
-        tau_z: 0.5,
-        theta: 0.45,
-    }
-    .plant();
+    let plant = common::fopdt_ir(0.45).plant();
     let lim = Limits::new(Some(-0.2), Some(1.3)).unwrap();
     let c = Pid::parallel(kp, ki, 0.0).to_controller().unwrap();
     let n = 300;
@@ -419,17 +374,8 @@ fn time_at_limit_and_tv_of_the_applied_input() {
 /// and clamping cut the servo IAE of the wound-up loop.
 #[wasm_bindgen_test(unsupported = test)]
 fn windup_demo_anti_windup_reduces_overshoot() {
-    let plant = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
-    let c = Pid::ideal(1.61, 11.5, 1.15)
-        .filter_n(10.0)
-        .to_controller()
-        .unwrap();
+    let plant = common::boiler();
+    let c = common::luyben_pid().to_controller().unwrap();
     let sc = Scenario::steps(60.0, 0.01, 0.0, 1.0, 30.0, 1.0);
     let run = |aw| {
         let rl = RealLoop {
@@ -456,12 +402,6 @@ fn windup_demo_anti_windup_reduces_overshoot() {
     assert!(os(&track) < os(&wound) && os(&clamp) < os(&wound));
 }
 
-fn ctl_json(c: &Controller) -> serde_json::Value {
-    let (crn, crd) = c.cr.to_desc();
-    let (cyn, cyd) = c.cy.to_desc();
-    json!({"cr": {"num": crn, "den": crd}, "cy": {"num": cyn, "den": cyd}})
-}
-
 fn boiler_json(filtered: bool) -> serde_json::Value {
     let pid = Pid::ideal(1.61, 11.5, 1.15);
     let pid = if filtered {
@@ -470,8 +410,8 @@ fn boiler_json(filtered: bool) -> serde_json::Value {
         pid.weights(1.0, 0.0)
     };
     json!({
-        "plant": {"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1},
-        "controller": ctl_json(&pid.to_controller().unwrap()),
+        "plant": common::boiler_json(),
+        "controller": common::controller_json(&pid.to_controller().unwrap()),
         "scenario": {"t_end": 20, "dt": 0.05, "setpoint": {"size": 1}}
     })
 }
@@ -648,17 +588,8 @@ fn between_samples_the_plant_is_exact() {
 /// halves the difference. Boiler, Luyben PID with N = 10, Tustin.
 #[wasm_bindgen_test(unsupported = test)]
 fn sampled_loop_converges_to_the_continuous_one_at_first_order() {
-    let plant = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
-    let c = Pid::ideal(1.61, 11.5, 1.15)
-        .filter_n(10.0)
-        .to_controller()
-        .unwrap();
+    let plant = common::boiler();
+    let c = common::luyben_pid().to_controller().unwrap();
     let sc = Scenario::steps(20.0, 0.01, 0.0, 1.0, 10.0, 1.0);
     let cont = pidlab::analysis::simulate(&plant, &c, &sc).unwrap();
     let diff = |h: f64| {

@@ -15,6 +15,8 @@
 //! every case (an order below the tolerance 1e-5 of issue 13), so a difference above
 //! 1e-5 is the engine's.
 
+mod common;
+
 use pidlab::analysis::simulate_real;
 use pidlab::model::controller::{lead_lag, Pid};
 use pidlab::model::discrete::{AntiWindup, Limits, Method};
@@ -337,15 +339,7 @@ fn check(case: &Case) -> (f64, f64, usize) {
         .iter()
         .zip(&y2)
         .fold(0.0f64, |e, (a, b)| e.max((a - b).abs()));
-    let hits = u2
-        .iter()
-        .filter(|u| **u <= case.limits.u_min || **u >= case.limits.u_max)
-        .count();
-    assert!(
-        hits > 3,
-        "{}: the limits must act ({hits} samples)",
-        case.name
-    );
+    let hits = common::assert_limits_act(case.name, &u2, case.limits);
     // samples with v held exactly at a limit: the sliding motion of conditional integration
     let v = res.v.as_ref().unwrap();
     let on_limit = v
@@ -383,13 +377,7 @@ fn cases() -> Vec<Case> {
         n: None,
         setpoint: None,
     };
-    let boiler = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let boiler = common::boiler();
     let luyben = Textbook {
         n: Some(10.0),
         ..pid(1.61, 1.61 / 11.5, 1.61 * 1.15)
@@ -418,13 +406,7 @@ fn cases() -> Vec<Case> {
         },
         Case {
             name: "fopdt_ir (biproper), PI, one-sided valve u_min = 0, tracking",
-            plant: Family::FopdtIr {
-                k: 1.0,
-                tau: 2.0,
-                tau_z: 0.5,
-                theta: 0.7,
-            }
-            .plant(),
+            plant: common::fopdt_ir(0.7).plant(),
             c: pid(0.8, 0.6, 0.0),
             limits: Limits::new(Some(0.0), None).unwrap(),
             tt: Some(0.8 / 0.6),
@@ -458,12 +440,7 @@ fn cases() -> Vec<Case> {
         },
         Case {
             name: "ifoptd, PI, ±0.2, none",
-            plant: Family::Ifoptd {
-                k: 1.0,
-                tau: 1.0,
-                theta: 0.5,
-            }
-            .plant(),
+            plant: common::ifoptd(),
             c: pid(0.4, 0.03, 0.0),
             limits: Limits::new(Some(-0.2), Some(0.2)).unwrap(),
             tt: None,
@@ -474,13 +451,7 @@ fn cases() -> Vec<Case> {
         Case {
             name:
                 "ifoptd_zero (inverse response), 2-DOF PI with set-point lead-lag, ±0.06, tracking",
-            plant: Family::IfoptdZero {
-                k: 1.0,
-                tau: 1.0,
-                z: -0.3,
-                theta: 0.3,
-            }
-            .plant(),
+            plant: common::ifoptd_zero(),
             c: Textbook {
                 setpoint: Some((0.5, 2.0)),
                 ..pid(0.3, 0.02, 0.0)
@@ -493,13 +464,7 @@ fn cases() -> Vec<Case> {
         },
         Case {
             name: "ifoptd_zero_unstable, filtered PID, b = 0.5, ±1.2, tracking",
-            plant: Family::IfoptdZeroUnstable {
-                k: 1.0,
-                tau: 5.0,
-                z: 0.5,
-                theta: 0.2,
-            }
-            .plant(),
+            plant: common::ifoptd_zero_unstable(),
             c: Textbook {
                 b: 0.5,
                 n: Some(10.0),
@@ -580,13 +545,7 @@ fn limits_without_dead_time() {
         n: None,
         setpoint: None,
     };
-    let fopdt_ir0 = Family::FopdtIr {
-        k: 1.0,
-        tau: 2.0,
-        tau_z: 0.5,
-        theta: 0.0,
-    }
-    .plant();
+    let fopdt_ir0 = common::fopdt_ir(0.0).plant();
     let mut cases = vec![];
     for (aw, tt, conditional) in [
         ("none", None, false),
@@ -797,12 +756,10 @@ fn applied_input_time_at_limit_and_tv() {
 /// integral action and bad limits error.
 #[wasm_bindgen_test(unsupported = test)]
 fn api_continuous_limits() {
-    let pid = Pid::ideal(1.61, 11.5, 1.15).filter_n(10.0);
-    let c = pid.to_controller().unwrap();
-    let (num, den) = (c.cr.to_desc(), c.cy.to_desc());
+    let c = common::luyben_pid().to_controller().unwrap();
     let base = serde_json::json!({
-        "plant": {"family": "ipdt_ir", "k": 0.547, "tau": 1.06, "tau_z": 0.418, "theta": 0.1},
-        "controller": {"cr": {"num": num.0, "den": num.1}, "cy": {"num": den.0, "den": den.1}},
+        "plant": common::boiler_json(),
+        "controller": common::controller_json(&c),
         "scenario": {"t_end": 20, "dt": 0.05, "setpoint": {"size": 1}},
         "actuator": {"u_min": -1.5, "u_max": 1.5, "anti_windup": {"kind": "tracking"}}
     });
@@ -855,18 +812,8 @@ fn api_continuous_limits() {
 fn real_loops_never_panic() {
     let plants = |theta: f64| {
         vec![
-            Family::IpdtIr {
-                k: 0.547,
-                tau: 1.06,
-                tau_z: 0.418,
-                theta,
-            },
-            Family::FopdtIr {
-                k: 1.0,
-                tau: 2.0,
-                tau_z: 0.5,
-                theta,
-            },
+            common::boiler_family(theta),
+            common::fopdt_ir(theta),
             Family::Piptd { k: 0.8, theta },
             Family::Diptd { k: 1.0, theta },
             Family::IfoptdZeroUnstable {

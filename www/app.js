@@ -290,6 +290,26 @@ async function settled(all) {
 }
 const sweepDone = () => { const s = sweepState(); return !s || s.done; };
 
+/** True when this browser validates a module with a WebAssembly SIMD (v128) instruction
+ *  (a one-function module returning i8x16.popcnt(i8x16.splat(0)): 0xfd-prefixed opcodes). */
+const hasWasmSimd = () => {
+  try {
+    return WebAssembly.validate(new Uint8Array([0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11]));
+  } catch {
+    return false;
+  }
+};
+
+/** What the loading line says when the module could not start. The module is built with
+ *  WebAssembly SIMD (.cargo/config.toml): a browser without it (Safari before 16.4) cannot
+ *  compile it, and is told so in its user's words. */
+function loadFailure(e) {
+  if (e instanceof WebAssembly.CompileError && !hasWasmSimd()) {
+    return 'This browser is too old to run pidlab: it lacks WebAssembly SIMD, which pidlab needs. Update it (Safari 16.4 or later, Chrome or Edge 91+, Firefox 89+) or open the page in another browser.';
+  }
+  return 'Could not start the computation module: ' + errText(e);
+}
+
 async function main() {
   perf.startup.script = performance.now();
   // the workers start (a thread, their script) while the module compiles
@@ -301,7 +321,7 @@ async function main() {
     perf.startup.compiled = performance.now();
     W.start(E.compiled());
   } catch (e) {
-    $('loading').textContent = 'Could not start the computation module: ' + errText(e);
+    $('loading').textContent = loadFailure(e);
     return;
   }
   try {

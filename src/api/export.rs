@@ -11,10 +11,10 @@
 //!   (the wasm binding fills in today's date for JavaScript callers that leave it out).
 //! - `label`: a name for a controller given directly (e.g. a preset's title).
 
-use super::input::{self, from_json, Num, ParamIn};
+use super::input::{self, from_json, ParamIn};
 use crate::error::{Error, Result};
 use crate::export::{self, Design, Origin, Target};
-use crate::model::discrete::{AntiWindup, DiscreteController, Limits, Method};
+use crate::model::discrete::DiscreteController;
 use crate::rules;
 use serde::Deserialize;
 use serde_json::{json, Value};
@@ -51,36 +51,6 @@ struct TuningIn {
     params: Option<BTreeMap<String, ParamIn>>,
 }
 
-/// `sampling = {h, method?}` (method: "tustin" (default), "backward", "forward").
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SamplingIn {
-    h: Num,
-    #[serde(default)]
-    method: Option<String>,
-}
-
-/// `actuator = {u_min?, u_max?, anti_windup?}`.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ActuatorIn {
-    #[serde(default)]
-    u_min: Option<Num>,
-    #[serde(default)]
-    u_max: Option<Num>,
-    #[serde(default)]
-    anti_windup: Option<AntiWindupIn>,
-}
-
-/// `anti_windup = {kind: "none" | "tracking" | "conditional", tt?}` (tt with tracking only).
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct AntiWindupIn {
-    kind: String,
-    #[serde(default)]
-    tt: Option<Num>,
-}
-
 /// The sampled controller of `sampling` and `actuator` (API.md "simulate: actuator limits,
 /// anti-windup, sampled controllers": the same fields and defaults), discretised by
 /// [`DiscreteController::new`]; its errors are put under the input's field names.
@@ -89,59 +59,24 @@ fn sampled(
     sampling: &Value,
     actuator: &Value,
 ) -> Result<DiscreteController> {
-    if sampling.is_null() {
+    // `sampling` is required (checked first); both fields are then parsed once, as `simulate`
+    // takes them ([`input::real_loop`]; no run length bounds `sampling.h` here)
+    let rl = match sampling {
+        Value::Null => None,
+        _ => Some(input::real_loop(
+            actuator,
+            sampling,
+            &Value::Null,
+            f64::INFINITY,
+        )?),
+    };
+    let Some((smp, rl)) = rl.and_then(|rl| Some((rl.sampling?, rl))) else {
         return Err(Error::new(
             "sampling",
             "is required for the sampled targets (iec61131-st, c): {h, method?}",
         ));
-    }
-    let s: SamplingIn = from_json(sampling, "sampling")?;
-    let h = crate::error::positive("sampling.h", s.h.0)?;
-    let method = match &s.method {
-        Some(m) => Method::parse("sampling.method", m)?,
-        None => Method::Tustin,
     };
-    let (mut limits, mut aw) = (Limits::NONE, AntiWindup::None);
-    if !actuator.is_null() {
-        let a: ActuatorIn = from_json(actuator, "actuator")?;
-        limits = Limits::new(a.u_min.map(|x| x.0), a.u_max.map(|x| x.0))
-            .map_err(|e| e.within("actuator"))?;
-        if let Some(w) = &a.anti_windup {
-            let p = "actuator.anti_windup";
-            aw = match (w.kind.as_str(), w.tt) {
-                ("none" | "conditional", Some(_)) => {
-                    return Err(Error::new(
-                        format!("{p}.tt"),
-                        "only kind \"tracking\" takes tt",
-                    ))
-                }
-                ("none", None) => AntiWindup::None,
-                ("conditional", None) => AntiWindup::Conditional,
-                ("tracking", tt) => AntiWindup::Tracking {
-                    tt: match tt {
-                        Some(t) => Some(crate::error::positive(&format!("{p}.tt"), t.0)?),
-                        None => None,
-                    },
-                },
-                (k, _) => {
-                    return Err(Error::new(
-                        format!("{p}.kind"),
-                        format!(
-                            "unknown kind {:?} (allowed: \"none\", \"tracking\", \"conditional\")",
-                            export::ascii(k)
-                        ),
-                    ))
-                }
-            };
-            if aw != AntiWindup::None && !limits.is_active() {
-                return Err(Error::new(
-                    p,
-                    "anti-windup needs a limit: give actuator.u_min and/or actuator.u_max",
-                ));
-            }
-        }
-    }
-    DiscreteController::new(c, h, method, limits, aw).map_err(|e| {
+    DiscreteController::new(c, smp.h, smp.method, rl.limits, rl.anti_windup).map_err(|e| {
         let p = e.path.clone();
         if p == "h" {
             e.within("sampling")

@@ -75,13 +75,14 @@
 //! naming `plant.delay`.
 
 use super::scenario::Scenario;
+use super::single::LoopModel;
 use super::trajectory::{interpolation_inverse, lagrange, Trajectory, DEG, NODES};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::discrete::{default_tt, AntiWindup, IntegralSplit, Limits, PolyForm};
 use crate::model::plant::Plant;
 use crate::model::poly::Poly;
-use crate::model::ss::{balance, realize, realize_paths, Ss};
+use crate::model::ss::{balance, realize_paths, Ss};
 use crate::model::tf::Tf;
 use crate::numerics::brent;
 use nalgebra::{DMatrix, DVector};
@@ -194,54 +195,26 @@ impl SatLoop {
         integral: Option<(f64, f64)>,
         setpoint_step: bool,
     ) -> Result<SatLoop> {
-        let (k_dr, k_dy) = (kd[0], -kd[1]);
-        let ps = realize(&plant.tf).map_err(|e| e.within("plant"))?;
-        let dp = ps.d[(0, 0)];
-        if k_dy != 0.0 && dp != 0.0 {
-            return Err(Error::new(
-                "controller.cy",
-                "ideal derivative on a biproper plant: the loop is ill-posed (|L(j∞)| = ∞); add \
-                 a derivative filter (N)",
-            ));
-        }
-        if k_dr != 0.0 && setpoint_step {
-            return Err(Error::new(
-                "controller.cr",
-                "ideal derivative on the set point: a set-point step gives an impulse in u; use \
-                 set-point weight c = 0, a set-point filter, or a derivative filter (N)",
-            ));
-        }
+        // the raw loop (unsaturated, or at a limit with u = L only through `b_u`), with the
+        // integral state in front when there is one
         let ni = usize::from(integral.is_some());
-        let (nc, np) = (cs.order(), ps.order());
-        let n = ni + nc + np;
-        let (oc, op) = (ni, ni + nc);
-        let bcr = cs.b.column(0).into_owned();
-        let bcy = cs.b.column(1).into_owned();
-        let cc = cs.c.row(0).transpose();
-        let (dcr, dcy) = (cs.d[(0, 0)], cs.d[(0, 1)]);
-        let ap = &ps.a;
-        let bp = ps.b.column(0).into_owned();
-        let cp = ps.c.row(0).transpose();
+        let raw = LoopModel::raw(plant, cs, kd[0], -kd[1], ni, setpoint_step)?;
+        let nc = cs.order();
+        let n = raw.a.nrows();
+        let (oc, op, np) = (ni, ni + nc, n - ni - nc);
+        let (dcr, dp, e) = (raw.h, raw.yw, raw.e);
+        // y = C_p x_p + D_p w
+        let cp = raw.yx.rows(op, np).into_owned();
         // at a limit (or integral frozen): ẋ_c = A_c x_c + b_r r + b_y y (+ b_u L),
-        // ẋ_p = A_p x_p + b_p w
-        let mut a1 = DMatrix::zeros(n, n);
-        a1.view_mut((oc, oc), (nc, nc)).copy_from(&cs.a);
-        a1.view_mut((oc, op), (nc, np))
-            .copy_from(&(&bcy * cp.transpose()));
-        a1.view_mut((op, op), (np, np)).copy_from(ap);
-        let mut bw = DVector::zeros(n);
-        bw.rows_mut(oc, nc).copy_from(&(&bcy * dp));
-        bw.rows_mut(op, np).copy_from(&bp);
-        let mut br = DVector::zeros(n);
-        br.rows_mut(oc, nc).copy_from(&bcr);
-        let mut g = DVector::zeros(n);
-        g.rows_mut(oc, nc).copy_from(&cc);
-        // v = C_c x_c + D_r r + D_y y − k_dy ẏ, ẏ = C_p A_p x_p + C_p b_p w (D_p = 0 then)
-        let cpap = ap.transpose() * &cp;
-        g.rows_mut(op, np).copy_from(&(&cp * dcy - cpap * k_dy));
-        let e = dcy * dp - k_dy * cp.dot(&bp);
-        let mut yx = DVector::zeros(n);
-        yx.rows_mut(op, np).copy_from(&cp);
+        // ẋ_p = A_p x_p + b_p w; v = C_c x_c + D_r r + D_y y − k_dy ẏ
+        let LoopModel {
+            a: a1,
+            bw,
+            br,
+            mut g,
+            yx,
+            ..
+        } = raw;
         let mut m = if let Some((g_r, g_y)) = integral {
             // integrating: ẋ_I = g_r r − g_y (C_p x_p + D_p w); v = x_I + …
             g[0] = 1.0;

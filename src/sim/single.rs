@@ -6,7 +6,7 @@ use super::trajectory::{interpolation_inverse, piece_exponential, Trajectory, DE
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
-use crate::model::ss::{balance, realize};
+use crate::model::ss::{balance, realize, Ss};
 use nalgebra::{DMatrix, DVector};
 
 /// Hard cap on the number of pieces of one simulation.
@@ -72,67 +72,8 @@ impl LoopModel {
             ));
         }
         let cs = c.realize().map_err(|e| e.within("controller"))?;
-        let ps = realize(&plant.tf).map_err(|e| e.within("plant"))?;
-        let dp = ps.d[(0, 0)];
-        if cs.k_dy != 0.0 && dp != 0.0 {
-            return Err(Error::new(
-                "controller.cy",
-                "ideal derivative on a biproper plant: the loop is ill-posed (|L(j∞)| = ∞) and a \
-                 load step would give an impulse; add a derivative filter (N)",
-            ));
-        }
-        if cs.k_dr != 0.0 && setpoint_step {
-            return Err(Error::new(
-                "controller.cr",
-                "ideal derivative on the set point: a set-point step gives an impulse in u; use \
-                 set-point weight c = 0, a set-point filter, or a derivative filter (N)",
-            ));
-        }
-        let nc = cs.ss.order();
-        let np = ps.order();
-        let n = nc + np;
-        let ac = &cs.ss.a;
-        let bcr = cs.ss.b.column(0).into_owned();
-        let bcy = cs.ss.b.column(1).into_owned();
-        let cc = cs.ss.c.row(0).transpose();
-        let (dcr, dcy) = (cs.ss.d[(0, 0)], cs.ss.d[(0, 1)]);
-        let ap = &ps.a;
-        let bp = ps.b.column(0).into_owned();
-        let cp = ps.c.row(0).transpose();
-        let mut a = DMatrix::zeros(n, n);
-        a.view_mut((0, 0), (nc, nc)).copy_from(ac);
-        a.view_mut((0, nc), (nc, np))
-            .copy_from(&(&bcy * cp.transpose()));
-        a.view_mut((nc, nc), (np, np)).copy_from(ap);
-        let mut bw = DVector::zeros(n);
-        bw.rows_mut(0, nc).copy_from(&(&bcy * dp));
-        bw.rows_mut(nc, np).copy_from(&bp);
-        let mut br = DVector::zeros(n);
-        br.rows_mut(0, nc).copy_from(&bcr);
-        let mut g = DVector::zeros(n);
-        g.rows_mut(0, nc).copy_from(&cc);
-        // v = … + Dcy·y − k_dy·ẏ, y = Cp xp + Dp w, ẏ = Cp Ap xp + Cp Bp w (Dp = 0 then)
-        let cpap = ap.transpose() * &cp;
-        g.rows_mut(nc, np).copy_from(&(&cp * dcy - cpap * cs.k_dy));
-        let cpbp = cp.dot(&bp);
-        let e = dcy * dp - cs.k_dy * cpbp;
-        let mut yx = DVector::zeros(n);
-        yx.rows_mut(nc, np).copy_from(&cp);
-        let mut m = LoopModel {
-            a,
-            bw,
-            br,
-            bd: DVector::zeros(n),
-            g,
-            h: dcr,
-            hd: 1.0,
-            e,
-            yx,
-            yw: dp,
-            yr: 0.0,
-            yd: 0.0,
-            delay: plant.delay,
-        };
+        let mut m = LoopModel::raw(plant, &cs.ss, cs.k_dr, cs.k_dy, 0, setpoint_step)?;
+        let n = m.a.nrows();
         if plant.delay == 0.0 {
             // No delay: w = v, solve the algebraic loop v = G x + H r + H_d d + E v.
             let f = 1.0 - m.e;
@@ -396,4 +337,84 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
         }
     }
     Ok((traj, diverged_at))
+}
+
+impl LoopModel {
+    /// The loop before θ = 0's elimination of `w` and the balancing (what [`LoopModel::new`]
+    /// completes), for a controller realized as `cs` with inputs `[r, y, …]` (further inputs
+    /// are not read) and ideal-derivative coefficients `k_dr` (u += k_dr·ṙ) and `k_dy`
+    /// (u −= k_dy·ẏ). The state is `[0 (lead); x_c; x_p]`: `lead` states in front, left at
+    /// zero for the caller (the saturated loop's separate integral, [`super::saturation`]).
+    /// Errors: an ideal derivative on a biproper plant (`controller.cy`) or, with a
+    /// set-point step, on the set point (`controller.cr`).
+    pub(crate) fn raw(
+        plant: &Plant,
+        cs: &Ss,
+        k_dr: f64,
+        k_dy: f64,
+        lead: usize,
+        setpoint_step: bool,
+    ) -> Result<LoopModel> {
+        let ps = realize(&plant.tf).map_err(|e| e.within("plant"))?;
+        let dp = ps.d[(0, 0)];
+        if k_dy != 0.0 && dp != 0.0 {
+            return Err(Error::new(
+                "controller.cy",
+                "ideal derivative on a biproper plant: the loop is ill-posed (|L(j∞)| = ∞) and a \
+                 load step would give an impulse; add a derivative filter (N)",
+            ));
+        }
+        if k_dr != 0.0 && setpoint_step {
+            return Err(Error::new(
+                "controller.cr",
+                "ideal derivative on the set point: a set-point step gives an impulse in u; use \
+                 set-point weight c = 0, a set-point filter, or a derivative filter (N)",
+            ));
+        }
+        let nc = cs.order();
+        let np = ps.order();
+        let n = lead + nc + np;
+        let (oc, op) = (lead, lead + nc);
+        let bcr = cs.b.column(0).into_owned();
+        let bcy = cs.b.column(1).into_owned();
+        let cc = cs.c.row(0).transpose();
+        let (dcr, dcy) = (cs.d[(0, 0)], cs.d[(0, 1)]);
+        let ap = &ps.a;
+        let bp = ps.b.column(0).into_owned();
+        let cp = ps.c.row(0).transpose();
+        let mut a = DMatrix::zeros(n, n);
+        a.view_mut((oc, oc), (nc, nc)).copy_from(&cs.a);
+        a.view_mut((oc, op), (nc, np))
+            .copy_from(&(&bcy * cp.transpose()));
+        a.view_mut((op, op), (np, np)).copy_from(ap);
+        let mut bw = DVector::zeros(n);
+        bw.rows_mut(oc, nc).copy_from(&(&bcy * dp));
+        bw.rows_mut(op, np).copy_from(&bp);
+        let mut br = DVector::zeros(n);
+        br.rows_mut(oc, nc).copy_from(&bcr);
+        let mut g = DVector::zeros(n);
+        g.rows_mut(oc, nc).copy_from(&cc);
+        // v = … + Dcy·y − k_dy·ẏ, y = Cp xp + Dp w, ẏ = Cp Ap xp + Cp Bp w (Dp = 0 then)
+        let cpap = ap.transpose() * &cp;
+        g.rows_mut(op, np).copy_from(&(&cp * dcy - cpap * k_dy));
+        let cpbp = cp.dot(&bp);
+        let e = dcy * dp - k_dy * cpbp;
+        let mut yx = DVector::zeros(n);
+        yx.rows_mut(op, np).copy_from(&cp);
+        Ok(LoopModel {
+            a,
+            bw,
+            br,
+            bd: DVector::zeros(n),
+            g,
+            h: dcr,
+            hd: 1.0,
+            e,
+            yx,
+            yw: dp,
+            yr: 0.0,
+            yd: 0.0,
+            delay: plant.delay,
+        })
+    }
 }
