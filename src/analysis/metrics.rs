@@ -132,19 +132,6 @@ pub fn quadrature(
     a: f64,
     b: f64,
     u_scale: f64,
-    f: impl FnMut(QuadPoint),
-) -> Scan {
-    quadrature_with::<true>(traj, a, b, u_scale, f)
-}
-
-/// [`quadrature`], with `u`, `du` and [`Scan::u_jumps`] computed only when `U` (the generic
-/// metrics read `t`, `e` and the node samples only; without `U` the points carry `u = du = 0`
-/// and `u_jumps` is false). `t`, `e`, `w` and the node samples are the same either way.
-fn quadrature_with<const U: bool>(
-    traj: &Trajectory,
-    a: f64,
-    b: f64,
-    u_scale: f64,
     mut f: impl FnMut(QuadPoint),
 ) -> Scan {
     let (k0, _) = traj.locate(a);
@@ -180,25 +167,18 @@ fn quadrature_with<const U: bool>(
         let yv = traj.y_nodes(k);
         let vv = traj.v_nodes(k);
         let mut uv = [0.0; NODES];
-        if U {
-            for (u, v) in uv.iter_mut().zip(vv) {
-                *u = v - d;
-            }
-            if let Some(pu) = prev_u_end {
-                if (uv[0] - pu).abs() > 1e-9 * u_scale {
-                    scan.u_jumps = true;
-                }
-            }
-            prev_u_end = Some(uv[DEG]);
+        for (u, v) in uv.iter_mut().zip(vv) {
+            *u = v - d;
         }
+        if let Some(pu) = prev_u_end {
+            if (uv[0] - pu).abs() > 1e-9 * u_scale {
+                scan.u_jumps = true;
+            }
+        }
+        prev_u_end = Some(uv[DEG]);
         let s0 = (c0 - t0) / len;
         let s1 = (c1 - t0) / len;
-        for (j, y) in yv.iter().enumerate() {
-            let s = j as f64 / DEG as f64;
-            if s >= s0 - 1e-12 && s <= s1 + 1e-12 {
-                scan.dense.push((t0 + s * len, *y));
-            }
-        }
+        piece_nodes(t0, len, s0, s1, yv, |t, y| scan.dense.push((t, y)));
         // A whole piece on which e keeps its sign at the nodes (almost every piece): one
         // Gauss–Legendre rule on [0, 1], the piece polynomials evaluated at its points by the
         // precomputed Lagrange basis (the same interpolants as the monomial form below).
@@ -209,16 +189,10 @@ fn quadrature_with<const U: bool>(
                 let mut y = 0.0;
                 let mut u = 0.0;
                 let mut du = 0.0;
-                if U {
-                    for ((&lj, &dlj), (&yj, &uj)) in l.iter().zip(dl).zip(yv.iter().zip(&uv)) {
-                        y += lj * yj;
-                        u += lj * uj;
-                        du += dlj * uj;
-                    }
-                } else {
-                    for (&lj, &yj) in l.iter().zip(yv) {
-                        y += lj * yj;
-                    }
+                for ((&lj, &dlj), (&yj, &uj)) in l.iter().zip(dl).zip(yv.iter().zip(&uv)) {
+                    y += lj * yj;
+                    u += lj * uj;
+                    du += dlj * uj;
                 }
                 f(QuadPoint {
                     t: t0 + s * len - a,
@@ -232,11 +206,7 @@ fn quadrature_with<const U: bool>(
         }
         // monomial forms once per piece, Horner at the quadrature points
         let yc = monomial_coeffs(yv);
-        let uc = if U {
-            monomial_coeffs(&uv)
-        } else {
-            [0.0; NODES]
-        };
+        let uc = monomial_coeffs(&uv);
         let e_at = |s: f64| r - horner(&yc, s);
         let (cuts, nc) = sign_cuts(&e_at, s0, s1);
         for w in cuts[..nc].windows(2) {
@@ -247,14 +217,164 @@ fn quadrature_with<const U: bool>(
                 f(QuadPoint {
                     t: t0 + s * len - a,
                     e: e_at(s),
-                    u: if U { horner(&uc, s) } else { 0.0 },
-                    du: if U { horner_d(&uc, s) / len } else { 0.0 },
+                    u: horner(&uc, s),
+                    du: horner_d(&uc, s) / len,
                     w: wt * half,
                 });
             }
         }
     }
     scan
+}
+
+/// The node samples `(t0 + σ_j·len, y_j)` of a piece whose part in the window is
+/// `[s0, s1]` (σ_j = j/DEG), in order (what [`Scan::dense`] collects).
+#[inline]
+fn piece_nodes(t0: f64, len: f64, s0: f64, s1: f64, yv: &[f64], mut f: impl FnMut(f64, f64)) {
+    for (j, y) in yv.iter().enumerate() {
+        let s = j as f64 / DEG as f64;
+        if s >= s0 - 1e-12 && s <= s1 + 1e-12 {
+            f(t0 + s * len, *y);
+        }
+    }
+}
+
+/// The integrals of the generic metrics over a window: `∫|e|`, `∫e²`, `∫t|e|`, `∫t²e²`,
+/// `∫t⁴e²`, `∫t⁶e²` (t from the window's start).
+#[derive(Debug, Default, Clone, Copy)]
+struct Integrals {
+    iae: f64,
+    ise: f64,
+    itae: f64,
+    iste: f64,
+    ist2e: f64,
+    ist3e: f64,
+}
+
+impl Integrals {
+    /// Adds one quadrature point (time from the window's start, error, weight).
+    #[inline]
+    fn add(&mut self, t: f64, e: f64, w: f64) {
+        let e2 = e * e;
+        self.iae += w * e.abs();
+        self.ise += w * e2;
+        self.itae += w * t * e.abs();
+        let t2 = t * t;
+        self.iste += w * t2 * e2;
+        self.ist2e += w * t2 * t2 * e2;
+        self.ist3e += w * t2 * t2 * t2 * e2;
+    }
+
+    /// Adds the 8 points of one Gauss–Legendre rule: the terms point by point (independent
+    /// lanes, vectorizable), then each sum in the points' order: the values of 8 [`Self::add`]
+    /// calls, bit for bit.
+    #[inline]
+    fn add8(&mut self, t: &[f64; 8], e: &[f64; 8], w: &[f64; 8]) {
+        let mut terms = [[0.0; 8]; 6];
+        for (i, ((&t, &e), &w)) in t.iter().zip(e).zip(w).enumerate() {
+            let e2 = e * e;
+            let t2 = t * t;
+            terms[0][i] = w * e.abs();
+            terms[1][i] = w * e2;
+            terms[2][i] = w * t * e.abs();
+            terms[3][i] = w * t2 * e2;
+            terms[4][i] = w * t2 * t2 * e2;
+            terms[5][i] = w * t2 * t2 * t2 * e2;
+        }
+        let sums = [
+            &mut self.iae,
+            &mut self.ise,
+            &mut self.itae,
+            &mut self.iste,
+            &mut self.ist2e,
+            &mut self.ist3e,
+        ];
+        for (sum, term) in sums.into_iter().zip(&terms) {
+            for x in term {
+                *sum += x;
+            }
+        }
+    }
+}
+
+/// The generic metrics' pass over a window `[a, b]`: the integrals by the quadrature of
+/// [`quadrature`] (the same points, weights and order of summation, so the same values; only
+/// `t` and `e` are evaluated), and every node sample `(t, y)` of the window handed to `node` in
+/// the order of [`Scan::dense`] (nothing is collected).
+fn window_pass(traj: &Trajectory, a: f64, b: f64, mut node: impl FnMut(f64, f64)) -> Integrals {
+    let mut sums = Integrals::default();
+    let (k0, _) = traj.locate(a);
+    let basis = GlBasis::new();
+    for k in k0..traj.n_pieces {
+        let (t0, len) = traj.piece(k);
+        if t0 >= b - traj.tol {
+            break;
+        }
+        let c0 = t0.max(a);
+        let c1 = (t0 + len).min(b);
+        if c1 - c0 <= traj.tol {
+            continue;
+        }
+        let r = traj.step_at(&traj.setpoint, t0);
+        let yv = traj.y_nodes(k);
+        let s0 = (c0 - t0) / len;
+        let s1 = (c1 - t0) / len;
+        piece_nodes(t0, len, s0, s1, yv, &mut node);
+        if s0 == 0.0 && (1.0 - s1).abs() <= 1e-12 && !node_sign_change(r, yv) {
+            // y at the 8 points, point by point Σ_j l_j(σ_i)·y_j summed in j's order
+            let half = 0.5 * len;
+            let mut y8 = [0.0; 8];
+            for (lj, &yj) in basis.lt.iter().zip(yv) {
+                for (y, &l) in y8.iter_mut().zip(lj) {
+                    *y += l * yj;
+                }
+            }
+            let (mut t, mut e, mut w) = ([0.0; 8], [0.0; 8], [0.0; 8]);
+            for (i, ((ti, ei), wi)) in t.iter_mut().zip(&mut e).zip(&mut w).enumerate() {
+                *ti = t0 + basis.s[i] * len - a;
+                *ei = r - y8[i];
+                *wi = GL_W[i] * half;
+            }
+            sums.add8(&t, &e, &w);
+            continue;
+        }
+        let yc = monomial_coeffs(yv);
+        let e_at = |s: f64| r - horner(&yc, s);
+        let (cuts, nc) = sign_cuts(&e_at, s0, s1);
+        for w in cuts[..nc].windows(2) {
+            let (sa, sb) = (w[0], w[1]);
+            let half = 0.5 * (sb - sa) * len;
+            for (x, wt) in GL_X.iter().zip(GL_W.iter()) {
+                let s = 0.5 * (sa + sb) + 0.5 * (sb - sa) * x;
+                sums.add(t0 + s * len - a, e_at(s), wt * half);
+            }
+        }
+    }
+    sums
+}
+
+/// Every node sample `(t, y)` of the window `[a, b]`, in the order of [`Scan::dense`].
+fn window_nodes(traj: &Trajectory, a: f64, b: f64, mut node: impl FnMut(f64, f64)) {
+    let (k0, _) = traj.locate(a);
+    for k in k0..traj.n_pieces {
+        let (t0, len) = traj.piece(k);
+        if t0 >= b - traj.tol {
+            break;
+        }
+        let c0 = t0.max(a);
+        let c1 = (t0 + len).min(b);
+        if c1 - c0 <= traj.tol {
+            continue;
+        }
+        piece_nodes(
+            t0,
+            len,
+            (c0 - t0) / len,
+            (c1 - t0) / len,
+            traj.y_nodes(k),
+            &mut node,
+        );
+    }
 }
 
 /// True when `e = r − y` changes sign between consecutive nodes of a piece (node values:
@@ -277,6 +397,8 @@ struct GlBasis {
     s: [f64; 8],
     l: [[f64; NODES]; 8],
     dl: [[f64; NODES]; 8],
+    /// `l` transposed: `lt[j][i] = l[i][j]` (node j's basis function at the 8 points).
+    lt: [[f64; 8]; NODES],
 }
 
 impl GlBasis {
@@ -285,6 +407,7 @@ impl GlBasis {
             s: [0.0; 8],
             l: [[0.0; NODES]; 8],
             dl: [[0.0; NODES]; 8],
+            lt: [[0.0; 8]; NODES],
         };
         let node = |j: usize| j as f64 / DEG as f64;
         for (i, x) in GL_X.iter().enumerate() {
@@ -299,6 +422,7 @@ impl GlBasis {
                     sum += 1.0 / (s - node(m));
                 }
                 g.l[i][j] = lj;
+                g.lt[j][i] = lj;
                 g.dl[i][j] = lj * sum;
             }
         }
@@ -359,50 +483,102 @@ pub fn u_scale(u: &[f64]) -> f64 {
     u.iter().fold(1e-300_f64, |mx, x| mx.max(x.abs()))
 }
 
-/// Overshoot, initial inverse jump and 10–90 % rise time of a servo window from its node
-/// samples (`y_init` the first, `r_w` the final set point).
-fn servo_shape(
-    dense: &[(f64, f64)],
+/// Overshoot, initial inverse jump and 10–90 % rise time of a servo window, from its node
+/// samples in order (`y_init` the first, `r_w` the final set point); fed one sample at a time.
+struct ServoShape {
     r_w: f64,
     step: f64,
-) -> (Option<f64>, Option<f64>, Option<f64>) {
-    let y_init = dense.first().map(|p| p.1).unwrap_or(0.0);
-    let sgn = step.signum();
-    let os = dense
-        .iter()
-        .map(|(_, y)| sgn * (y - r_w) / step.abs())
-        .fold(0.0, f64::max);
-    let us = dense
-        .iter()
-        .map(|(_, y)| -sgn * (y - y_init) / step.abs())
-        .fold(0.0, f64::max);
-    let cross = |frac: f64| -> Option<f64> {
-        let target = y_init + frac * step;
-        dense.windows(2).find_map(|w| {
-            let (t1, y1) = w[0];
-            let (t2, y2) = w[1];
-            let f1 = sgn * (y1 - target);
-            let f2 = sgn * (y2 - target);
-            (f1 < 0.0 && f2 >= 0.0).then(|| t1 + (t2 - t1) * (-f1) / (f2 - f1))
-        })
-    };
-    let rt = match (cross(0.1), cross(0.9)) {
-        (Some(a1), Some(b1)) => Some(b1 - a1),
-        _ => None,
-    };
-    (Some(os), Some(us), rt)
+    sgn: f64,
+    y_init: Option<f64>,
+    os: f64,
+    us: f64,
+    prev: Option<(f64, f64)>,
+    /// First crossings of 10 % and 90 % of the step.
+    cross: [Option<f64>; 2],
 }
 
-/// Settling time after `a`: the last exit from the band (`dev` the deviation at a sample).
-fn settling(dense: &[(f64, f64)], band: f64, a: f64, dev: impl Fn(f64, f64) -> f64) -> Option<f64> {
-    match dense.iter().rposition(|(t, y)| dev(*t, *y) > band) {
-        None => Some(0.0),
-        Some(i) if i + 1 >= dense.len() => None,
-        Some(i) => {
-            let (t1, y1) = dense[i];
-            let (t2, y2) = dense[i + 1];
-            let (f1, f2) = (dev(t1, y1) - band, dev(t2, y2) - band);
-            Some(t1 + (t2 - t1) * f1 / (f1 - f2) - a)
+impl ServoShape {
+    fn new(r_w: f64, step: f64) -> ServoShape {
+        ServoShape {
+            r_w,
+            step,
+            sgn: step.signum(),
+            y_init: None,
+            os: 0.0,
+            us: 0.0,
+            prev: None,
+            cross: [None; 2],
+        }
+    }
+
+    fn push(&mut self, t: f64, y: f64) {
+        let y_init = *self.y_init.get_or_insert(y);
+        let (sgn, size) = (self.sgn, self.step.abs());
+        self.os = self.os.max(sgn * (y - self.r_w) / size);
+        self.us = self.us.max(-sgn * (y - y_init) / size);
+        if let Some((t1, y1)) = self.prev {
+            for (c, frac) in self.cross.iter_mut().zip([0.1, 0.9]) {
+                if c.is_none() {
+                    // the first pair of samples that crosses y_init + frac·step upwards
+                    let target = y_init + frac * self.step;
+                    let f1 = sgn * (y1 - target);
+                    let f2 = sgn * (y - target);
+                    if f1 < 0.0 && f2 >= 0.0 {
+                        *c = Some(t1 + (t - t1) * (-f1) / (f2 - f1));
+                    }
+                }
+            }
+        }
+        self.prev = Some((t, y));
+    }
+
+    /// `(overshoot, undershoot, rise time)`.
+    fn result(&self) -> (Option<f64>, Option<f64>, Option<f64>) {
+        let rt = match self.cross {
+            [Some(a1), Some(b1)] => Some(b1 - a1),
+            _ => None,
+        };
+        (Some(self.os), Some(self.us), rt)
+    }
+}
+
+/// Settling time: the last exit from the band (a sample's deviation `> band`), fed the node
+/// samples in order with their deviations.
+struct Settling {
+    band: f64,
+    /// The last sample outside the band `(t, dev)` and the sample after it.
+    last_out: Option<(f64, f64)>,
+    after: Option<(f64, f64)>,
+}
+
+impl Settling {
+    fn new(band: f64) -> Settling {
+        Settling {
+            band,
+            last_out: None,
+            after: None,
+        }
+    }
+
+    fn push(&mut self, t: f64, dev: f64) {
+        if dev > self.band {
+            self.last_out = Some((t, dev));
+            self.after = None;
+        } else if self.last_out.is_some() && self.after.is_none() {
+            self.after = Some((t, dev));
+        }
+    }
+
+    /// Time after `a` of the last exit (0 if never outside, `None` if outside at the end),
+    /// interpolated linearly between the last sample outside and the next.
+    fn result(&self, a: f64) -> Option<f64> {
+        match (self.last_out, self.after) {
+            (None, _) => Some(0.0),
+            (Some(_), None) => None,
+            (Some((t1, d1)), Some((t2, d2))) => {
+                let (f1, f2) = (d1 - self.band, d2 - self.band);
+                Some(t1 + (t2 - t1) * f1 / (f1 - f2) - a)
+            }
         }
     }
 }
@@ -411,13 +587,16 @@ fn settling(dense: &[(f64, f64)], band: f64, a: f64, dev: impl Fn(f64, f64) -> f
 /// the run), including the move at the window's first sample.
 fn total_variation(res: &Response, a: f64, b: f64, t_end: f64) -> f64 {
     let tol = res.trajectory.tol;
+    // the samples inside are consecutive (t increases): from the first at or after a − tol
+    let first = res.t.partition_point(|t| *t < a - tol);
     let mut tv = 0.0;
-    for (k, t) in res.t.iter().enumerate() {
+    for (k, t) in res.t.iter().enumerate().skip(first) {
         let inside = *t >= a - tol && (*t < b - tol || (b >= t_end && *t <= b + tol));
-        if inside {
-            let prev = if k == 0 { 0.0 } else { res.u[k - 1] };
-            tv += (res.u[k] - prev).abs();
+        if !inside {
+            break;
         }
+        let prev = if k == 0 { 0.0 } else { res.u[k - 1] };
+        tv += (res.u[k] - prev).abs();
     }
     tv
 }
@@ -428,37 +607,32 @@ fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool)
     let r_w = traj.step_at(&traj.setpoint, a);
     let d_w = traj.step_at(&traj.disturbance, a);
     let ss = res.steady_state(r_w, d_w);
-    let (mut iae, mut ise, mut itae, mut iste, mut ist2e, mut ist3e) =
-        (0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-    // t and e only: u, du and the jumps of u are not needed here
-    let scan = quadrature_with::<false>(traj, a, b, 0.0, |q| {
-        let e2 = q.e * q.e;
-        iae += q.w * q.e.abs();
-        ise += q.w * e2;
-        itae += q.w * q.t * q.e.abs();
-        let t2 = q.t * q.t;
-        iste += q.w * t2 * e2;
-        ist2e += q.w * t2 * t2 * e2;
-        ist3e += q.w * t2 * t2 * t2 * e2;
+    // one pass: the integrals and, from the node samples, the peak error and (servo) the
+    // shape and the settling time; the regulatory band is a fraction of the peak error, so its
+    // settling time takes a second pass over the node samples
+    let mut peak_error: f64 = 0.0;
+    let mut shape = ServoShape::new(r_w, step);
+    let mut servo_settling = Settling::new(sc.settling_band * step.abs());
+    let sums = window_pass(traj, a, b, |t, y| {
+        peak_error = peak_error.max((traj.step_at(&traj.setpoint, t) - y).abs());
+        if servo {
+            shape.push(t, y);
+            servo_settling.push(t, (y - r_w).abs());
+        }
     });
-    let dense = &scan.dense;
-    let peak_error = dense
-        .iter()
-        .map(|(t, y)| (traj.step_at(&traj.setpoint, *t) - y).abs())
-        .fold(0.0, f64::max);
     let (overshoot, undershoot, rise_time) = if servo {
-        servo_shape(dense, r_w, step)
+        shape.result()
     } else {
         (None, None, None)
     };
     let settling_time = if servo {
-        settling(dense, sc.settling_band * step.abs(), a, |_, y| {
-            (y - r_w).abs()
-        })
+        servo_settling.result(a)
     } else {
-        settling(dense, sc.settling_band * peak_error, a, |t, y| {
-            (traj.step_at(&traj.setpoint, t) - y).abs()
-        })
+        let mut s = Settling::new(sc.settling_band * peak_error);
+        window_nodes(traj, a, b, |t, y| {
+            s.push(t, (traj.step_at(&traj.setpoint, t) - y).abs())
+        });
+        s.result(a)
     };
     let (y_final, u_final) = ss.unwrap_or((
         res.y.last().copied().unwrap_or(0.0),
@@ -468,12 +642,12 @@ fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool)
         t_start: a,
         t_end: b,
         step,
-        iae,
-        ise,
-        itae,
-        iste,
-        ist2e,
-        ist3e,
+        iae: sums.iae,
+        ise: sums.ise,
+        itae: sums.itae,
+        iste: sums.iste,
+        ist2e: sums.ist2e,
+        ist3e: sums.ist3e,
         overshoot,
         undershoot,
         peak_error,
@@ -503,4 +677,134 @@ pub fn windows(res: &Response, sc: &Scenario) -> Windows {
     let regulatory =
         (d_on && sc.t_end <= stop).then(|| window(res, sc, ld.time, sc.t_end, ld.size, false));
     Windows { servo, regulatory }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::controller::Pid;
+    use crate::model::plant::Family;
+
+    /// The shape metrics by their definitions on the collected node samples of [`quadrature`]
+    /// (`Scan::dense`): `(peak_error, overshoot, undershoot, rise_time, settling_time)`.
+    fn from_dense(
+        traj: &Trajectory,
+        dense: &[(f64, f64)],
+        a: f64,
+        r_w: f64,
+        step: f64,
+        band: f64,
+        servo: bool,
+    ) -> [Option<f64>; 5] {
+        let e = |t: f64, y: f64| (traj.step_at(&traj.setpoint, t) - y).abs();
+        let peak = dense.iter().map(|&(t, y)| e(t, y)).fold(0.0, f64::max);
+        let dev = |t: f64, y: f64| if servo { (y - r_w).abs() } else { e(t, y) };
+        let band = if servo {
+            band * step.abs()
+        } else {
+            band * peak
+        };
+        let settling = match dense.iter().rposition(|&(t, y)| dev(t, y) > band) {
+            None => Some(0.0),
+            Some(i) if i + 1 == dense.len() => None,
+            Some(i) => {
+                let ((t1, y1), (t2, y2)) = (dense[i], dense[i + 1]);
+                let (f1, f2) = (dev(t1, y1) - band, dev(t2, y2) - band);
+                Some(t1 + (t2 - t1) * f1 / (f1 - f2) - a)
+            }
+        };
+        if !servo {
+            return [Some(peak), None, None, None, settling];
+        }
+        let y0 = dense[0].1;
+        let sgn = step.signum();
+        let os = dense
+            .iter()
+            .map(|(_, y)| sgn * (y - r_w) / step.abs())
+            .fold(0.0, f64::max);
+        let us = dense
+            .iter()
+            .map(|(_, y)| -sgn * (y - y0) / step.abs())
+            .fold(0.0, f64::max);
+        let cross = |frac: f64| {
+            let target = y0 + frac * step;
+            dense.windows(2).find_map(|w| {
+                let ((t1, y1), (t2, y2)) = (w[0], w[1]);
+                let (f1, f2) = (sgn * (y1 - target), sgn * (y2 - target));
+                (f1 < 0.0 && f2 >= 0.0).then(|| t1 + (t2 - t1) * (-f1) / (f2 - f1))
+            })
+        };
+        let rise = cross(0.9).zip(cross(0.1)).map(|(b, a)| b - a);
+        [Some(peak), Some(os), Some(us), rise, settling]
+    }
+
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn one_pass_metrics_are_the_definitions_on_the_node_samples() {
+        // The windows' metrics are computed in one pass without collecting the node samples;
+        // they must equal, bit for bit, the definitions applied to the collected samples and
+        // the integrals of `quadrature` summed point by point: a loop with an inverse response
+        // and an overshoot (e changes sign inside pieces), events off the step grid (pieces cut
+        // inside a step), a negative load step.
+        let plant = Family::IpdtIr {
+            k: 0.547,
+            tau: 1.06,
+            tau_z: 0.418,
+            theta: 0.1,
+        }
+        .plant();
+        let c = Pid::ideal(1.61, 11.5, 1.15)
+            .filter_n(10.0)
+            .to_controller()
+            .unwrap();
+        let mut settled = 0;
+        for sc in [
+            Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, -0.5),
+            Scenario::steps(40.0, 0.05, 0.37, -2.0, 20.013, 0.7),
+            // windows of 100: both settle
+            Scenario::steps(200.0, 0.05, 0.0, 1.0, 100.0, 0.5),
+        ] {
+            let res = crate::sim::simulate(&plant, &c, &sc).unwrap();
+            let w = windows(&res, &sc);
+            let traj = &res.trajectory;
+            for (m, servo) in [(w.servo.unwrap(), true), (w.regulatory.unwrap(), false)] {
+                let (a, b) = (m.t_start, m.t_end);
+                let mut sums = [0.0; 6];
+                let scan = quadrature(traj, a, b, 1.0, |q| {
+                    let e2 = q.e * q.e;
+                    let t2 = q.t * q.t;
+                    sums[0] += q.w * q.e.abs();
+                    sums[1] += q.w * e2;
+                    sums[2] += q.w * q.t * q.e.abs();
+                    sums[3] += q.w * t2 * e2;
+                    sums[4] += q.w * t2 * t2 * e2;
+                    sums[5] += q.w * t2 * t2 * t2 * e2;
+                });
+                let got = [m.iae, m.ise, m.itae, m.iste, m.ist2e, m.ist3e];
+                for (g, want) in got.iter().zip(sums) {
+                    assert_eq!(g.to_bits(), want.to_bits(), "{g} vs {want}");
+                }
+                let r_w = traj.step_at(&traj.setpoint, a);
+                let want = from_dense(traj, &scan.dense, a, r_w, m.step, sc.settling_band, servo);
+                let got = [
+                    Some(m.peak_error),
+                    m.overshoot,
+                    m.undershoot,
+                    m.rise_time,
+                    m.settling_time,
+                ];
+                assert_eq!(
+                    got.map(|x| x.map(f64::to_bits)),
+                    want.map(|x| x.map(f64::to_bits)),
+                    "{got:?} vs {want:?}"
+                );
+                // the loop overshoots and has a rise time: the shape metrics are exercised
+                if servo {
+                    assert!(m.overshoot.unwrap() > 0.0 && m.rise_time.is_some());
+                }
+                settled += usize::from(m.settling_time.is_some_and(|t| t > 0.0));
+            }
+        }
+        // the settling time's interpolation is exercised too (at least the long run's windows)
+        assert!(settled >= 2, "{settled} windows settle");
+    }
 }

@@ -140,16 +140,43 @@ struct Prop {
 }
 
 impl Prop {
-    /// `out[r] = row_r · z` for every row (summed in the order of `z`).
+    /// `out[r] = row_r · z` for every row (summed in the order of `z`). Loops of order
+    /// n ≤ 8 (rows 11…18) take a copy of the loop with the row count a constant, so the rows'
+    /// sums stay in registers (the same sums in the same order: bit-identical).
     #[inline]
     fn apply(&self, z: &[f64], out: &mut [f64]) {
-        out.fill(0.0);
-        for (col, &zj) in self.cols.chunks_exact(self.rows).zip(z) {
-            for (o, &c) in out.iter_mut().zip(col) {
-                *o += c * zj;
+        match self.rows {
+            11 => apply_rows::<11>(&self.cols, z, out),
+            12 => apply_rows::<12>(&self.cols, z, out),
+            13 => apply_rows::<13>(&self.cols, z, out),
+            14 => apply_rows::<14>(&self.cols, z, out),
+            15 => apply_rows::<15>(&self.cols, z, out),
+            16 => apply_rows::<16>(&self.cols, z, out),
+            17 => apply_rows::<17>(&self.cols, z, out),
+            18 => apply_rows::<18>(&self.cols, z, out),
+            _ => {
+                out.fill(0.0);
+                for (col, &zj) in self.cols.chunks_exact(self.rows).zip(z) {
+                    for (o, &c) in out.iter_mut().zip(col) {
+                        *o += c * zj;
+                    }
+                }
             }
         }
     }
+}
+
+/// [`Prop::apply`] for `R` rows: the `R` sums accumulate in a local array (registers), each
+/// from 0.0 and in the order of `z`, as the general loop does.
+#[inline(always)]
+fn apply_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {
+    let mut acc = [0.0; R];
+    for (col, &zj) in cols.chunks_exact(R).zip(z) {
+        for (a, &c) in acc.iter_mut().zip(col) {
+            *a += c * zj;
+        }
+    }
+    out[..R].copy_from_slice(&acc);
 }
 
 fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
@@ -299,8 +326,17 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
     let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).fold(0.0, |s, (x, y)| s + x * y);
     // the rows of a piece: v and y at nodes 1..=DEG, then the end state
     let mut out = vec![0.0; 2 * DEG + n];
+    // piece k = step·pps + j starts at step·h + offsets[j] (what `traj.piece(k)` computes,
+    // without its division)
+    let (mut step, mut j) = (0usize, 0usize);
     for k in 0..total {
-        let (t0, _) = traj.piece(k);
+        let t0 = step as f64 * h + traj.offsets[j];
+        let p = &props[j];
+        j += 1;
+        if j == pps {
+            j = 0;
+            step += 1;
+        }
         let r = traj.step_at(&sc.setpoint, t0);
         let d = traj.step_at(&sc.disturbance, t0);
         if m.delay > 0.0 && k >= lag {
@@ -311,7 +347,6 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
         }
         z[n + NODES] = r;
         z[n + NODES + 1] = d;
-        let p = &props[k % pps];
         let w0 = z[n];
         let v0 = dot(&gx, &z[..n]) + m.h * r + m.hd * d + m.e * w0;
         let y0 = dot(&yxv, &z[..n]) + m.yw * w0 + m.yr * r + m.yd * d;
