@@ -59,6 +59,11 @@ run wasm-test wasm-pack test --node --release -- --lib --test '*'
 failed() { [[ " ${FAILED[*]} " == *" $1 "* ]]; }
 # js-api.mjs adds the contract's `export` (= export_code; a JS keyword wasm-bindgen cannot emit).
 run pkg-node bash -c 'wasm-pack build --release --target nodejs --out-dir pkg-node && node scripts/js-api.mjs pkg-node'
+# The page's first module (no `full` feature; tests/node/first_module.test.mjs compares it with
+# pkg-node). A stale one must not be tested either: removed first, so a failed build skips them.
+rm -rf www/pkg-first
+run pkg-first bash scripts/build-first.sh
+run clippy-first cargo clippy --lib --no-default-features --features first -- -D warnings
 if failed pkg-node; then section "node-test: skipped (pkg-node did not build)"; else
   run node-test node --test tests/node/
 fi

@@ -4,6 +4,7 @@
 #
 #   bash scripts/wasm-opt.sh www/pkg      # after wasm-pack build --release --target web …
 #   bash scripts/wasm-opt.sh pkg-node
+#   bash scripts/wasm-opt.sh www/pkg-first   # the page's first module (pidlab_first_bg.wasm)
 #
 # Why not wasm-pack's own wasm-opt step: Cargo.toml keeps `wasm-opt = false` because Debian's
 # binaryen 108 (which wasm-pack would take from PATH) breaks the module, and wasm-pack cannot
@@ -16,14 +17,18 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=${1:?usage: scripts/wasm-opt.sh PKG_DIR}
-wasm="$dir/pidlab_bg.wasm"
-[ -f "$wasm" ] || { echo "wasm-opt.sh: $wasm does not exist (run wasm-pack first)" >&2; exit 1; }
 opt=node_modules/.bin/wasm-opt
 if [ ! -x "$opt" ]; then
   echo "wasm-opt.sh: $opt missing; run bash scripts/ensure-tools.sh (npm ci)" >&2
   exit 1
 fi
-before=$(stat -c %s "$wasm")
-"$opt" -O3 "$wasm" -o "$wasm.opt"
-mv "$wasm.opt" "$wasm"
-echo "wasm-opt -O3 $wasm: $before -> $(stat -c %s "$wasm") bytes"
+# every module of the directory (pidlab_bg.wasm; pidlab_first_bg.wasm for the page's first module)
+shopt -s nullglob
+mods=("$dir"/*_bg.wasm)
+[ ${#mods[@]} -gt 0 ] || { echo "wasm-opt.sh: no $dir/*_bg.wasm (run wasm-pack first)" >&2; exit 1; }
+for wasm in "${mods[@]}"; do
+  before=$(stat -c %s "$wasm")
+  "$opt" -O3 "$wasm" -o "$wasm.opt"
+  mv "$wasm.opt" "$wasm"
+  echo "wasm-opt -O3 $wasm: $before -> $(stat -c %s "$wasm") bytes"
+done

@@ -1,6 +1,12 @@
 //! The one boundary module: every `#[wasm_bindgen]` export lives here. Each converts the JS
 //! argument to a `serde_json::Value`, calls [`crate::api`], and turns a [`crate::Error`] into a
 //! JS `Error` whose message starts with the field path.
+//!
+//! Built without the `full` feature (the page's first module, `pidlab_first`), it exports only
+//! what the page's start-up and default design need (`methods`, `presets`, `tune` of the
+//! default method, continuous `simulate`, `analyze`, `freqresp`, `plot`); `admissible`,
+//! `reduce`, `export_code`, `identify`, `sweep` and `sweep_grid` are absent there and the page
+//! calls them on the full module.
 
 use crate::api;
 use crate::error::Error;
@@ -124,6 +130,7 @@ pub fn tune(input: JsValue) -> Result<JsValue, JsError> {
 
 /// `admissible({method, plant, params?})`: the plant-aware interval of each continuous
 /// parameter, with a suggested value.
+#[cfg(feature = "full")]
 #[wasm_bindgen]
 pub fn admissible(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::admissible)
@@ -172,6 +179,7 @@ pub fn analyze(input: JsValue) -> Result<JsValue, JsError> {
 }
 
 /// `reduce({plant, rule})`: reduce a higher-order plant with one RHP zero to FOPDT-IR (Kaya 2020).
+#[cfg(feature = "full")]
 #[wasm_bindgen]
 pub fn reduce(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::reduce)
@@ -190,6 +198,7 @@ pub fn plot(spec: JsValue) -> Result<(), JsError> {
 /// wasm-bindgen does not take as a function name (it would rename it `_export`), hence
 /// `export_code`. Without `date`, today's date (UTC, from the JS clock) goes into the header;
 /// give `date` for a reproducible text.
+#[cfg(feature = "full")]
 #[wasm_bindgen]
 pub fn export_code(input: JsValue) -> Result<JsValue, JsError> {
     let mut v = from_js(input)?;
@@ -205,6 +214,7 @@ pub fn export_code(input: JsValue) -> Result<JsValue, JsError> {
 
 /// `identify({t, u, y, family, options?})`: a plant family fitted to an open-loop test
 /// (`family: "auto"` ranks several by AICc).
+#[cfg(feature = "full")]
 #[wasm_bindgen]
 pub fn identify(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::identify)
@@ -217,12 +227,14 @@ pub fn freqresp(input: JsValue) -> Result<JsValue, JsError> {
 }
 
 /// `sweep({method, plant, params?, param?, points?, range?, values?, scenario})`.
+#[cfg(feature = "full")]
 #[wasm_bindgen]
 pub fn sweep(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::sweep)
 }
 
 /// `sweep_grid({method, plant, param?, points?, range?})`: the values `sweep` steps through.
+#[cfg(feature = "full")]
 #[wasm_bindgen]
 pub fn sweep_grid(input: JsValue) -> Result<JsValue, JsError> {
     call(input, api::sweep_grid)

@@ -39,7 +39,9 @@ pub struct SimResult {
 /// Simulates the closed loop ([`crate::sim::simulate`]) and computes the metrics of its
 /// windows ([`crate::analysis::metrics`]).
 pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<SimResult> {
-    simulate_real(plant, c, sc, &RealLoop::default())
+    // sim::simulate, not simulate_real with a plain RealLoop (the same call): the page's first
+    // module (no `full` feature) then carries none of the saturated, sampled or noisy loops
+    Ok(finish(sim::simulate(plant, c, sc)?, sc))
 }
 
 /// [`simulate`] with actuator limits, anti-windup, sampling and noise
@@ -51,7 +53,11 @@ pub fn simulate_real(
     sc: &Scenario,
     rl: &RealLoop,
 ) -> Result<SimResult> {
-    let res = sim::simulate_real(plant, c, sc, rl)?;
+    Ok(finish(sim::simulate_real(plant, c, sc, rl)?, sc))
+}
+
+/// The simulator's response with the metrics of its windows.
+fn finish(res: Response, sc: &Scenario) -> SimResult {
     let metrics = windows(&res, sc);
     let internal_step = res.internal_step();
     let Response {
@@ -67,7 +73,7 @@ pub fn simulate_real(
         ..
     } = res;
     let noise = sampled.and_then(|s| s.noise);
-    Ok(SimResult {
+    SimResult {
         t,
         r,
         d,
@@ -80,5 +86,5 @@ pub fn simulate_real(
         trajectory,
         v,
         noise,
-    })
+    }
 }

@@ -167,7 +167,34 @@ pub fn analysis_json(a: &Analysis) -> Value {
 
 /// `methods()` of API.md, with the plant families (`families`: id, title, formula,
 /// integrators and the page's parameter declarations, see [`family_infos`]).
+#[cfg(feature = "full")]
 pub fn methods() -> Value {
+    methods_of_registry()
+}
+
+/// `methods()` in the first module (built without the `full` feature): the same value, read
+/// from `methods.json` (the full build's `methods()`, checked equal by the test
+/// `methods_data_is_the_registrys`), so that no rule's code is needed to list the rules.
+#[cfg(not(feature = "full"))]
+pub fn methods() -> Value {
+    serde_json::from_str(METHODS_JSON).unwrap_or(Value::Null)
+}
+
+/// The full build's `methods()` as JSON text (`src/api/methods.json`; regenerate with
+/// `PIDLAB_WRITE_METHODS=1 cargo test --release --lib api::tests::methods_data`).
+pub const METHODS_JSON: &str = include_str!("methods.json");
+
+/// The error of a call the first module cannot serve (built without the `full` feature): the
+/// page sees "needs the full module" and calls the full module instead.
+pub fn needs_full(path: &str, what: &str) -> Error {
+    Error::new(
+        path,
+        format!("{what} needs the full module (this is the page's first module, pidlab_first)"),
+    )
+}
+
+/// `methods()` computed from the rule registry (the full build).
+pub fn methods_of_registry() -> Value {
     json!({
         "methods": rules::methods().iter().map(|m| serde_json::to_value(m).unwrap_or(Value::Null)).collect::<Vec<_>>(),
         "families": serde_json::to_value(family_infos()).unwrap_or(Value::Null),
@@ -264,6 +291,15 @@ pub fn scenario_json(sc: &Scenario) -> Value {
 /// `tune({method, plant, params})` of API.md.
 pub fn tune(input: &Value) -> Result<Value> {
     let inp: TuneIn = from_json(input, "")?;
+    #[cfg(not(feature = "full"))]
+    if !rules::FIRST_METHODS.contains(&inp.method.as_str()) {
+        let known = methods()["methods"]
+            .as_array()
+            .is_some_and(|ms| ms.iter().any(|m| m["id"] == inp.method.as_str()));
+        if known {
+            return Err(needs_full("method", &format!("'{}'", inp.method)));
+        }
+    }
     let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
     let params = input::params(&inp.params);
     let t = rules::tune(&inp.method, &plant, &params)?;
@@ -427,8 +463,27 @@ fn simulate_in(inp: &SimulateIn) -> Result<SimResult> {
         "controller",
     )?;
     let sc = input::scenario(input::required(&inp.scenario, "scenario")?, "scenario")?;
-    let rl = input::real_loop(&inp.actuator, &inp.sampling, &inp.noise, sc.t_end)?;
-    crate::analysis::simulate_real(&plant, &c, &sc, &rl)
+    #[cfg(feature = "full")]
+    {
+        let rl = input::real_loop(&inp.actuator, &inp.sampling, &inp.noise, sc.t_end)?;
+        crate::analysis::simulate_real(&plant, &c, &sc, &rl)
+    }
+    #[cfg(not(feature = "full"))]
+    {
+        for (k, v) in [
+            ("actuator", &inp.actuator),
+            ("sampling", &inp.sampling),
+            ("noise", &inp.noise),
+        ] {
+            if !v.is_null() {
+                return Err(needs_full(
+                    k,
+                    "a loop with actuator limits, sampling or noise",
+                ));
+            }
+        }
+        crate::analysis::simulate(&plant, &c, &sc)
+    }
 }
 
 /// `analyze({plant, controller})` of API.md.
@@ -559,6 +614,35 @@ pub fn sweep(input: &Value) -> Result<Value> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The first module's `methods()` (the data in `methods.json`) is the full build's, value
+    /// for value: every method with its parameters, the families, export targets and identify
+    /// families (exact equality). `PIDLAB_WRITE_METHODS=1` rewrites the file from the registry
+    /// first.
+    #[cfg(feature = "full")]
+    #[test]
+    fn methods_data_is_the_registrys() {
+        let full = methods_of_registry();
+        if std::env::var_os("PIDLAB_WRITE_METHODS").is_some() {
+            let text = serde_json::to_string_pretty(&full).expect("json") + "\n";
+            let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/api/methods.json");
+            std::fs::write(path, text).expect("write src/api/methods.json");
+        }
+        let data: Value = serde_json::from_str(METHODS_JSON).expect("methods.json parses");
+        assert_eq!(
+            data, full,
+            "src/api/methods.json differs from the registry's methods(); regenerate it with \
+             PIDLAB_WRITE_METHODS=1 cargo test --release --lib api::tests::methods_data"
+        );
+        // the first module's own methods are listed
+        for id in rules::FIRST_METHODS {
+            assert!(full["methods"]
+                .as_array()
+                .expect("methods")
+                .iter()
+                .any(|m| m["id"] == *id));
+        }
+    }
 
     /// One slider update through the JSON API analyses its design once: `tune` keeps the
     /// rule's analysis, and `analyze` of the controller it returned (read back from JSON, the

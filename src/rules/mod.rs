@@ -212,6 +212,7 @@ impl DesignCheck {
 }
 
 /// Every rule of every paper, in the order `methods()` lists them.
+#[cfg(feature = "full")]
 pub fn registry() -> Vec<Box<dyn Rule>> {
     let mut v = arvanitis2012::rules();
     v.extend(shamsuzzoha_lee2008::rules());
@@ -222,6 +223,17 @@ pub fn registry() -> Vec<Box<dyn Rule>> {
     v.extend(chen_seborg2002::rules());
     v
 }
+
+/// The first module's rules (built without the `full` feature): the page's default method
+/// only, so that no other rule's code is reachable (a `dyn Rule` vtable keeps all of a rule's
+/// code). `methods()` there comes from data (`api::methods`), not from this list.
+#[cfg(not(feature = "full"))]
+pub fn registry() -> Vec<Box<dyn Rule>> {
+    praveen_kumar_narayana::rules()
+}
+
+/// The method id the first module tunes (the page's default design, www/state.js).
+pub const FIRST_METHODS: &[&str] = &["praveen_kumar"];
 
 /// Every implemented method.
 pub fn methods() -> Vec<MethodInfo> {

@@ -1,0 +1,58 @@
+// The page's first module (issue 15; scripts/build-first.sh builds www/pkg-first/, the crate
+// without its `full` feature) against the full module (pkg-node): what it carries answers the
+// same values, bit for bit (the same Rust code; wasm arithmetic is deterministic IEEE-754), and
+// what it does not carry is refused with an error that says "needs the full module" (the page
+// then calls the full module). Skipped, saying so, when www/pkg-first has not been built.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { existsSync, readFileSync } from 'node:fs';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import path from 'node:path';
+import { pidlab, BOILER } from './pidlab.mjs';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const DIR = path.resolve(here, '../../www/pkg-first');
+const built = existsSync(path.join(DIR, 'pidlab_first_bg.wasm'));
+const skip = built ? false : 'www/pkg-first not built (bash scripts/build-first.sh)';
+let first = null;
+if (built) {
+  first = await import(pathToFileURL(path.join(DIR, 'pidlab_first.js')).href);
+  first.initSync({ module: readFileSync(path.join(DIR, 'pidlab_first_bg.wasm')) });
+}
+
+// the page's start-up design (www/state.js): praveen_kumar on the boiler
+const DESIGN = { method: 'praveen_kumar', plant: BOILER, params: { lambda: 1.87, epsilon: 0.2 } };
+const SCENARIO = { t_end: 60, dt: 0.02, setpoint: { time: 0, size: 1 }, disturbance: { time: 30, size: 1 } }; // www/state.js DEFAULT_SCENARIO
+
+test('first module: methods() is the full module\'s, value for value (from data, not rule code)', { skip }, () => {
+  assert.deepEqual(first.methods(), pidlab.methods());
+});
+
+test('first module: presets() is the full module\'s', { skip }, () => {
+  assert.deepEqual(first.presets(), pidlab.presets());
+});
+
+test('first module: the default design (tune, continuous simulate, analyze, freqresp) as the full module', { skip }, () => {
+  const t = first.tune(DESIGN);
+  assert.deepEqual(t, pidlab.tune(DESIGN));
+  const controller = { cr: t.controller.cr, cy: t.controller.cy };
+  const loop = { plant: BOILER, controller };
+  assert.deepEqual(first.simulate({ ...loop, scenario: SCENARIO }), pidlab.simulate({ ...loop, scenario: SCENARIO }));
+  assert.deepEqual(first.analyze(loop), pidlab.analyze(loop));
+  assert.deepEqual(first.freqresp(loop), pidlab.freqresp(loop));
+});
+
+test('first module: what it does not carry says "needs the full module"; unknown input errors stay as in the full module', { skip }, () => {
+  assert.throws(() => first.tune({ method: 'simc', plant: BOILER, params: {} }), /^Error: method: 'simc' needs the full module/);
+  const controller = pidlab.tune(DESIGN).controller;
+  const loop = { plant: BOILER, controller: { cr: controller.cr, cy: controller.cy }, scenario: SCENARIO };
+  assert.throws(() => first.simulate({ ...loop, actuator: { u_min: -2, u_max: 2 } }), /^Error: actuator: a loop .* needs the full module/);
+  assert.throws(() => first.simulate({ ...loop, sampling: { h: 0.05 } }), /^Error: sampling: .*needs the full module/);
+  for (const fn of ['admissible', 'reduce', 'export_code', 'identify', 'sweep', 'sweep_grid']) {
+    assert.equal(first[fn], undefined, fn + ' is not exported by the first module');
+    assert.equal(typeof pidlab[fn], 'function', fn + ' is exported by the full module');
+  }
+  // an unknown method is refused as the full module refuses it (not routed)
+  const msg = (f) => { try { f(); } catch (e) { return e.message; } return null; };
+  assert.match(msg(() => first.tune({ method: 'nope', plant: BOILER })), /^method: unknown method 'nope'/);
+});
