@@ -205,6 +205,9 @@ impl Band {
     }
 }
 
+/// Samples `(ω, L(jω))` and their `(|L|, |1 + L|)`.
+pub(super) type SamplesWithNorms<'a> = (&'a [(f64, C64)], &'a [(f64, f64)]);
+
 /// Samples of `L(jω)` from the adaptive sweep on the imaginary axis.
 pub(super) struct Sweep {
     /// The sweep from `w_lo` on, ω ascending.
@@ -225,7 +228,7 @@ pub(super) struct Sweep {
 
 impl Sweep {
     /// The sweep's samples, then the rotation-tail window's, each with its `(|L|, |1 + L|)`.
-    pub(super) fn with_norms(&self) -> [(&[(f64, C64)], &[(f64, f64)]); 2] {
+    pub(super) fn with_norms(&self) -> [SamplesWithNorms<'_>; 2] {
         [
             (&self.samples, &self.norms),
             (&self.tail_samples, &self.tail_norms),
