@@ -52,8 +52,9 @@ pub(super) fn mt_supremum(l: &LoopTf, sweep: &Sweep, hf: &HighFreq) -> MtSup {
         (hf.signed / (1.0 + hf.signed)).abs()
     };
     let mut best = (zero, None::<f64>);
-    for samples in [&sweep.samples, &sweep.tail_samples] {
-        raise_to_peaks(&t_mag, &t_of_l, samples, &mut best);
+    for (samples, norms) in sweep.with_norms() {
+        let mags: Vec<f64> = norms.iter().map(|n| n.0 / n.1).collect();
+        raise_to_peaks(&t_mag, &mags, samples, &mut best);
     }
     let mut at_infinity = false;
     if inf >= best.0 && inf > 0.0 {
@@ -73,13 +74,10 @@ pub(super) fn mt_supremum(l: &LoopTf, sweep: &Sweep, hf: &HighFreq) -> MtSup {
 pub(super) fn bandwidth(l: &LoopTf, sweep: &Sweep) -> Option<f64> {
     let level = std::f64::consts::FRAC_1_SQRT_2;
     let f = |w: f64| 1.0 / (1.0 + l.at(w)).norm() - level;
-    let s = &sweep.samples;
+    let (s, n) = (&sweep.samples, &sweep.norms);
     for k in 1..s.len() {
         let (a, b) = (s[k - 1], s[k]);
-        let (fa, fb) = (
-            1.0 / (1.0 + a.1).norm() - level,
-            1.0 / (1.0 + b.1).norm() - level,
-        );
+        let (fa, fb) = (1.0 / n[k - 1].1 - level, 1.0 / n[k].1 - level);
         if fa < 0.0 && fb >= 0.0 {
             return brent(f, a.0, b.0, fa, fb, 1e-15 * b.0, 200)
                 .map(|(x, _)| x)

@@ -20,8 +20,9 @@ pub(super) struct MsSup {
 pub(super) fn ms_supremum(l: &LoopTf, sweep: &Sweep, lim: &MsLimits) -> MsSup {
     let s_mag = |w: f64| 1.0 / (1.0 + l.at(w)).norm();
     let mut best = (lim.zero, None::<f64>);
-    for samples in [&sweep.samples, &sweep.tail_samples] {
-        raise_to_peaks(&s_mag, &|z: C64| 1.0 / (1.0 + z).norm(), samples, &mut best);
+    for (samples, norms) in sweep.with_norms() {
+        let mags: Vec<f64> = norms.iter().map(|n| 1.0 / n.1).collect();
+        raise_to_peaks(&s_mag, &mags, samples, &mut best);
     }
     let mut at_infinity = false;
     if lim.inf >= best.0 {
@@ -41,16 +42,15 @@ pub(super) fn ms_supremum(l: &LoopTf, sweep: &Sweep, lim: &MsLimits) -> MsSup {
 }
 
 /// Raises `best` (value, ω) to the largest of the eight highest local maxima of a closed-loop
-/// magnitude (`s_mag` of ω, `of_l` the same as a function of `L`; |S| for Ms, |T| for Mt) on
+/// magnitude (`s_mag` of ω, `mags` its values at `samples`; |S| for Ms, |T| for Mt) on
 /// `samples`, each refined by golden-section search between its neighbours, and the largest
 /// sample itself.
 pub(super) fn raise_to_peaks(
     s_mag: &impl Fn(f64) -> f64,
-    of_l: &impl Fn(C64) -> f64,
+    mags: &[f64],
     samples: &[(f64, C64)],
     best: &mut (f64, Option<f64>),
 ) {
-    let mags: Vec<f64> = samples.iter().map(|(_, z)| of_l(*z)).collect();
     let mut cands: Vec<usize> = (1..mags.len().saturating_sub(1))
         .filter(|&i| mags[i] >= mags[i - 1] && mags[i] >= mags[i + 1])
         .collect();
@@ -160,27 +160,26 @@ fn crossings(l: &LoopTf, sweep: &Sweep) -> Crossings {
     let g = |w: f64| l.at(w);
     let mut gms: Vec<(f64, f64)> = vec![];
     let mut pms: Vec<(f64, f64)> = vec![];
-    for win in sweep
-        .samples
-        .windows(2)
-        .chain(sweep.tail_samples.windows(2))
-    {
-        let ((w1, z1), (w2, z2)) = (win[0], win[1]);
-        if (z1.im < 0.0) != (z2.im < 0.0) && (z1.re < 0.0 || z2.re < 0.0) {
-            let wc = bisect(|x| g(x).im, w1, w2);
-            let z = g(wc);
-            if z.re < 0.0 {
-                gms.push((1.0 / z.norm(), wc));
+    for (samples, norms) in sweep.with_norms() {
+        for (k, win) in samples.windows(2).enumerate() {
+            let ((w1, z1), (w2, z2)) = (win[0], win[1]);
+            let (n1, n2) = (norms[k].0, norms[k + 1].0);
+            if (z1.im < 0.0) != (z2.im < 0.0) && (z1.re < 0.0 || z2.re < 0.0) {
+                let wc = bisect(|x| g(x).im, w1, w2);
+                let z = g(wc);
+                if z.re < 0.0 {
+                    gms.push((1.0 / z.norm(), wc));
+                }
             }
-        }
-        if (z1.norm() < 1.0) != (z2.norm() < 1.0) {
-            let wc = bisect(|x| g(x).norm() - 1.0, w1, w2);
-            let z = g(wc);
-            let mut pm = z.arg().to_degrees() + 180.0;
-            if pm > 180.0 {
-                pm -= 360.0;
+            if (n1 < 1.0) != (n2 < 1.0) {
+                let wc = bisect(|x| g(x).norm() - 1.0, w1, w2);
+                let z = g(wc);
+                let mut pm = z.arg().to_degrees() + 180.0;
+                if pm > 180.0 {
+                    pm -= 360.0;
+                }
+                pms.push((pm, wc));
             }
-            pms.push((pm, wc));
         }
     }
     Crossings { gms, pms }

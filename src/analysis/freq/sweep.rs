@@ -4,16 +4,15 @@
 use super::{HighFreq, LoopTf, MsLimits};
 use crate::model::poly::C64;
 
-/// Characteristic frequencies: magnitudes of the non-zero poles and zeros of L and 1/θ.
-pub(super) fn char_freqs(l: &LoopTf) -> (f64, f64) {
-    let mut f: Vec<f64> =
-        l.lr.num
-            .roots()
-            .into_iter()
-            .chain(l.lr.den.roots())
-            .map(|z| z.norm())
-            .filter(|x| x.is_finite() && *x > 1e-12)
-            .collect();
+/// Characteristic frequencies: magnitudes of the non-zero poles and zeros of L and 1/θ, from
+/// the roots of L's numerator (`num_roots`) and denominator (`den_roots`).
+pub(super) fn char_freqs(l: &LoopTf, num_roots: &[C64], den_roots: &[C64]) -> (f64, f64) {
+    let mut f: Vec<f64> = num_roots
+        .iter()
+        .chain(den_roots)
+        .map(|z| z.norm())
+        .filter(|x| x.is_finite() && *x > 1e-12)
+        .collect();
     if l.delay > 0.0 {
         f.push(1.0 / l.delay);
     }
@@ -44,18 +43,19 @@ impl Tail {
         let n = ((hi.log10() - lo.log10()) * 100.0)
             .ceil()
             .clamp(10.0, 20_000.0) as usize;
-        let mut w: Vec<f64> = (0..=n)
+        let grid: Vec<f64> = (0..=n)
             .map(|i| lo * (hi / lo).powf(i as f64 / n as f64))
             .collect();
+        let mut near: Vec<f64> = vec![];
         for &p in extra {
             for k in -20..=20 {
                 let x = p * (1.0 + 0.005 * k as f64);
                 if x > lo && x < hi {
-                    w.push(x);
+                    near.push(x);
                 }
             }
         }
-        crate::numerics::sort_f64(&mut w);
+        let w = merge_sorted(grid, near);
         let vals: Vec<C64> = w.iter().map(|&x| l.rat_jw(x)).collect();
         let mut sup = vec![0.0; w.len()];
         let mut m = l_inf;
@@ -114,6 +114,33 @@ impl Tail {
     }
 }
 
+/// The ascending union of `grid` (ascending already: `lo·(hi/lo)^(i/n)` with a monotone `powf`)
+/// and the unsorted `near`: the vector [`crate::numerics::sort_f64`] of both gives (total order,
+/// so the same values in the same order), by sorting the short `near` and merging. A `grid` out
+/// of order (a non-monotone `powf`) is sorted with the rest.
+fn merge_sorted(mut grid: Vec<f64>, mut near: Vec<f64>) -> Vec<f64> {
+    if !grid.windows(2).all(|p| p[0].total_cmp(&p[1]).is_le()) {
+        grid.append(&mut near);
+        crate::numerics::sort_f64(&mut grid);
+        return grid;
+    }
+    crate::numerics::sort_f64(&mut near);
+    let mut out = Vec::with_capacity(grid.len() + near.len());
+    let (mut i, mut j) = (0, 0);
+    while i < grid.len() && j < near.len() {
+        if near[j].total_cmp(&grid[i]).is_lt() {
+            out.push(near[j]);
+            j += 1;
+        } else {
+            out.push(grid[i]);
+            i += 1;
+        }
+    }
+    out.extend_from_slice(&grid[i..]);
+    out.extend_from_slice(&near[j..]);
+    out
+}
+
 /// Adaptive sampling of `g` on [a, b]: returns samples with `|g_{k+1} − g_k|` at most `frac`
 /// of `min(|1 + g_k|, |1 + g_{k+1}|)` (or the depth cap).
 pub(super) fn refine(
@@ -146,21 +173,25 @@ pub(super) struct Band {
     pub(super) w_lo: f64,
     pub(super) w_hi: f64,
     pub(super) tail: Tail,
+    /// The roots of L's numerator and denominator ([`crate::model::poly::Poly::roots`]: exact
+    /// zeros first), computed once for the band, the Nyquist count and its start.
+    pub(super) num_roots: Vec<C64>,
+    pub(super) den_roots: Vec<C64>,
 }
 
 impl Band {
     pub(super) fn new(l: &LoopTf, l_inf: f64) -> Band {
-        let (flo, fhi) = char_freqs(l);
+        let num_roots = l.lr.num.roots();
+        let den_roots = l.lr.den.roots();
+        let (flo, fhi) = char_freqs(l, &num_roots, &den_roots);
         let w_lo = flo * 1e-4;
         let w_hi = fhi * 1e5;
-        let pole_freqs: Vec<f64> =
-            l.lr.den
-                .roots()
-                .iter()
-                .chain(l.lr.num.roots().iter())
-                .map(|z| z.norm())
-                .filter(|x| *x > 0.0 && x.is_finite())
-                .collect();
+        let pole_freqs: Vec<f64> = den_roots
+            .iter()
+            .chain(num_roots.iter())
+            .map(|z| z.norm())
+            .filter(|x| *x > 0.0 && x.is_finite())
+            .collect();
         let tail = Tail::new(l, w_lo, w_hi, l_inf, &pole_freqs);
         Band {
             flo,
@@ -168,9 +199,14 @@ impl Band {
             w_lo,
             w_hi,
             tail,
+            num_roots,
+            den_roots,
         }
     }
 }
+
+/// Samples `(ω, L(jω))` and their `(|L|, |1 + L|)`.
+pub(super) type SamplesWithNorms<'a> = (&'a [(f64, C64)], &'a [(f64, f64)]);
 
 /// Samples of `L(jω)` from the adaptive sweep on the imaginary axis.
 pub(super) struct Sweep {
@@ -179,6 +215,11 @@ pub(super) struct Sweep {
     /// In the rotation region of a delayed biproper loop: ±1.5 periods of the delay's phase
     /// around the largest `|L_rat|` beyond the sweep (else empty).
     pub(super) tail_samples: Vec<(f64, C64)>,
+    /// `(|L|, |1 + L|)` at each of `samples`, computed once for every reader (Ms, Mt, the
+    /// crossings, the bandwidth).
+    pub(super) norms: Vec<(f64, f64)>,
+    /// The same at each of `tail_samples`.
+    pub(super) tail_norms: Vec<(f64, f64)>,
     /// Where the sweep stopped.
     pub(super) w_end: f64,
     /// Stopped by the point cap rather than by the tail bound.
@@ -186,6 +227,14 @@ pub(super) struct Sweep {
 }
 
 impl Sweep {
+    /// The sweep's samples, then the rotation-tail window's, each with its `(|L|, |1 + L|)`.
+    pub(super) fn with_norms(&self) -> [SamplesWithNorms<'_>; 2] {
+        [
+            (&self.samples, &self.norms),
+            (&self.tail_samples, &self.tail_norms),
+        ]
+    }
+
     /// Log steps of 1/40 decade, each refined so `L` moves by at most a tenth of its distance
     /// to −1; stops when nothing beyond ω can raise Ms, cross |L| = 1 or lower the GM (by the
     /// tail bound), at `w_hi`, at 100 000 points, or on entering the rotation region.
@@ -210,6 +259,8 @@ impl Sweep {
         let mut found_ms = lim.zero;
         // smallest |1/L| seen at a sign change of Im L with Re L < 0 (approximate, refined later)
         let mut gm_found = f64::INFINITY;
+        let norms_of = |z: C64| (z.norm(), (1.0 + z).norm());
+        let mut norms = vec![norms_of(samples[0].1)];
         let mut seen = 1;
         loop {
             let w2 = w * step;
@@ -218,9 +269,11 @@ impl Sweep {
             w = w2;
             for i in seen..samples.len() {
                 let (z0, z1) = (samples[i - 1].1, samples[i].1);
-                found_ms = found_ms.max(1.0 / (1.0 + z1).norm());
+                norms.push(norms_of(z1));
+                let (n0, n1) = (norms[i - 1], norms[i]);
+                found_ms = found_ms.max(1.0 / n1.1);
                 if (z0.im < 0.0) != (z1.im < 0.0) && (z0.re < 0.0 || z1.re < 0.0) {
-                    gm_found = gm_found.min(1.0 / z0.norm().max(z1.norm()));
+                    gm_found = gm_found.min(1.0 / n0.0.max(n1.0));
                 }
             }
             seen = samples.len();
@@ -246,9 +299,12 @@ impl Sweep {
         } else {
             vec![]
         };
+        let tail_norms = tail_samples.iter().map(|p| norms_of(p.1)).collect();
         Sweep {
             samples,
+            norms,
             tail_samples,
+            tail_norms,
             w_end: w,
             truncated,
         }
