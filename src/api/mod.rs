@@ -184,8 +184,9 @@ pub fn methods() -> Value {
 /// `PIDLAB_WRITE_METHODS=1 cargo test --release --lib api::tests::methods_data`).
 pub const METHODS_JSON: &str = include_str!("methods.json");
 
-/// The error of a call the first module cannot serve (built without the `full` feature): the
-/// page sees "needs the full module" and calls the full module instead.
+/// The error of a call the first module cannot serve (built without the `full` feature): a
+/// caller that sees "needs the full module" is to call the full module instead (the page does
+/// not load the first module yet: README, "A first module").
 pub fn needs_full(path: &str, what: &str) -> Error {
     Error::new(
         path,
