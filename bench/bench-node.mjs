@@ -5,6 +5,11 @@
 //
 //   node bench/bench-node.mjs [runs]      (scripts/bench.sh builds pkg-node and runs this)
 //
+// The page asks simulate for `typed: true` (www/compute.js: the five sample arrays as
+// Float64Arrays, docs/API.md "simulate: output options"), so every update and the simulate
+// phase are timed with it (since branch simstep, 2026-11-26; before, number[]); the simulate
+// phase returning number[] (the contract's default) is timed beside it.
+//
 // A slider drag changes λ at every update, so the update, tune, simulate and analyze are timed
 // over a drag: λ cycles through 1.800, 1.802, …, 1.960 (DRAG), never the same input twice in a
 // row; a cache that pays only on a repeated identical input gains nothing here. (The
@@ -65,7 +70,7 @@ const designAt = (i) => (tuneCall ? pidlab.tune(DRAG_CALLS[i % DRAG]).controller
 
 function update() {
   const controller = designAt(k++);
-  const sim = pidlab.simulate({ plant: BOILER, controller, scenario: SCENARIO });
+  const sim = pidlab.simulate({ plant: BOILER, controller, scenario: SCENARIO, typed: true });
   const an = pidlab.analyze({ plant: BOILER, controller });
   return [sim, an];
 }
@@ -77,7 +82,7 @@ if (sim0.y.length !== 3001) throw new Error(`expected 3001 samples, got ${sim0.y
 
 console.log(`# pidlab benchmark: wasm in Node ${process.version} (${os.cpus()[0]?.model ?? '?'}, ${os.cpus().length} cpus)`);
 console.log();
-console.log(`One slider update on the boiler: ${tuneCall ? `tune(${tuneCall.method}${tuneCall.params.lambda ? `, λ = ${tuneCall.params.lambda}` : ''})` : 'literal I-PD (no rule on main yet)'} + simulate (3001 points, set-point + load step) + analyze; ${RUNS} runs after ${WARMUP} warm-up runs, λ cycling 1.800, 1.802, …, 1.960 (a drag).`);
+console.log(`One slider update on the boiler: ${tuneCall ? `tune(${tuneCall.method}${tuneCall.params.lambda ? `, λ = ${tuneCall.params.lambda}` : ''})` : 'literal I-PD (no rule on main yet)'} + simulate (3001 points, set-point + load step; \`typed: true\`, as the page asks) + analyze; ${RUNS} runs after ${WARMUP} warm-up runs, λ cycling 1.800, 1.802, …, 1.960 (a drag).`);
 console.log(`(Ms = ${an0.ms?.toFixed?.(3)}, stable = ${an0.stable}, diverged = ${sim0.diverged ?? false})`);
 console.log();
 console.log('| step | median | p95 | min | mean | CPU-time median |');
@@ -92,8 +97,10 @@ if (tuneCall) {
 }
 const ctl = designAt(50);
 const drag = Array.from({ length: DRAG }, (_, i) => designAt(i));
-phases.simulate = time(() => pidlab.simulate({ plant: BOILER, controller: drag[k++ % DRAG], scenario: SCENARIO }), RUNS);
-row('simulate (3001 points)', phases.simulate);
+phases.simulate = time(() => pidlab.simulate({ plant: BOILER, controller: drag[k++ % DRAG], scenario: SCENARIO, typed: true }), RUNS);
+row('simulate (3001 points, `typed: true`: Float64Arrays, as the page asks)', phases.simulate);
+phases.simulatePlain = time(() => pidlab.simulate({ plant: BOILER, controller: drag[k++ % DRAG], scenario: SCENARIO }), RUNS);
+row('simulate (3001 points, number[]: the default)', phases.simulatePlain);
 phases.analyze = time(() => pidlab.analyze({ plant: BOILER, controller: drag[k++ % DRAG] }), RUNS);
 row('analyze', phases.analyze);
 // For scripts/bench.sh: the update's figures, its phases and the controller, which the
@@ -111,7 +118,7 @@ const CONTINUOUS = { actuator: SATURATED.actuator };
 for (const [name, extra] of [['update, sampled h = 0.01 (tune + simulate + analyze)', SAMPLED], ['update, sampled h = 0.01, valve ±1.5, tracking anti-windup', SATURATED], ['update, continuous, valve ±1.5, tracking anti-windup', CONTINUOUS]]) {
   row(name, time(() => {
     const controller = designAt(k++);
-    pidlab.simulate({ plant: BOILER, controller, scenario: SCENARIO, ...extra });
+    pidlab.simulate({ plant: BOILER, controller, scenario: SCENARIO, ...extra, typed: true });
     pidlab.analyze({ plant: BOILER, controller });
   }, RUNS));
 }
@@ -136,7 +143,7 @@ if (methods.length) {
       const tt = time(() => pidlab.tune(call), runs, 20);
       const tu = time(() => {
         const cc = pidlab.tune(call).controller;
-        pidlab.simulate({ plant: p.plant, controller: cc, scenario: p.scenario });
+        pidlab.simulate({ plant: p.plant, controller: cc, scenario: p.scenario, typed: true });
         pidlab.analyze({ plant: p.plant, controller: cc });
       }, runs, 20);
       console.log(`| ${m.id} | ${p.id} | ${f(tt.median)} | ${f(tt.p95)} | ${n} | ${f(tu.median)} | ${f(tu.p95)} |`);

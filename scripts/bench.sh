@@ -53,7 +53,8 @@ console.log("| phase | pidlab native | pidlab wasm in Node | python-control | py
 console.log("|---|---:|---:|---:|---:|");
 const ph = (name, a, b, c) => console.log(`| ${name} | ${f(a)} | ${f(b)} | ${f(c)} | ${c != null && b ? (c / b).toFixed(1) + "x" : "–"} |`);
 ph("tune", nat.tune?.cpuMedian, n.tune?.cpuMedian, null);
-ph("simulate (3001 points)", nat.simulate.cpuMedian, n.simulate.cpuMedian, p.simulate_cpu_median_ms);
+ph("simulate (3001 points; Node: `typed: true`, as the page asks)", nat.simulate.cpuMedian, n.simulate.cpuMedian, p.simulate_cpu_median_ms);
+ph("· simulate in Node returning number[] (the default)", null, n.simulatePlain?.cpuMedian, null);
 ph("analyze (pidlab: Ms, margins, Mt, bandwidth, Nyquist count; python-control: Ms on a grid)", nat.analyze.cpuMedian, n.analyze.cpuMedian, p.analyze_cpu_median_ms);
 ph("update", nat.update.cpuMedian, n.update.cpuMedian, p.cpu_median_ms);
 console.log();
