@@ -130,6 +130,47 @@ pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<Response
     Ok(sample(sc, traj, diverged_at, &|r, d| m.steady_state(r, d)))
 }
 
+/// [`simulate`] with the internal step `h = θ/n` instead of the rule's (see the module docs),
+/// for measuring the method's error against the step (`examples/step_error.rs`); not for
+/// applications: a larger step than the rule's is less accurate (README, "The internal step").
+///
+/// Errors: those of [`simulate`]; `n` is at least 1 (`n`), the plant has a dead time
+/// (`plant.delay`) and the controller no model-based set-point loop (`controller.model_loop`).
+#[doc(hidden)]
+pub fn simulate_at_step(
+    plant: &Plant,
+    c: &Controller,
+    sc: &Scenario,
+    n: usize,
+) -> Result<Response> {
+    sc.validate().map_err(|e| e.within("scenario"))?;
+    if n == 0 {
+        return Err(crate::error::Error::new(
+            "n",
+            "the step θ/n needs n ≥ 1 (got 0)",
+        ));
+    }
+    if plant.delay <= 0.0 {
+        return Err(crate::error::Error::new(
+            "plant.delay",
+            "the step θ/n needs a dead time θ > 0",
+        ));
+    }
+    if c.model_loop.is_some() {
+        return Err(crate::error::Error::new(
+            "controller.model_loop",
+            "a model-based set-point loop has two dead times: use simulate",
+        ));
+    }
+    let m = LoopModel::new(
+        plant,
+        c,
+        sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
+    )?;
+    let (traj, diverged_at) = single::integrate_at(&m, sc, plant.delay / n as f64)?;
+    Ok(sample(sc, traj, diverged_at, &|r, d| m.steady_state(r, d)))
+}
+
 /// Output samples of a computed response and the steady states at the windows' inputs
 /// (shared by both integrators).
 pub(crate) fn sample(

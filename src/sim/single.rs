@@ -275,7 +275,16 @@ fn step_pieces(sc: &Scenario, h: f64, tol: f64) -> (Vec<f64>, Vec<f64>) {
 /// Integrates the loop and returns the continuous response, or the error that explains why
 /// it cannot be simulated. `diverged_at` is set when the response left the bounds.
 pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
-    let h = internal_step(m, sc);
+    integrate_at(m, sc, internal_step(m, sc))
+}
+
+/// [`integrate`] with the internal step `h` (a divisor of the dead time, or of `dt` without
+/// one: the caller's choice, see [`super::simulate_at_step`]).
+pub(crate) fn integrate_at(
+    m: &LoopModel,
+    sc: &Scenario,
+    h: f64,
+) -> Result<(Trajectory, Option<f64>)> {
     let n_delay = if m.delay > 0.0 {
         (m.delay / h).round() as usize
     } else {

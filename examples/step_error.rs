@@ -1,0 +1,256 @@
+//! `cargo run --release --example step_error` — the simulator's error against its internal step
+//! (issue 15: can the step be larger than `dt`?).
+//!
+//! For loops that exercise the method's cases (the boiler's neutral loops under Praveen Kumar's
+//! rule across the λ drag of the benchmark, |L(j∞)| rising toward 1 at its end; derivative
+//! filters; an ideal derivative; a PI; an analytic case) it simulates with the rule's step and
+//! with `h = θ/N` for N = 10, 5, 2, 1 ([`pidlab::sim::simulate_at_step`]), and prints for each:
+//! - the largest error of the samples y and u against a run at `h = θ/240` (scaled by the largest
+//!   |y|, |u| of the reference), and for the two loops with an exact solution (integrator under
+//!   P control: the method of steps; a first-order lag in open loop) against that solution;
+//! - the largest relative change of the integral metrics (IAE, ISE, ITAE, ISTE) and of the
+//!   metrics read from the node samples (peak error, overshoot, rise and settling time: their
+//!   resolution is the node spacing h/5, so they move with h even where the response does not);
+//! - the number of pieces (the stepping's and the metrics' cost is proportional to it) and the
+//!   median CPU time of one `analysis::simulate`-equivalent (response + metrics).
+
+#[path = "../tests/common/mod.rs"]
+mod common;
+#[path = "common/cpu.rs"]
+mod cpu;
+
+use pidlab::analysis::metrics::{windows, Metrics, Windows};
+use pidlab::model::controller::{Controller, Pid};
+use pidlab::model::plant::{Family, Plant};
+use pidlab::model::tf::Tf;
+use pidlab::rules::{self, Params};
+use pidlab::sim::{self, Response, Scenario};
+
+type Exact = Box<dyn Fn(f64) -> f64>;
+
+struct Case {
+    name: String,
+    plant: Plant,
+    c: Controller,
+    sc: Scenario,
+    exact_y: Option<Exact>,
+}
+
+fn maxabs(v: &[f64]) -> f64 {
+    v.iter().fold(0.0, |m: f64, x| m.max(x.abs()))
+}
+
+fn maxdiff(a: &[f64], b: &[f64]) -> f64 {
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f64::max)
+}
+
+fn rel(x: f64, y: f64) -> f64 {
+    if x == y {
+        0.0
+    } else {
+        (x - y).abs() / y.abs().max(1e-300)
+    }
+}
+
+/// (integrals, node-sampled) largest relative changes of one window's metrics.
+fn metric_diff(a: &Metrics, b: &Metrics) -> (f64, f64) {
+    let o = |x: Option<f64>, y: Option<f64>| match (x, y) {
+        (Some(x), Some(y)) => rel(x, y),
+        (None, None) => 0.0,
+        _ => f64::INFINITY,
+    };
+    let int = [
+        rel(a.iae, b.iae),
+        rel(a.ise, b.ise),
+        rel(a.itae, b.itae),
+        rel(a.iste, b.iste),
+    ];
+    let node = [
+        rel(a.peak_error, b.peak_error),
+        o(a.overshoot, b.overshoot),
+        o(a.rise_time, b.rise_time),
+        o(a.settling_time, b.settling_time),
+    ];
+    let m = |v: &[f64]| v.iter().fold(0.0, |m: f64, x| m.max(*x));
+    (m(&int), m(&node))
+}
+
+fn windows_diff(a: &Windows, b: &Windows) -> (f64, f64) {
+    let mut out = (0.0_f64, 0.0_f64);
+    for (x, y) in [(&a.servo, &b.servo), (&a.regulatory, &b.regulatory)] {
+        if let (Some(x), Some(y)) = (x, y) {
+            let (i, n) = metric_diff(x, y);
+            out = (out.0.max(i), out.1.max(n));
+        }
+    }
+    out
+}
+
+fn run(case: &Case, n: Option<usize>) -> (Response, Windows) {
+    let res = match n {
+        Some(n) => sim::simulate_at_step(&case.plant, &case.c, &case.sc, n),
+        None => sim::simulate(&case.plant, &case.c, &case.sc),
+    }
+    .expect("simulate");
+    let w = windows(&res, &case.sc);
+    (res, w)
+}
+
+/// Median CPU time (µs) of response + metrics over `runs` calls.
+fn cpu_us(case: &Case, n: Option<usize>, runs: usize) -> f64 {
+    let mut v: Vec<f64> = (0..runs)
+        .map(|_| {
+            let c0 = cpu::cpu_now();
+            std::hint::black_box(run(case, n));
+            (cpu::cpu_now() - c0) * 1e6
+        })
+        .collect();
+    v.sort_by(f64::total_cmp);
+    v[runs / 2]
+}
+
+fn main() {
+    let runs: usize = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(31)
+        .max(1);
+    let pid = |p: Pid| p.to_controller().expect("controller");
+    let boiler = Family::IpdtIr {
+        k: 0.547,
+        tau: 1.06,
+        tau_z: 0.418,
+        theta: 0.1,
+    }
+    .plant();
+    let bench = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
+    let mut cases = vec![];
+    for lambda in [1.8, 1.9, 1.96] {
+        let p = Params::default()
+            .with("lambda", lambda)
+            .with("epsilon", 0.2);
+        let c = rules::tune("praveen_kumar", &boiler, &p)
+            .expect("tune")
+            .controller;
+        cases.push(Case {
+            name: format!("boiler, praveen_kumar λ = {lambda} (neutral), the benchmark's scenario"),
+            plant: boiler.clone(),
+            c,
+            sc: bench.clone(),
+            exact_y: None,
+        });
+    }
+    cases.push(Case {
+        name: "boiler, Luyben PID, derivative filter N = 10, load −0.5".into(),
+        plant: boiler.clone(),
+        c: pid(Pid::ideal(1.61, 11.5, 1.15).filter_n(10.0)),
+        sc: Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, -0.5),
+        exact_y: None,
+    });
+    let sopdt = Family::Sopdt {
+        k: 1.3,
+        tau1: 2.1,
+        tau2: 0.45,
+        theta: 0.73,
+    }
+    .plant();
+    cases.push(Case {
+        name: "sopdt, PID N = 20, events off the step grid".into(),
+        plant: sopdt.clone(),
+        c: pid(Pid::ideal(1.2, 2.4, 0.5).filter_n(20.0).weights(0.7, 0.0)),
+        sc: Scenario::steps(25.0, 0.05, 0.37, 1.0, 12.13, 0.6),
+        exact_y: None,
+    });
+    cases.push(Case {
+        name: "sopdt, ideal derivative on y (neutral), dt = 0.5".into(),
+        plant: sopdt,
+        c: pid(Pid::ideal(0.9, 2.4, 0.3).weights(1.0, 0.0)),
+        sc: Scenario::steps(40.0, 0.5, 1.0, -2.0, 20.25, 0.3),
+        exact_y: None,
+    });
+    cases.push(Case {
+        name: "fopdt_ir, PI, negative steps".into(),
+        plant: Family::FopdtIr {
+            k: 2.0,
+            tau: 5.0,
+            tau_z: 0.8,
+            theta: 1.37,
+        }
+        .plant(),
+        c: pid(Pid::ideal(0.8, 5.5, 0.0)),
+        sc: Scenario::steps(60.0, 0.1, 0.0, -1.0, 30.0, -0.5),
+        exact_y: None,
+    });
+    cases.push(Case {
+        name: "integrator 0.8/s, θ = 0.7, P 0.9 (exact: method of steps)".into(),
+        plant: Family::Piptd { k: 0.8, theta: 0.7 }.plant(),
+        c: Pid::parallel(0.9, 0.0, 0.0).to_controller().expect("P"),
+        sc: Scenario::steps(12.0, 0.01, 0.0, 1.0, 0.0, 0.0),
+        exact_y: Some(Box::new(|t| common::integrator_p_exact(0.72, 0.7, t))),
+    });
+    cases.push(Case {
+        name: "2/(3s + 1), θ = 1.234, open loop, load at the input (exact)".into(),
+        plant: Plant::from_desc(&[2.0], &[3.0, 1.0], 1.234).expect("plant"),
+        c: Controller::new(Tf::gain(1.0), Tf::gain(0.0)).expect("controller"),
+        sc: Scenario::steps(20.0, 0.01, 0.5, 1.0, 10.0, -0.5),
+        exact_y: Some(Box::new(|t| {
+            let s = |t0: f64, a: f64| {
+                if t >= t0 {
+                    a * 2.0 * (1.0 - (-(t - t0) / 3.0).exp())
+                } else {
+                    0.0
+                }
+            };
+            s(0.5 + 1.234, 1.0) + s(10.0 + 1.234, -0.5)
+        })),
+    });
+    println!("Errors against h = θ/240 (y, u: largest |Δ| / largest |·|; metrics: largest relative change); CPU: median of {runs} runs of response + metrics.");
+    for case in &cases {
+        let (fine, fine_w) = run(case, Some(240));
+        let (ys, us) = (maxabs(&fine.y), maxabs(&fine.u));
+        println!();
+        println!("{}", case.name);
+        println!();
+        let exact_col = if case.exact_y.is_some() {
+            " y vs exact |"
+        } else {
+            ""
+        };
+        println!(
+            "| step | pieces | y |{exact_col} u | integrals | node-sampled metrics | CPU µs |"
+        );
+        println!(
+            "|---|---:|---:|{}---:|---:|---:|---:|",
+            if case.exact_y.is_some() { "---:|" } else { "" }
+        );
+        let theta = case.plant.delay;
+        for n in [None, Some(10), Some(5), Some(2), Some(1)] {
+            let (res, w) = run(case, n);
+            let dy = maxdiff(&res.y, &fine.y) / ys;
+            let du = maxdiff(&res.u, &fine.u) / us.max(1e-300);
+            let (di, dn) = windows_diff(&w, &fine_w);
+            let h = res.internal_step();
+            let label = match n {
+                None => format!("rule: θ/{:.0} = {h:.4}", theta / h),
+                Some(n) => format!("θ/{n} = {h:.4}"),
+            };
+            let exact = case.exact_y.as_ref().map_or(String::new(), |f| {
+                let e = res
+                    .t
+                    .iter()
+                    .zip(&res.y)
+                    .map(|(t, y)| (y - f(*t)).abs())
+                    .fold(0.0, f64::max);
+                format!(" {:.1e} |", e / ys)
+            });
+            println!(
+                "| {label} | {} | {dy:.1e} |{exact} {du:.1e} | {di:.1e} | {dn:.1e} | {:.0} |",
+                res.trajectory.n_pieces,
+                cpu_us(case, n, runs)
+            );
+        }
+    }
+}
