@@ -248,3 +248,36 @@ fn convergence_order_is_six() {
     eprintln!("errors {e:?}, observed orders {o1:.2} {o2:.2}");
     assert!(o1 > 5.0 && o2 > 5.0, "errors {e:?}, orders {o1} {o2}");
 }
+
+#[wasm_bindgen_test(unsupported = test)]
+fn a_step_longer_than_dt_samples_inside_its_pieces_exactly() {
+    // `simulate_at_step` (the step study's entry, examples/step_error.rs): with n = the rule's
+    // N it is `simulate` bit for bit; with h = θ/10 = 0.07 = 7·dt on the integrator under P
+    // control, the samples at k·dt (inside the pieces, from the piece polynomials) still match
+    // the method of steps. Tolerance 1e-12: the reference itself sums an alternating series
+    // whose terms reach e^{a·t} ≈ 5·10³ at t = 12 (a = 0.72), so its own round-off is ~5e-13;
+    // the step study measured 7.7e-14 here.
+    use pidlab::sim;
+    let plant = Family::Piptd { k: 0.8, theta: 0.7 }.plant();
+    let c = Pid::parallel(0.9, 0.0, 0.0).to_controller().unwrap();
+    let sc = Scenario::steps(12.0, 0.01, 0.0, 1.0, 0.0, 0.0);
+    let rule = sim::simulate(&plant, &c, &sc).unwrap();
+    assert!((rule.internal_step() - 0.01).abs() < 1e-15);
+    assert_eq!(sim::simulate_at_step(&plant, &c, &sc, 70).unwrap(), rule);
+    let coarse = sim::simulate_at_step(&plant, &c, &sc, 10).unwrap();
+    assert!((coarse.internal_step() - 0.07).abs() < 1e-15);
+    assert_eq!(coarse.t.len(), 1201);
+    let err = coarse
+        .t
+        .iter()
+        .zip(&coarse.y)
+        .map(|(t, y)| (y - integrator_p_exact(0.72, 0.7, *t)).abs())
+        .fold(0.0, f64::max);
+    assert!(err <= 1e-12, "max error {err:e}");
+    // the refusals name their field
+    let e = sim::simulate_at_step(&plant, &c, &sc, 0).unwrap_err();
+    assert!(e.to_string().starts_with("n: "), "{e}");
+    let no_delay = Family::Piptd { k: 0.8, theta: 0.0 }.plant();
+    let e = sim::simulate_at_step(&no_delay, &c, &sc, 10).unwrap_err();
+    assert!(e.to_string().starts_with("plant.delay: "), "{e}");
+}
