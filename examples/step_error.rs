@@ -9,8 +9,10 @@
 //!   |y|, |u| of the reference), and for the two loops with an exact solution (integrator under
 //!   P control: the method of steps; a first-order lag in open loop) against that solution;
 //! - the largest relative change of the integral metrics (IAE, ISE, ITAE, ISTE) and of the
-//!   metrics read from the node samples (peak error, overshoot, rise and settling time: their
-//!   resolution is the node spacing h/5, so they move with h even where the response does not);
+//!   metrics read from the node samples (peak error, rise and settling time; the overshoot, a
+//!   fraction of the step and often near 0, by its absolute change): their resolution is the
+//!   node spacing h/5, so they move with h even where the response does not (changes above
+//!   1e-3 are printed by name on stderr);
 //! - the number of pieces (the stepping's and the metrics' cost is proportional to it) and the
 //!   median CPU time of one `analysis::simulate`-equivalent (response + metrics).
 
@@ -55,7 +57,8 @@ fn rel(x: f64, y: f64) -> f64 {
     }
 }
 
-/// (integrals, node-sampled) largest relative changes of one window's metrics.
+/// (integrals, node-sampled) largest relative changes of one window's metrics; node-sampled
+/// changes above 1e-3 are printed by name.
 fn metric_diff(a: &Metrics, b: &Metrics) -> (f64, f64) {
     let o = |x: Option<f64>, y: Option<f64>| match (x, y) {
         (Some(x), Some(y)) => rel(x, y),
@@ -68,12 +71,34 @@ fn metric_diff(a: &Metrics, b: &Metrics) -> (f64, f64) {
         rel(a.itae, b.itae),
         rel(a.iste, b.iste),
     ];
+    // the overshoot is a fraction of the step already, often ~0: its change is absolute
     let node = [
         rel(a.peak_error, b.peak_error),
-        o(a.overshoot, b.overshoot),
+        match (a.overshoot, b.overshoot) {
+            (Some(x), Some(y)) => (x - y).abs(),
+            (None, None) => 0.0,
+            _ => f64::INFINITY,
+        },
         o(a.rise_time, b.rise_time),
         o(a.settling_time, b.settling_time),
     ];
+    let names = ["peak error", "overshoot", "rise time", "settling time"];
+    for (name, d) in names.iter().zip(&node) {
+        if *d > 1e-3 {
+            let pick = |m: &Metrics| match *name {
+                "peak error" => Some(m.peak_error),
+                "overshoot" => m.overshoot,
+                "rise time" => m.rise_time,
+                _ => m.settling_time,
+            };
+            eprintln!(
+                "  window at {}: {name} {:?} (reference {:?})",
+                b.t_start,
+                pick(a),
+                pick(b)
+            );
+        }
+    }
     let m = |v: &[f64]| v.iter().fold(0.0, |m: f64, x| m.max(*x));
     (m(&int), m(&node))
 }
@@ -207,7 +232,7 @@ fn main() {
             s(0.5 + 1.234, 1.0) + s(10.0 + 1.234, -0.5)
         })),
     });
-    println!("Errors against h = θ/240 (y, u: largest |Δ| / largest |·|; metrics: largest relative change); CPU: median of {runs} runs of response + metrics.");
+    println!("Errors against h = θ/240 (y, u: largest |Δ| / largest |·|; metrics: largest relative change, the overshoot's absolute); CPU: median of {runs} runs of response + metrics.");
     for case in &cases {
         let (fine, fine_w) = run(case, Some(240));
         let (ys, us) = (maxabs(&fine.y), maxabs(&fine.u));
