@@ -136,12 +136,19 @@ function classroomStep() {
 // What the results show: their input's render number (perf.shown) and whether newer is coming.
 const view = { busy: null };
 
-// An input whose answers are all known already (memoized: undo, redo, reset, a value shown
-// before) is applied in a task after the input's frame, not in the input's own task: that frame
-// shows the controls (a slider's thumb, a restored panel) at once, the next one the results
-// (four plots and the tables: 8–14 ms of the page's thread, which with the frame's own
-// rendering do not fit in one frame). An input that waits for the worker costs its task only
-// memo look-ups and a post; its answer is applied when it arrives.
+// The frame that shows an input comes first. Until it is painted, a complete result is not
+// applied: an input whose answers are all known already (memoized: undo, redo, reset, a value
+// shown before), or whose answers the worker sends back before that frame, is applied in a task
+// after it (applyLater). The input's frame then shows the controls at once (a slider's thumb, a
+// restored panel), a later one the results: four plots and the tables, 8–14 ms of the page's
+// thread, which with the frame's own rendering do not fit in one frame. An input that waits
+// for the worker costs its task only memo look-ups and a post.
+const inputFrame = { due: false };
+function markInput() {
+  if (inputFrame.due) return;
+  inputFrame.due = true;
+  afterPaint(() => { inputFrame.due = false; });
+}
 const later = { due: false };
 function applyLater() {
   if (later.due) return;
@@ -163,12 +170,12 @@ function setBusy(b) {
 function render(arrival = false) {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
-  if (!arrival) { W.forgetCrashes(); perf.inputs++; }
+  if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); }
   W.begin('render');
   try {
     if (!arrival) C.updateRanges();
     const r = compute();
-    if (!arrival && !r.pending) {
+    if (!r.pending && inputFrame.due) {
       setBusy(true);
       applyLater();
       return;
