@@ -14,6 +14,7 @@
 //   reset       "Reset to defaults" after a plant k move;
 //   undo, redo  the buttons, after a λ move (and an undo, for redo) committed to the history;
 //   preset      the preset select, its first eight presets in turn;
+//   family      the model (family) select, the families in turn (the custom one aside);
 //   custom-den, custom-num   typed text of the custom plant (the custom family chosen first).
 // `--detail` also prints, per step up to the painted probe, the trace's main-thread events by
 // name (thread time, nested events counted in each) and the JS functions of a sampled profile
@@ -34,7 +35,7 @@ const pos = argv.filter((a) => a !== '--detail');
 const dist = resolve((pos[0] && pos[0] !== '-' ? pos[0] : '') || process.env.PIDLAB_PAGE || join(root, 'dist', 'pidlab.html'));
 const N = Number(pos[1] || 12);
 const control = pos[2] || 'derivative';
-const CONTROLS = ['derivative', 'lambda', 'reset', 'undo', 'redo', 'preset', 'custom-den', 'custom-num'];
+const CONTROLS = ['derivative', 'lambda', 'reset', 'undo', 'redo', 'preset', 'family', 'custom-den', 'custom-num'];
 if (!CONTROLS.includes(control)) throw new Error('page-cpu: the control is one of ' + CONTROLS.join(', ') + ' (got ' + control + ')');
 const b = await launch({ requirePage: false });
 const page = await b.ctx.newPage();
@@ -54,6 +55,7 @@ const set = (sel, v, ev) => page.evaluate(async ([s, x, e]) => { window.__cpu.se
 const click = (sel) => page.evaluate(async (s) => { window.__cpu.click(s); await window.__pidlab.settled(); }, sel);
 if (control.startsWith('custom')) { await set('#family', 'custom', 'change'); await page.evaluate(() => window.__pidlab.settled(true)); }
 const presets = control === 'preset' ? await page.evaluate(() => [...document.querySelector('#preset').options].map((o) => o.value).filter(Boolean).slice(0, 8)) : [];
+const families = control === 'family' ? await page.evaluate(() => [...document.querySelector('#family').options].map((o) => o.value).filter((v) => v !== 'custom')) : [];
 const derivs = control === 'derivative' ? await page.evaluate(() => [...document.querySelector('#mp-derivative').options].map((o) => o.value)) : [];
 const TEXT = { 'custom-den': ['1.06, 1, 0', '0.9, 1, 0', '1.2, 1, 0', '1.0, 1, 0'], 'custom-num': ['-0.2286, 0.547', '-0.2, 0.547', '-0.25, 0.5', '-0.22, 0.6'] };
 // step i: what is done before it (not measured) and the input itself ([kind, selector, value, event])
@@ -72,6 +74,7 @@ const input = (i) => ({
   undo: ['click', '#undo'],
   redo: ['click', '#redo'],
   preset: ['set', '#preset', presets[i % presets.length], 'change'],
+  family: ['set', '#family', families[(i + 1) % families.length], 'change'],
   'custom-den': ['set', '#custom-den', TEXT['custom-den'][i % 4], 'input'],
   'custom-num': ['set', '#custom-num', TEXT['custom-num'][i % 4], 'input'],
 }[control]);
