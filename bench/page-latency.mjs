@@ -10,7 +10,8 @@
 // Per control, in a fresh page:
 //   step: one input at a time (a slider value, a select option, a checkbox, a typed number, a
 //         button), the next one once the previous input's result is on screen:
-//           frame   = input -> the next painted frame (the page stays responsive: ≤ one frame);
+//           frame   = input -> the next painted frame (the page stays responsive: ≤ one frame;
+//                     undo/redo: the first painted after the `popstate` that restores the state);
 //           result  = input -> the first painted frame showing the design for this input (its
 //                     readouts and response plots; the classroom panels, drawn in later frames,
 //                     aside);
@@ -70,7 +71,9 @@ const real = { actuator: { u_min: -1.5, u_max: 2.5, anti_windup: { kind: 'tracki
 // `st`: the page's state (hash); `hash`: extra hash; `setup`: [selector, kind, value] inputs
 // made once after the page opened (e.g. the custom family chosen); `before`/`beforeValues`: a
 // slider moved before each step, `beforeClick`: a button pressed before each step (after it),
-// `commit`: each of those committed to the history first.
+// `commit`: each of those committed to the history first; `popstate`: the input acts through
+// the browser's history (undo, redo: history.back() in the click, the state restored in the
+// `popstate` task that follows), so its frame is the first painted after that `popstate`.
 const CONTROLS = [
   { name: 'lambda', what: 'λ slider (Praveen Kumar, boiler)', st: state(pk(1.0)), sel: '#mp-lambda', kind: 'slider', range: [0.5, 1.8] },
   { name: 'epsilon', what: 'ε slider (Praveen Kumar)', st: state(pk(1.0)), sel: '#mp-epsilon', kind: 'slider', range: [0.05, 0.95] },
@@ -109,8 +112,8 @@ const CONTROLS = [
   { name: 'pin', what: 'classroom: pin the design (trade-off dots, Bode |S|)', st: state(pk(1.0)), sel: '#pin', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5] },
   { name: 'embed-choice', what: 'classroom: embed slider choice checkbox', st: state(pk(1.0)), sel: '#embed-choices input[type=checkbox]', kind: 'check', noRender: true },
   { name: 'reveal', what: 'classroom: instructor reveal button (Ms hidden)', st: state(pk(1.0)), hash: '&hide=ms', sel: 'button.reveal', kind: 'click', fresh: true, noRender: true },
-  { name: 'undo', what: 'undo button (after λ moves)', st: state(pk(1.0)), sel: '#undo', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], commit: true },
-  { name: 'redo', what: 'redo button (after a λ move and an undo)', st: state(pk(1.0)), sel: '#redo', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], beforeClick: '#undo', commit: true },
+  { name: 'undo', what: 'undo button (after λ moves)', st: state(pk(1.0)), sel: '#undo', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], commit: true, popstate: true },
+  { name: 'redo', what: 'redo button (after a λ move and an undo)', st: state(pk(1.0)), sel: '#redo', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], beforeClick: '#undo', commit: true, popstate: true },
   { name: 'reset-all', what: 'reset-to-defaults button (after a plant k move)', st: state(pk(1.0)), sel: '#reset-all', kind: 'click', before: '#fp-k', beforeValues: [0.4, 0.7] },
   { name: 'pin-remove', what: 'classroom: remove a pinned design', st: state(pk(1.0)), setup: [['#pin', 'click']], sel: '#pin-list button', kind: 'click', before: '#mp-lambda', beforeValues: [0.7, 1.5], beforeClick: '#pin' },
   { name: 'pin-example', what: 'preset: overlay the other settings of the example (Kaya 2020 ex. 2)', st: state(pk(1.0)), setup: [['#preset', 'select', 'kaya2020/ex2/irshad_ali']], sel: '#pin-example', kind: 'click' },
@@ -175,11 +178,15 @@ const HELPERS = () => {
   };
   window.__bench = {
     /** One input; its frame, result and settled latencies (ms). */
-    async step(sel, kind, value, noRender) {
+    async step(sel, kind, value, noRender, popstate) {
       const shown0 = P.perf.shown;
+      let popped = !popstate;
+      if (popstate) addEventListener('popstate', () => { popped = true; }, { once: true });
       const t0 = performance.now();
       act(sel, kind, value);
-      const frame = (await painted()) - t0;
+      let t1 = await painted();
+      while (!popped) t1 = await painted();
+      const frame = t1 - t0;
       // a result: a render for an input after this one's start has been applied (and, for the
       // async preset load, its input counted); settled: nothing more pending for it
       // (a control that changes no design, e.g. which sliders an embedding shows: its result is its frame)
@@ -251,12 +258,12 @@ async function run(c) {
       await prepare(o.page, c);
       Object.assign(out, { errors: [...out.errors, ...o.errors] });
       await o.page.evaluate(HELPERS);
-      const r = await o.page.evaluate(([s, k, v, nr]) => window.__bench.step(s, k, v, nr), [c.sel, c.kind, value(i, steps), !!c.noRender]);
+      const r = await o.page.evaluate(([s, k, v, nr, ps]) => window.__bench.step(s, k, v, nr, ps), [c.sel, c.kind, value(i, steps), !!c.noRender, !!c.popstate]);
       for (const k of Object.keys(out.step)) out.step[k].push(r[k]);
       await o.page.close();
       continue;
     }
-    const r = await page.evaluate(([s, k, v, nr]) => window.__bench.step(s, k, v, nr), [c.sel, c.kind, value(i, steps), !!c.noRender]);
+    const r = await page.evaluate(([s, k, v, nr, ps]) => window.__bench.step(s, k, v, nr, ps), [c.sel, c.kind, value(i, steps), !!c.noRender, !!c.popstate]);
     for (const k of Object.keys(out.step)) out.step[k].push(r[k]);
   }
   if (c.kind === 'slider' && dragN > 0 && !page.isClosed()) {

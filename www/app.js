@@ -31,17 +31,35 @@ import * as Hi from './history.js';
 import * as XD from './export-data.js';
 import * as RL from './realloop.js';
 
-/** Builds every control from the state. */
+/**
+ * Shows the state in every control. A panel whose rows have the shapes it shows already (the
+ * same plant family, method, intervals) keeps its elements and takes the new values in place
+ * (controls.js `place`); the others are built anew. The keyboard focus stays on its control
+ * (kept, or found again by id when its panel was built anew).
+ */
 function buildAll() {
+  const focused = document.activeElement && document.activeElement !== document.body ? document.activeElement.id : '';
   C.buildFamily();
   C.buildMethod();
   C.buildPert();
   C.buildScenario();
   RL.buildReal();
   Pr.showPresetInfo();
-  Sh.buildEmbedChoices();
+  embedChoices();
   Sh.applyEmbed();
   I.apply();
+  if (focused && document.activeElement && document.activeElement.id !== focused && $(focused)) $(focused).focus();
+}
+
+// The embed choices (a checkbox per control row) are built again only when the rows or the
+// chosen keys changed: the rows kept in place need none.
+let embedKey = '';
+function embedChoices() {
+  const rows = [...document.querySelectorAll('.controls .row[data-key]')].map((r) => { const l = r.querySelector('label'); return [r.getAttribute('data-key'), l ? l.textContent : '']; });
+  const key = JSON.stringify([rows, store.state.show]);
+  if (key === embedKey && $('embed-choices').childElementCount === rows.length) return;
+  embedKey = key;
+  Sh.buildEmbedChoices();
 }
 
 /** The banners of calls that crashed the module (a trap) since the last render. */
@@ -118,6 +136,29 @@ function classroomStep() {
 // What the results show: their input's render number (perf.shown) and whether newer is coming.
 const view = { busy: null };
 
+// The frame that shows an input comes first. Until it is painted, a complete result is not
+// applied: an input whose answers are all known already (memoized: undo, redo, reset, a value
+// shown before), or whose answers the worker sends back before that frame, is applied in a task
+// after it (applyLater). The input's frame then shows the controls at once (a slider's thumb, a
+// restored panel), a later one the results: four plots and the tables, 8–14 ms of the page's
+// thread, which with the frame's own rendering do not fit in one frame. An input that waits
+// for the worker costs its task only memo look-ups and a post.
+const inputFrame = { due: false };
+function markInput() {
+  if (inputFrame.due) return;
+  inputFrame.due = true;
+  afterPaint(() => { inputFrame.due = false; });
+}
+const later = { due: false };
+function applyLater() {
+  if (later.due) return;
+  later.due = true;
+  afterPaint(() => {
+    later.due = false;
+    changed(false, true);
+  });
+}
+
 /** Marks the readouts and plots busy (aria-busy) while the worker computes the latest input. */
 function setBusy(b) {
   if (view.busy === b) return;
@@ -129,11 +170,16 @@ function setBusy(b) {
 function render(arrival = false) {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
-  if (!arrival) { W.forgetCrashes(); perf.inputs++; }
+  if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); }
   W.begin('render');
   try {
     if (!arrival) C.updateRanges();
     const r = compute();
+    if (!r.pending && inputFrame.due) {
+      setBusy(true);
+      applyLater();
+      return;
+    }
     setBusy(r.pending);
     if (r.pending) {
       // the last results stay on screen, marked busy; the answers render again
@@ -198,7 +244,7 @@ function wire() {
     st.params = {};
     st.target = null;
     C.buildMethod();
-    Sh.buildEmbedChoices();
+    embedChoices();
     Sh.applyEmbed();
     changed();
   });
@@ -239,7 +285,9 @@ function wire() {
   $('reset-all').addEventListener('click', () => {
     store.state = { ...S.defaultState(), pins: store.state.pins };
     restored();
-    Hi.commit();
+    // (after the frame: pushState lays out a page whose layout the reset has made dirty,
+    // 10–40 ms in the input's task at load 12)
+    afterPaint(Hi.commit);
   });
   watchSizes(() => changed(true));
 }
@@ -248,7 +296,7 @@ function wire() {
  *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep; `panels` false:
  *  the readouts and response plots only, the classroom panels drawn in later frames aside). */
 function isCurrent(all = false, sweep = true, panels = true) {
-  const waiting = (panels && classroom.scheduled) || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  const waiting = (panels && classroom.scheduled) || later.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 
@@ -348,7 +396,7 @@ async function main() {
     C.rangesArrived();
     if (!store.hold) { try { compute(); } catch { /* (the render reports it) */ } }
   });
-  C.onMethodRebuilt(() => { Sh.buildEmbedChoices(); Sh.applyEmbed(); I.apply(); });
+  C.onMethodRebuilt(() => { embedChoices(); Sh.applyEmbed(); I.apply(); });
   onSweepProgress(() => { if (store.last) drawTradeoff(store.last); });
   // A restart that had to wait: say so; the next change computes (not the input that trapped).
   E.onRestart(() => showBanners([{ kind: 'warn', title: 'The computation module has been restarted', text: 'Change any input to compute again.' }]));

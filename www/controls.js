@@ -3,7 +3,7 @@
 // store and calls changed(); a change the other panels must show calls rebuild().
 import * as S from './state.js';
 import * as W from './worker-client.js';
-import { $, el } from './dom.js';
+import { $, el, setText } from './dom.js';
 import * as Er from './errors.js';
 import { admissible, PENDING } from './admissible.js';
 import { store, changed, rebuild, familyInfo, methodInfo } from './store.js';
@@ -124,6 +124,16 @@ export function slider({ id, key, label, unit, min, max, step, value, onInput, d
     num.value = String(Number(v.toPrecision(6)));
   };
   row.setDisabled = (d) => { range.disabled = d; num.disabled = d; };
+  /** The row as slider() would build it anew with `v` (the panel kept in place: undo, a
+   *  preset, reset): the value exactly in the number box, the field's messages cleared, a value
+   *  outside the interval said beside the field. */
+  row.reset = (v, d = false) => {
+    row.setDisabled(d);
+    range.value = String(v);
+    num.value = String(v);
+    Er.forget(num.id);
+    Er.setLocal(num, !d && Number.isFinite(v) && !Er.inRange(v, iv) ? check(v).replace(/; not applied\.$/, '; ' + label + ' = ' + Er.short(v) + ' is outside.') : '');
+  };
   /** New ends (the plant changed): the slider spans them; a value now outside is marked. */
   row.setRange = (x) => {
     const n = makeIv(x);
@@ -137,7 +147,12 @@ export function slider({ id, key, label, unit, min, max, step, value, onInput, d
       Er.setLocal(num, bad ? bad.replace(/; not applied\.$/, ' for this plant; ' + label + ' = ' + Er.short(v) + ' is outside.') : '');
     }
     if (noteP && x.note !== undefined) noteP.textContent = x.note;
+    // (what a panel kept in place compares with: the ends the slider now spans)
+    Object.assign(row.spec, { min: x.min, max: x.max, minOpen: !!x.minOpen, maxOpen: !!x.maxOpen, scale: x.scale });
+    if (noteP && x.note !== undefined) row.spec.note = x.note;
   };
+  /** What the row was built from, but its value and disabled state (see `place`). */
+  row.spec = { id: rid, key, label, unit, min, max, step, minOpen: !!minOpen, maxOpen: !!maxOpen, scale, note };
   row.interval = () => iv;
   // a value from a link or a preset outside the interval: kept, and said beside the field
   if (!disabled && Number.isFinite(value) && !Er.inRange(value, iv)) Er.setLocal(num, check(value).replace(/; not applied\.$/, '; ' + label + ' = ' + Er.short(value) + ' is outside.'));
@@ -152,6 +167,58 @@ function select({ id, key, label, options, value, onChange }) {
   return el('div', { class: 'row', 'data-key': key || id }, el('label', { for: id, text: label }), s);
 }
 
+/** A select row for `place`: built by select(a), or set to a.value in place. */
+const selectItem = (a) => ({
+  shape: JSON.stringify(['select', a.id, a.key, a.label, a.options]),
+  make: () => select(a),
+  update: (row) => { row.querySelector('select').value = a.value; },
+});
+
+/** The shape of a slider row: every argument of slider() but its value, disabled state and
+ *  listener (two rows of the same shape differ only in what `row.reset` sets). */
+const sliderShape = (a, extra = '') => JSON.stringify([a.id, a.key, a.label, a.unit, a.min, a.max, a.step, !!a.minOpen, !!a.maxOpen, a.scale, a.note]) + extra;
+
+/**
+ * Puts the rows `items` ({ shape, make(), update(row) }) in `box`: when the box already holds
+ * rows of the same shapes, in the same order, each is updated in place (its elements, focus and
+ * listeners kept: `update` sets the values); otherwise the rows are built anew. Returns whether
+ * they were built anew.
+ */
+function place(box, items) {
+  const rows = [...box.children];
+  if (rows.length === items.length && rows.every((r, i) => rowShape(r) === items[i].shape)) {
+    items.forEach((it, i) => it.update(rows[i]));
+    return false;
+  }
+  box.replaceChildren(...items.map((it) => {
+    const r = it.make();
+    r.shape = it.shape;
+    return r;
+  }));
+  return true;
+}
+
+/** A slider row for `place`: built by slider(a), or reset to a.value (a.disabled) in place;
+ *  `extra`: what the caller adds to the row (help, an "automatic" box) as part of its shape. */
+function sliderItem(a, extra = '', decorate = null) {
+  return {
+    shape: sliderShape(a, extra),
+    make: () => {
+      const row = slider(a);
+      row.extra = extra;
+      if (decorate) decorate(row, true);
+      return row;
+    },
+    update: (row) => {
+      row.reset(a.value, !!a.disabled);
+      if (decorate) decorate(row, false);
+    },
+  };
+}
+
+/** The shape a slider row has now (its ends may have moved since it was built: setRange). */
+const rowShape = (row) => (row.spec ? sliderShape(row.spec, row.extra || '') : row.shape);
+
 export function buildFamily() {
   const { state } = store;
   const fam = $('family');
@@ -163,30 +230,29 @@ export function buildFamily() {
   const p = state.plant;
   fam.value = p.family || 'custom';
   const box = $('family-params');
-  box.replaceChildren();
   $('custom-box').hidden = !!p.family;
   if (p.family) {
     // The sliders the module declares for the family (name, label, unit, range).
     const f = familyInfo(p.family);
-    $('family-formula').textContent = f.formula;
-    for (const m of f.params) {
+    setText($('family-formula'), f.formula);
+    place(box, f.params.map((m) => {
       const n = m.name;
-      box.append(slider({
+      return sliderItem({
         // the declared range, widened at build only to hold a value the plant already has (a
         // paper's plant): typing outside it is refused
         id: 'fp-' + n, key: 'fp-' + n, label: m.label, unit: m.unit, min: Math.min(m.min, p[n]), max: Math.max(m.max, p[n]), value: p[n],
         onInput: (v) => { store.state.plant[n] = v; changed(); },
-      }));
-    }
+      });
+    }));
   } else {
-    $('family-formula').textContent = 'P(s) = num(s)/den(s)·e^(−θs)';
+    box.replaceChildren();
+    setText($('family-formula'), 'P(s) = num(s)/den(s)·e^(−θs)');
     $('custom-num').value = p.num.join(', ');
     $('custom-den').value = p.den.join(', ');
-    const row = $('custom-delay-row');
-    row.replaceChildren(slider({
+    place($('custom-delay-row'), [sliderItem({
       id: 'fp-delay', key: 'fp-delay', label: 'Dead time θ', unit: 'time units', min: 0, max: Math.max(10, p.delay), value: p.delay,
       onInput: (v) => { store.state.plant.delay = v; changed(); },
-    }));
+    })]);
   }
 }
 
@@ -321,10 +387,15 @@ function presetValue(method, name) {
 export function buildMethod() {
   const { state } = store;
   const sel = $('method');
-  sel.replaceChildren();
   const list = applicableMethods();
-  for (const m of list) sel.append(el('option', { value: m.id, text: m.title }));
-  if (state.literal) sel.append(el('option', { value: '__literal', text: 'Literal controller: ' + (state.literal.title || 'from preset') }));
+  // the options are built again only when they change (another family, another literal)
+  const opts = list.map((m) => [m.id, m.title]);
+  if (state.literal) opts.push(['__literal', 'Literal controller: ' + (state.literal.title || 'from preset')]);
+  const optKey = JSON.stringify(opts);
+  if (sel.optKey !== optKey) {
+    sel.replaceChildren(...opts.map(([value, text]) => el('option', { value, text })));
+    sel.optKey = optKey;
+  }
   if (!list.some((m) => m.id === state.method) && state.method !== '__literal') {
     state.method = list.length ? list[0].id : state.literal ? '__literal' : null;
     state.params = {};
@@ -332,19 +403,21 @@ export function buildMethod() {
   if (state.method === '__literal' && !state.literal) state.method = list.length ? list[0].id : null;
   sel.value = state.method || '';
   sel.disabled = sel.options.length === 0;
-  if (sel.options.length === 0) sel.append(el('option', { value: '', text: 'no method applies to this plant: load a preset' }));
+  if (sel.options.length === 0) {
+    sel.append(el('option', { value: '', text: 'no method applies to this plant: load a preset' }));
+    sel.optKey = '';
+  }
 
   const info = methodInfo(state.method);
-  $('method-structure').textContent = info ? info.structure : state.method === '__literal' ? 'Literal (Cr, Cy)' + (state.literal && state.literal.model_loop ? ' with a set-point model loop' : '') + ' of a comparison setting' : '';
-  $('method-cite').textContent = info ? info.citation : '';
+  setText($('method-structure'), info ? info.structure : state.method === '__literal' ? 'Literal (Cr, Cy)' + (state.literal && state.literal.model_loop ? ' with a set-point model loop' : '') + ' of a comparison setting' : '');
+  setText($('method-cite'), info ? info.citation : '');
   const box = $('method-params');
-  box.replaceChildren();
   const tr = $('target-row');
   const names = info ? info.params.map((p) => p.name) : [];
   // a target Ms is offered where the rule declares target_ms (it then solves λ for it)
   const hasTarget = names.includes('target_ms');
   tr.hidden = !hasTarget;
-  if (!info) return;
+  if (!info) { box.replaceChildren(); return; }
   // the admissible interval and suggested value of each continuous parameter for this plant
   const key = JSON.stringify([info.id, state.plant]);
   if (!provisional || provisional.key !== key) W.begin('ranges');
@@ -383,18 +456,20 @@ export function buildMethod() {
   const tm = info.params.find((p) => p.name === 'target_ms');
   const tma = adm && adm.target_ms;
   const [tmMin, tmMax] = tma ? [tma.min, tma.max] : tm ? [tm.min, tm.max] : [1.05, 4];
-  $('target-slider').replaceChildren(slider({
+  place($('target-slider'), [sliderItem({
     id: 'mp-target_ms', key: 'mp-target_ms', label: 'Target Ms', min: tmMin, max: tmMax, step: '0.01', value: state.target ?? 1.6,
     disabled: state.target === null,
     onInput: (v) => { store.state.target = v; changed(); },
-  }));
+  })]);
+  // the rows of the method's parameters (kept in place when their shapes are those shown)
+  const items = [];
   for (const p of info.params) {
     if (p.name === 'target_ms') continue;
     let v = state.params[p.name];
     if (p.choices && p.choices.length) {
       if (!p.choices.includes(v)) v = typeof p.default === 'string' ? p.default : p.choices[0];
       state.params[p.name] = v;
-      box.append(select({
+      items.push(selectItem({
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, options: p.choices, value: v,
         onChange: (x) => { store.state.params[p.name] = x; changed(); },
       }));
@@ -405,7 +480,7 @@ export function buildMethod() {
       else for (let k = p.min; k <= p.max; k++) opts.push(String(k));
       if (typeof v !== 'number' || !opts.includes(String(v))) v = typeof p.default === 'number' ? p.default : Number(opts[0]);
       state.params[p.name] = v;
-      box.append(select({
+      items.push(selectItem({
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, options: opts, value: String(v),
         onChange: (x) => { store.state.params[p.name] = Number(x); changed(); },
       }));
@@ -414,11 +489,18 @@ export function buildMethod() {
       const a = adm[p.name];
       state.params[p.name] = a.min;
       const id = 'mp-' + p.name + '-n';
-      Er.forget(id);
-      box.append(el('div', { class: 'row', 'data-key': 'mp-' + p.name, 'data-label': p.label },
-        el('label', { for: id, text: p.label }),
-        el('input', { type: 'number', id, value: String(a.min), readonly: true }),
-        el('p', { class: 'help adm-note', text: 'Only ' + p.label.split(' ')[0] + ' = ' + Er.short(a.min) + ' works on this plant' + (a.note ? ': ' + a.note : '.') })));
+      const text = 'Only ' + p.label.split(' ')[0] + ' = ' + Er.short(a.min) + ' works on this plant' + (a.note ? ': ' + a.note : '.');
+      items.push({
+        shape: JSON.stringify(['point', id, p.label, a.min, text]),
+        make: () => {
+          Er.forget(id);
+          return el('div', { class: 'row', 'data-key': 'mp-' + p.name, 'data-label': p.label },
+            el('label', { for: id, text: p.label }),
+            el('input', { type: 'number', id, value: String(a.min), readonly: true }),
+            el('p', { class: 'help adm-note', text }));
+        },
+        update: () => { Er.forget(id); Er.setLocal($(id), ''); },
+      });
     } else {
       // the interval admissible for this plant, else the range methods() declares
       const a = adm ? adm[p.name] : null;
@@ -435,27 +517,31 @@ export function buildMethod() {
         if (!a && !auto && (waiting() || stand[p.name])) stand[p.name] = v;
       }
       if (!auto && (p.name !== 'lambda' || state.target === null)) state.params[p.name] = v;
-      const row = slider({
+      // the "automatic" box and the help are part of the row's shape
+      items.push(sliderItem({
         id: 'mp-' + p.name, key: 'mp-' + p.name, label: p.label, min, max, value: v,
         minOpen: iv.minOpen, maxOpen: iv.maxOpen, scale: iv.scale, note: a && a.note ? a.note : undefined,
         disabled: (p.name === 'lambda' && state.target !== null) || auto,
         onInput: (x) => { store.state.params[p.name] = x; changed(); },
-      });
-      if (autoable) {
-        const cb = el('input', { type: 'checkbox', id: 'mp-' + p.name + '-auto', checked: auto });
-        cb.addEventListener('change', () => {
-          if (cb.checked) delete store.state.params[p.name];
-          else store.state.params[p.name] = Number($('mp-' + p.name).value);
-          row.setDisabled(cb.checked);
-          changed();
-        });
-        row.append(el('div', { class: 'check' }, cb, el('label', { for: cb.id, class: 'inline', text: 'automatic (the rule chooses)' })));
-        row.autoParam = p.name;
-      }
-      if (p.help) row.append(el('p', { class: 'help', text: p.help }));
-      box.append(row);
+      }, JSON.stringify([autoable, p.help || '']), (row, fresh) => {
+        if (autoable && fresh) {
+          const cb = el('input', { type: 'checkbox', id: 'mp-' + p.name + '-auto', checked: auto });
+          cb.addEventListener('change', () => {
+            if (cb.checked) delete store.state.params[p.name];
+            else store.state.params[p.name] = Number($('mp-' + p.name).value);
+            row.setDisabled(cb.checked);
+            changed();
+          });
+          row.append(el('div', { class: 'check' }, cb, el('label', { for: cb.id, class: 'inline', text: 'automatic (the rule chooses)' })));
+          row.autoParam = p.name;
+        } else if (autoable) {
+          $('mp-' + p.name + '-auto').checked = auto;
+        }
+        if (p.help && fresh) row.append(el('p', { class: 'help', text: p.help }));
+      }));
     }
   }
+  place(box, items);
   recordStandIns(info, stand, tuneInput);
 }
 
@@ -469,41 +555,45 @@ function recordStandIns(info, stand, tuneInput) {
 }
 
 export function buildPert() {
-  const box = $('pert-params');
-  box.replaceChildren();
-  for (const [n, m] of Object.entries(S.PERTURB)) {
-    box.append(slider({
-      id: 'pt-' + n, key: 'pt-' + n, label: m.label, unit: '%', min: m.min, max: m.max, step: '1', value: store.state.pert[n],
-      onInput: (v) => { store.state.pert[n] = Math.max(-50, Math.min(50, v)); changed(); },
-    }));
-  }
+  place($('pert-params'), Object.entries(S.PERTURB).map(([n, m]) => sliderItem({
+    id: 'pt-' + n, key: 'pt-' + n, label: m.label, unit: '%', min: m.min, max: m.max, step: '1', value: store.state.pert[n],
+    onInput: (v) => { store.state.pert[n] = Math.max(-50, Math.min(50, v)); changed(); },
+  })));
 }
 
 export function buildScenario() {
-  const box = $('scenario-params');
-  box.replaceChildren();
-  const sc = store.state.scenario;
+  // (the scenario of the state at the time of the input: a restored state is a new object)
+  const sc = () => store.state.scenario;
   // `check(v)`: '' when v is allowed, else what is allowed (the value is then not applied and
   // the message stays beside the field until it is edited)
-  const num = (id, label, get, set, check) => {
-    Er.forget(id);
-    const inp = el('input', { type: 'number', id, step: 'any', value: String(get()) });
-    inp.addEventListener('input', () => {
-      const v = Number(inp.value);
-      const bad = inp.value.trim() === '' || !Number.isFinite(v) ? 'type a number' : check ? check(v) : '';
-      Er.setLocal(inp, bad ? label + ': ' + bad + '; not applied.' : '');
-      if (!bad) { set(v); changed(); }
-    });
-    return el('div', { class: 'row small', 'data-key': id, 'data-label': label }, el('label', { for: id }, label, el('span', { class: 'unit', text: id === 'sc-sp_size' || id === 'sc-d_size' ? '' : ' [time units]' })), inp);
-  };
+  const num = (id, label, get, set, check) => ({
+    shape: JSON.stringify(['number', id, label]),
+    make: () => {
+      Er.forget(id);
+      const inp = el('input', { type: 'number', id, step: 'any', value: String(get()) });
+      inp.addEventListener('input', () => {
+        const v = Number(inp.value);
+        const bad = inp.value.trim() === '' || !Number.isFinite(v) ? 'type a number' : check ? check(v) : '';
+        Er.setLocal(inp, bad ? label + ': ' + bad + '; not applied.' : '');
+        if (!bad) { set(v); changed(); }
+      });
+      return el('div', { class: 'row small', 'data-key': id, 'data-label': label }, el('label', { for: id }, label, el('span', { class: 'unit', text: id === 'sc-sp_size' || id === 'sc-d_size' ? '' : ' [time units]' })), inp);
+    },
+    update: () => {
+      const inp = $(id);
+      inp.value = String(get());
+      Er.forget(id);
+      Er.setLocal(inp, '');
+    },
+  });
   const pos = (v) => (v > 0 ? '' : 'must be greater than 0');
   const nonneg = (v) => (v >= 0 ? '' : 'must be 0 or later');
-  box.append(
-    num('sc-t_end', 'End time', () => sc.t_end, (v) => { sc.t_end = v; }, pos),
-    num('sc-dt', 'Sample step dt', () => sc.dt, (v) => { sc.dt = v; }, (v) => pos(v) || (v >= sc.t_end ? 'must be shorter than the end time (' + Er.short(sc.t_end) + ')' : '')),
-    num('sc-sp_time', 'Set-point step at', () => sc.setpoint.time, (v) => { sc.setpoint.time = v; }, nonneg),
-    num('sc-sp_size', 'Set-point step size', () => sc.setpoint.size, (v) => { sc.setpoint.size = v; }),
-    num('sc-d_time', 'Load step at', () => sc.disturbance.time, (v) => { sc.disturbance.time = v; }, nonneg),
-    num('sc-d_size', 'Load step size (plant input)', () => sc.disturbance.size, (v) => { sc.disturbance.size = v; }),
-  );
+  place($('scenario-params'), [
+    num('sc-t_end', 'End time', () => sc().t_end, (v) => { sc().t_end = v; }, pos),
+    num('sc-dt', 'Sample step dt', () => sc().dt, (v) => { sc().dt = v; }, (v) => pos(v) || (v >= sc().t_end ? 'must be shorter than the end time (' + Er.short(sc().t_end) + ')' : '')),
+    num('sc-sp_time', 'Set-point step at', () => sc().setpoint.time, (v) => { sc().setpoint.time = v; }, nonneg),
+    num('sc-sp_size', 'Set-point step size', () => sc().setpoint.size, (v) => { sc().setpoint.size = v; }),
+    num('sc-d_time', 'Load step at', () => sc().disturbance.time, (v) => { sc().disturbance.time = v; }, nonneg),
+    num('sc-d_size', 'Load step size (plant input)', () => sc().disturbance.size, (v) => { sc().disturbance.size = v; }),
+  ]);
 }

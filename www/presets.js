@@ -2,7 +2,7 @@
 // one into the state, and pinning the other settings of its example (the paper's figure).
 import * as S from './state.js';
 import * as W from './worker-client.js';
-import { $, el } from './dom.js';
+import { $, el, setText, setHidden } from './dom.js';
 import { store, changed, rebuild } from './store.js';
 import * as P from './pins.js';
 import { simInput } from './realloop.js';
@@ -23,11 +23,12 @@ export function showPresetInfo() {
   const presets = store.presets;
   const p = presets.find((x) => x.id === store.state.preset);
   $('preset').value = p ? p.id : '';
-  $('preset-info').hidden = !p;
-  $('preset-desc').textContent = p ? p.description + ' ' : '';
-  $('preset-cite').textContent = p ? p.citation : '';
+  // (written only when they change: an unchanged text costs no style recalculation or layout)
+  setHidden($('preset-info'), !p);
+  setText($('preset-desc'), p ? p.description + ' ' : '');
+  setText($('preset-cite'), p ? p.citation : '');
   const prefix = p ? String(p.id).split('/').slice(0, -1).join('/') + '/' : null;
-  $('pin-example').hidden = !p || !presets.some((x) => x.id !== p.id && prefix.length > 1 && String(x.id).startsWith(prefix));
+  setHidden($('pin-example'), !p || !presets.some((x) => x.id !== p.id && prefix.length > 1 && String(x.id).startsWith(prefix)));
 }
 
 /** Loads a preset into the state. A rule applied to a reduced model is tuned by the worker
