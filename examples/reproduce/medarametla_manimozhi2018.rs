@@ -939,17 +939,9 @@ fn ajmeri_filtered(
     n_sp: Option<f64>,
     n_d: Option<f64>,
 ) -> pidlab::error::Result<pidlab::model::controller::Controller> {
-    use pidlab::model::controller::{Controller, ModelLoop};
-    use pidlab::model::tf::Tf;
-    let (kp, kd) = (a.sp_kp, a.sp_kd);
-    let (p, i, d) = (a.dist_kp, a.dist_ki, a.dist_kd);
-    let t1 = n_sp.map_or(0.0, |n| kd / kp / n);
-    let t2 = n_d.map_or(0.0, |n| d / p / n);
-    // k_p + k_i/s + k_d s/(t₂ s + 1) over s(t₂ s + 1); the set-point PD on y_m likewise.
-    let cd = Tf::parse_desc(&[p * t2 + d, p + i * t2, i], &[t2, 1.0, 0.0])?;
-    let cy1 = Tf::parse_desc(&[kp * t1 + kd, kp], &[t1, 1.0])?;
-    let ml = ModelLoop::new(model.clone(), Tf::gain(kp), cy1)?;
-    Ok(Controller::new(Tf::gain(0.0), cd)?.with_model_loop(ml))
+    let t_sp = n_sp.map_or(0.0, |n| a.sp_kd / a.sp_kp / n);
+    let t_d = n_d.map_or(0.0, |n| a.dist_kd / a.dist_kp / n);
+    a.controller_filters(model, t_sp, t_d)
 }
 
 /// The eight columns of an Ajmeri & Ali row with controller `c` on `plant` (TVs on the table's
