@@ -877,6 +877,94 @@ fn ajmeri_ali_table4_nominal_rows() {
     }
 }
 
+/// Ajmeri & Ali's derivative filters (`controller_filters`, a study option): (a) the set-point
+/// PD on the model output is `k_p + k_d s/(t_sp s + 1)` and the disturbance PID
+/// `k_p + k_i/s + k_d s/(t_d s + 1)` (each checked against the expression built by hand at five
+/// frequencies, to 1e-12 relative), zero time constants give the default controller exactly,
+/// `controller_filtered` is the `t_sp = 0` case, and a negative time constant is an error naming
+/// it; (b) Example 3 with both derivatives filtered at `T_d/10` reproduces the Table 4 and 5 cells
+/// the ideal derivatives miss by 7-26 % (servo TV of u, servo t_s, load TV of u + d, load peak,
+/// on the paper's 0.1 s samples): the servo TV and t_s of Table 4 to half a unit of their last
+/// printed digit, the others within the measured gaps rounded up (0.05-0.37 %, bounds 0.2 % and
+/// 0.5 %), far inside what the ideal derivatives miss by.
+#[wasm_bindgen_test(unsupported = test)]
+fn ajmeri_ali_derivative_filters() {
+    use mm::studies::{self, TvSignal};
+    use mm::{Condition, Method};
+    let e = example("ex3");
+    let a = mm::ajmeri_ali()
+        .into_iter()
+        .find(|a| a.example == "ex3")
+        .unwrap();
+    let model = e.family.plant();
+    let (t_sp, t_d) = (a.sp_kd / a.sp_kp / 10.0, a.dist_kd / a.dist_kp / 10.0);
+    let c = a.controller_filters(&model, t_sp, t_d).unwrap();
+    let ml = c.model_loop.as_ref().unwrap();
+    for w in [1e-3, 1e-2, 0.1, 1.0, 10.0] {
+        let s = C64::new(0.0, w);
+        let want_d = s.inv() * a.dist_ki + a.dist_kp + s * a.dist_kd / (s * t_d + 1.0);
+        let got_d = c.cy.eval_jw(w);
+        assert!(
+            (got_d - want_d).norm() <= 1e-12 * want_d.norm(),
+            "Cy at ω = {w}"
+        );
+        let want_sp = s * a.sp_kd / (s * t_sp + 1.0) + a.sp_kp;
+        let got_sp = ml.cy.eval_jw(w);
+        assert!(
+            (got_sp - want_sp).norm() <= 1e-12 * want_sp.norm(),
+            "model-loop Cy at ω = {w}"
+        );
+    }
+    assert_eq!(
+        a.controller_filters(&model, 0.0, 0.0).unwrap(),
+        a.controller(&model).unwrap()
+    );
+    assert_eq!(
+        a.controller_filters(&model, 0.0, 0.01).unwrap(),
+        a.controller_filtered(&model, 0.01).unwrap()
+    );
+    assert_eq!(
+        a.controller_filters(&model, -1.0, 0.0).unwrap_err().path,
+        "t_sp"
+    );
+    assert_eq!(
+        a.controller_filters(&model, 0.0, -1.0).unwrap_err().path,
+        "t_d"
+    );
+
+    // (table, printed servo TV, servo t_s, load TV, load peak; bounds in the doc comment)
+    for (cond, tv_s, ts_s, tv_r, peak) in [
+        (Condition::Nominal, 8.38, 13.1, 2.8342, 0.259),
+        (Condition::Perturbed, 12.05, 18.88, 3.826, 0.289),
+    ] {
+        let (plant, _, _) = studies::row_loop(&e, Method::AjmeriAli, cond).unwrap();
+        let r = studies::performance_sim(&plant, &c, &e, true, 0.01).unwrap();
+        let (td, te) = (e.d_time, 2.0 * e.d_time);
+        let servo_tv = studies::tv_on_grid(&r, 0.0, td, 0.1, TvSignal::U);
+        let load_tv = studies::tv_on_grid(&r, td, te, 0.1, TvSignal::PlantInput);
+        let s = r.metrics.servo.clone().unwrap();
+        let g = r.metrics.regulatory.clone().unwrap();
+        let ts = s.settling_time.unwrap();
+        let rel = |x: f64, p: f64| (x - p).abs() / p;
+        if cond == Condition::Nominal {
+            assert!(
+                (servo_tv - tv_s).abs() <= 0.005,
+                "{cond:?} servo TV {servo_tv}"
+            );
+            assert!((ts - ts_s).abs() <= 0.05, "{cond:?} servo t_s {ts}");
+        } else {
+            assert!(rel(servo_tv, tv_s) <= 0.002, "{cond:?} servo TV {servo_tv}");
+            assert!(rel(ts, ts_s) <= 0.002, "{cond:?} servo t_s {ts}");
+        }
+        assert!(rel(load_tv, tv_r) <= 0.002, "{cond:?} load TV {load_tv}");
+        assert!(
+            rel(g.peak_error, peak) <= 0.005,
+            "{cond:?} load peak {}",
+            g.peak_error
+        );
+    }
+}
+
 /// The study options for Ajmeri & Ali's rows: (a) `controller_filtered` — the disturbance
 /// controller is `k_p + k_i/s + k_d s/(T_f s + 1)` (checked against that expression built by
 /// hand at five frequencies, to 1e-12 relative) and `T_f = 0` is the default controller

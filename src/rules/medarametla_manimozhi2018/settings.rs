@@ -312,16 +312,24 @@ impl AjmeriAli {
     /// controller's derivative filtered, `k_d s/(t_f s + 1)`, as a simulation with a PID block
     /// may have run it (Simulink's PID block: `t_f = 1/N`, N = 100 by default). `t_f` ≥ 0.
     pub fn controller_filtered(&self, model: &Plant, t_f: f64) -> Result<Controller> {
-        crate::error::non_negative("t_f", t_f)?;
+        self.controller_filters(model, 0.0, t_f)
+    }
+
+    /// A study option (the default is [`AjmeriAli::controller`], both 0): the set-point PD's
+    /// derivative filtered, `u₁ = k_p(r − y_m) − k_d s/(t_sp s + 1)·y_m`, and the disturbance
+    /// PID's, `k_d s/(t_d s + 1)`, as a simulation with filtered derivatives may have run them
+    /// (Table 2 prints no filter; the textbook one is `T_d/N`, `T_d = k_d/k_p`). `t_sp`, `t_d`
+    /// ≥ 0 (errors name them); 0 is the ideal derivative.
+    pub fn controller_filters(&self, model: &Plant, t_sp: f64, t_d: f64) -> Result<Controller> {
+        crate::error::non_negative("t_sp", t_sp)?;
+        crate::error::non_negative("t_d", t_d)?;
         let (kp, kd) = (self.sp_kp, self.sp_kd);
         let (p, i, d) = (self.dist_kp, self.dist_ki, self.dist_kd);
-        // k_p + k_i/s + k_d s/(t_f s + 1) over s(t_f s + 1); t_f = 0 is the ideal derivative
-        let cd = Tf::parse_desc(&[p * t_f + d, p + i * t_f, i], &[t_f, 1.0, 0.0])?;
-        let ml = ModelLoop::new(
-            model.clone(),
-            Tf::gain(kp),
-            Tf::parse_desc(&[kd, kp], &[1.0])?,
-        )?;
+        // k_p + k_i/s + k_d s/(t_d s + 1) over s(t_d s + 1); t_d = 0 is the ideal derivative
+        let cd = Tf::parse_desc(&[p * t_d + d, p + i * t_d, i], &[t_d, 1.0, 0.0])?;
+        // k_p + k_d s/(t_sp s + 1) on y_m over (t_sp s + 1)
+        let cy1 = Tf::parse_desc(&[kp * t_sp + kd, kp], &[t_sp, 1.0])?;
+        let ml = ModelLoop::new(model.clone(), Tf::gain(kp), cy1)?;
         Ok(Controller::new(Tf::gain(0.0), cd)?.with_model_loop(ml))
     }
 }
