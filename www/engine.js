@@ -23,14 +23,7 @@
 // next change.
 import * as firstGlue from './pkg-first/pidlab_first.js';
 import * as fullGlueModule from './pkg/pidlab.js';
-
-/** The end of the message of every error the first module answers for a call only the full
- *  module serves (src/api/mod.rs `NEEDS_FULL_CODE`; tests/node/first_module.test.mjs checks
- *  that the module's refusals end with it). */
-export const NEEDS_FULL_CODE = '[needs_full]';
-
-/** Whether `e` (an error the first module threw) is its refusal of a call only the full module serves. */
-export const isNeedsFull = (e) => !!e && typeof e.message === 'string' && e.message.endsWith(NEEDS_FULL_CODE);
+import { isNeedsFull } from './needs-full.js';
 
 /** The error of a call the first module cannot serve while the full module is not ready yet. */
 export class NeedsFull extends Error {

@@ -32,10 +32,7 @@
 // scripts/inline.mjs makes it a classic script (the glues inlined) run from a Blob URL.
 import * as firstGlue from './pkg-first/pidlab_first.js';
 import * as fullGlue from './pkg/pidlab.js';
-
-// (= engine.js NEEDS_FULL_CODE, the crate's api::NEEDS_FULL_CODE; engine.js is not imported
-// here: it belongs to the page)
-const NEEDS_FULL_CODE = '[needs_full]';
+import { isNeedsFull as refusal } from './needs-full.js';
 const self_ = globalThis;
 const st = { poisoned: false, dead: false, glue: null, kind: null, fullError: null };
 
@@ -54,7 +51,7 @@ const isTrap = (e) => e instanceof WebAssembly.RuntimeError || (e && e.name === 
 
 /** Whether the live instance is the first module's and refuses `fn` (before calling it). */
 const firstLacks = (fn) => st.kind === 'first' && typeof st.glue[fn] !== 'function';
-const isNeedsFull = (e) => st.kind === 'first' && !!e && typeof e.message === 'string' && e.message.endsWith(NEEDS_FULL_CODE);
+const isNeedsFull = (e) => st.kind === 'first' && refusal(e);
 
 self_.onmessage = (ev) => {
   const m = ev.data;

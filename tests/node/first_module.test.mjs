@@ -58,10 +58,9 @@ test('first module: what it does not carry says "needs the full module"; unknown
 });
 
 test('first module: each refusal ends with the stable code the page routes on (api::NEEDS_FULL_CODE); other errors do not', { skip }, async () => {
-  // the page's own check (www/engine.js, the same constant in www/worker.js)
-  const { NEEDS_FULL_CODE: code, isNeedsFull } = await import('../../www/engine.js');
+  // the page's own check (www/needs-full.js: engine.js and worker.js route on it)
+  const { NEEDS_FULL_CODE: code, isNeedsFull } = await import('../../www/needs-full.js');
   assert.equal(code, '[needs_full]');
-  assert.match(readFileSync(path.resolve(here, '../../www/worker.js'), 'utf8'), /^const NEEDS_FULL_CODE = '\[needs_full\]';$/m, 'www/worker.js checks the same code');
   const msg = (f) => { try { f(); } catch (e) { return e; } return null; };
   const controller = pidlab.tune(DESIGN).controller;
   const loop = { plant: BOILER, controller: { cr: controller.cr, cy: controller.cy }, scenario: SCENARIO };
