@@ -249,7 +249,7 @@ function wire() {
  *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep; `panels` false:
  *  the readouts and response plots only, the classroom panels drawn in later frames aside). */
 function isCurrent(all = false, sweep = true, panels = true) {
-  const waiting = E.fullPending() || (panels && classroom.scheduled) || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  const waiting = (panels && classroom.scheduled) || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 
@@ -296,7 +296,9 @@ async function settled(all) {
   const frame = () => new Promise((res) => requestAnimationFrame(() => res()));
   for (let i = 0; i < 20000; i++) {
     await frame();
-    if (isCurrent(all)) { await frame(); return; }
+    // (and the full module is live, unless a test holds it: what the tests call on
+    // window.__pidlab.wasm then is the full module)
+    if (isCurrent(all) && !E.fullPending()) { await frame(); return; }
   }
 }
 const sweepDone = () => { const s = sweepState(); return !s || s.done; };
