@@ -1,8 +1,12 @@
 #!/usr/bin/env node
 // Builds the single self-contained offline page dist/pidlab.html from www/:
-// the stylesheet, the ES modules (app.js, state.js, the wasm-pack `--target web` glue
-// www/pkg/pidlab.js) and the wasm binary (base64) are inlined, so the file works opened from
-// file:// with no network at all (module imports and fetch do not work from file://).
+// the stylesheet, the ES modules (app.js, state.js, the wasm-pack `--target web` glues
+// www/pkg-first/pidlab_first.js and www/pkg/pidlab.js) and both wasm binaries (base64) are
+// inlined, so the file works opened from file:// with no network at all (module imports and
+// fetch do not work from file://). The first module (www/pkg-first, scripts/build-first.sh) is
+// compiled by the early script; the full one (www/pkg) is carried in a non-executed
+// `<script type="application/octet-stream" id="pidlab-wasm-full">` that engine.js reads and
+// compiles after the first plots (README, "A first module").
 //
 // How the modules are combined: each module `M` becomes a scope
 //   const __m_M = (() => { <source without `export` keywords>; return Object.freeze({ ...exports }); })();
@@ -12,9 +16,10 @@
 // values they take are final (our modules export functions, constants and objects, never a
 // `let` they reassign). Other import forms fail the build, so the transformation is exact for
 // our sources.
-// The wasm-bindgen glue (www/pkg/pidlab.js) is also kept as a factory,
-// globalThis.PIDLAB_FRESH_GLUE, which returns a fresh copy: engine.js re-instantiates the module
-// with one after a trap (a glue copy serves one instance).
+// Each wasm-bindgen glue (www/pkg/pidlab.js, www/pkg-first/pidlab_first.js) is also kept as a
+// factory, globalThis.PIDLAB_FRESH_GLUE (full) and PIDLAB_FRESH_GLUE_FIRST, which returns a
+// fresh copy: engine.js re-instantiates a module with one after a trap (a glue copy serves one
+// instance).
 // The page's Content-Security-Policy is rewritten to allow exactly the inlined script and
 // style (by SHA-256 hash), wasm compilation ('wasm-unsafe-eval') and the computation worker
 // from a Blob URL (worker-src blob:); everything else,
@@ -36,12 +41,16 @@ function fail(msg) {
 }
 
 const read = (p) => {
-  if (!existsSync(p)) fail(`missing ${relative(root, p)} (run wasm-pack build --release --target web --out-dir www/pkg first)`);
+  if (!existsSync(p)) fail(`missing ${relative(root, p)} (run bash scripts/page.sh --no-serve, or wasm-pack build --release --target web --out-dir www/pkg and bash scripts/build-first.sh, first)`);
   return readFileSync(p);
 };
 
 let modules = new Map(); // absolute path -> { name, code }
-const gluePath = join(www, 'pkg', 'pidlab.js'); // the wasm-pack glue (emitted as a factory too)
+// the wasm-pack glues (emitted as factories too) -> the global name of the factory
+const GLUES = new Map([
+  [join(www, 'pkg', 'pidlab.js'), 'PIDLAB_FRESH_GLUE'],
+  [join(www, 'pkg-first', 'pidlab_first.js'), 'PIDLAB_FRESH_GLUE_FIRST'],
+]);
 let order = [];
 
 function modName(p) {
@@ -100,11 +109,11 @@ function inlineModule(path) {
   if (/^\s*export\s/m.test(src)) fail(`${relative(root, path)}: an export form the inliner does not handle`);
   const obj = exportsList.map(([k, v]) => (k === v ? k : `${JSON.stringify(k)}: ${v}`)).join(', ');
   let code = `const ${name} = (() => {\n${src}\nreturn Object.freeze({ ${obj} });\n})();\n`;
-  if (path === gluePath) {
+  if (GLUES.has(path)) {
     // The wasm-bindgen glue keeps its instance in module-level variables: engine.js gets a
     // fresh copy from this factory to re-instantiate the module after a trap.
     const factory = name.replace(/^__m_/, '__f_');
-    code = `const ${factory} = () => {\n${src}\nreturn Object.freeze({ ${obj} });\n};\nconst ${name} = ${factory}();\nglobalThis.PIDLAB_FRESH_GLUE = ${factory};\n`;
+    code = `const ${factory} = () => {\n${src}\nreturn Object.freeze({ ${obj} });\n};\nconst ${name} = ${factory}();\nglobalThis.${GLUES.get(path)} = ${factory};\n`;
   }
   modules.get(path).code = code;
   order.push(path);
@@ -113,24 +122,28 @@ function inlineModule(path) {
 
 const html = read(join(www, 'index.html')).toString('utf8');
 
-// Smoke test: the wasm must instantiate with its glue and answer methods(). A module damaged by
+// Smoke test: each wasm must instantiate with its glue and answer methods(). A module damaged by
 // an optimizer (Debian's wasm-opt 108 breaks wasm-bindgen 0.2.130's externref table:
 // "WebAssembly.Table.set(): Argument 1 is invalid") would otherwise ship a dead page.
-try {
-  const glue = await import(pathToFileURL(join(www, 'pkg', 'pidlab.js')).href);
-  glue.initSync({ module: readFileSync(join(www, 'pkg', 'pidlab_bg.wasm')) });
-  const m = glue.methods();
-  if (!m || !Array.isArray(m.methods)) throw new Error('methods() did not return { methods: [...] }');
-  for (const f of ['tune', 'simulate', 'analyze', 'presets', 'plot']) {
-    if (typeof glue[f] !== 'function') console.warn(`inline.mjs: warning: the wasm module exports no ${f}()`);
+for (const [dir, base] of [['pkg', 'pidlab'], ['pkg-first', 'pidlab_first']]) {
+  read(join(www, dir, base + '.js'));
+  try {
+    const glue = await import(pathToFileURL(join(www, dir, base + '.js')).href);
+    glue.initSync({ module: readFileSync(join(www, dir, base + '_bg.wasm')) });
+    const m = glue.methods();
+    if (!m || !Array.isArray(m.methods)) throw new Error('methods() did not return { methods: [...] }');
+    for (const f of ['tune', 'simulate', 'analyze', 'presets', 'plot']) {
+      if (typeof glue[f] !== 'function') console.warn(`inline.mjs: warning: www/${dir} exports no ${f}()`);
+    }
+  } catch (e) {
+    console.error(`inline.mjs: www/${dir} does not work: ${e && e.message ? e.message : e}`);
+    console.error('  (if wasm-opt ran on it, rebuild it without: scripts/build-page.sh does so on exit code 3)');
+    process.exit(3);
   }
-} catch (e) {
-  console.error(`inline.mjs: www/pkg does not work: ${e && e.message ? e.message : e}`);
-  console.error('  (if wasm-opt ran on it, rebuild with: wasm-pack build --release --no-opt --target web --out-dir www/pkg)');
-  process.exit(3);
 }
 const css = read(join(www, 'style.css')).toString('utf8');
-const wasmBytes = read(join(www, 'pkg', 'pidlab_bg.wasm'));
+const wasmFirst = read(join(www, 'pkg-first', 'pidlab_first_bg.wasm'));
+const wasmFull = read(join(www, 'pkg', 'pidlab_bg.wasm'));
 
 // The entry module: its own code runs at top level (it has no exports).
 const entryPath = join(www, 'app.js');
@@ -167,15 +180,17 @@ for (const f of readdirSync(www).filter((x) => x.endsWith('.js'))) {
   if (!modules.has(join(www, f)) && !worker.reached.includes(join(www, f))) fail(`www/${f} is not imported by app.js or worker.js (directly or through another module)`);
 }
 
-// The early script, a classic one in <head>: it carries the wasm and the worker's script, starts
-// compiling the module and starts both computation workers before the parser reaches the page's
-// (deferred) module script, so the compilation and the workers' start-up overlap the parsing of
-// that script and the building of the controls. engine.js takes the compilation
-// (PIDLAB_WASM_COMPILE) and worker-client.js the workers (PIDLAB_EARLY_WORKERS); where this
-// script could not start them (no Uint8Array.fromBase64, an exception), they start them as usual.
+// The early script, a classic one in <head>: it carries the first module's wasm and the worker's
+// script, starts compiling the first module and starts both computation workers before the
+// parser reaches the page's (deferred) module script, so the compilation and the workers'
+// start-up overlap the parsing of that script and the building of the controls. engine.js takes
+// the compilation (PIDLAB_WASM_COMPILE) and worker-client.js the workers (PIDLAB_EARLY_WORKERS);
+// where this script could not start them (no Uint8Array.fromBase64, an exception), they start
+// them as usual. The full module is not in a script's JavaScript at all (nothing parses it
+// until engine.js reads it after the first plots): see `fullData` below.
 const early = [
-  '// pidlab, single-file build (generated by scripts/inline.mjs; do not edit): the module and the workers start here',
-  `globalThis.PIDLAB_WASM_B64 = "${wasmBytes.toString('base64')}";`,
+  '// pidlab, single-file build (generated by scripts/inline.mjs; do not edit): the first module and the workers start here',
+  `globalThis.PIDLAB_WASM_B64 = "${wasmFirst.toString('base64')}";`,
   `globalThis.PIDLAB_WORKER_SRC = ${JSON.stringify(worker.code)};`,
   `try {
   if (typeof Uint8Array.fromBase64 === 'function') {
@@ -215,8 +230,11 @@ const rep = (re, val, what) => {
 };
 rep(/<meta http-equiv="Content-Security-Policy" content="[^"]*">/, `<meta http-equiv="Content-Security-Policy" content="${csp}">`, 'the CSP meta');
 rep(/<link rel="stylesheet" href="style.css">/, `<style>${css}</style>\n<script>${early}</script>`, 'the stylesheet link');
-rep(/<script type="module" src="app.js"><\/script>/, `<script type="module">${script}</script>`, 'the app.js script tag');
+// The full module as base64 in a data block (a script element of a non-JavaScript type is never
+// run, so the CSP need not allow it), before the module script: engine.js reads it by id.
+const fullData = `<script type="application/octet-stream" id="pidlab-wasm-full">${wasmFull.toString('base64')}</script>`;
+rep(/<script type="module" src="app.js"><\/script>/, `${fullData}\n<script type="module">${script}</script>`, 'the app.js script tag');
 
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, page);
-console.log(`wrote ${relative(process.cwd(), out)} (${(page.length / 1024).toFixed(0)} KiB; wasm ${(wasmBytes.length / 1024).toFixed(0)} KiB; modules: ${order.map((p) => relative(www, p)).join(', ')})`);
+console.log(`wrote ${relative(process.cwd(), out)} (${(page.length / 1024).toFixed(0)} KiB; wasm: first ${(wasmFirst.length / 1024).toFixed(0)} KiB, full ${(wasmFull.length / 1024).toFixed(0)} KiB; modules: ${order.map((p) => relative(www, p)).join(', ')})`);

@@ -68,7 +68,8 @@ if failed pkg-node; then section "node-test: skipped (pkg-node did not build)"; 
   run node-test node --test tests/node/
 fi
 if [ "$with_browser" = 1 ]; then
-  run page-build bash scripts/page.sh --no-serve
+  # (www/pkg-first was built by the pkg-first step above: not again; page.sh builds www/pkg)
+  run page-build bash scripts/page.sh --no-serve --first-built
   if failed page-build; then section "browser-test: skipped (the page did not build)"; else
     run browser-test node --test tests/browser/
   fi

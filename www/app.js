@@ -201,8 +201,9 @@ function render(arrival = false) {
     if (!perf.firstPlotsAt) {
       perf.firstPlotsAt = t2;
       perf.firstPhases = { ...perf.phases };
-      // the slow worker's scans and sweeps wait until the first plots are on screen
-      afterPaint(() => W.holdSlow(false));
+      // the slow worker's scans and sweeps, and the full module's compilation, wait until the
+      // first plots (drawn by the first module) are on screen
+      afterPaint(() => { W.holdSlow(false); E.loadFull().catch(() => {}); });
     }
     showEnvelope(r);
     scheduleClassroom(r);
@@ -310,9 +311,10 @@ const WARM_SPECS = [
   { kind: 'nyquist', title: 'n', xlabel: 'Re', ylabel: 'Im', circle: { cx: -1, cy: 0, r: 0.6, label: 'c', color: '#D55E00' }, points: [{ x: -1, y: 0, label: '−1' }], series: [{ label: '', x: [0.5, -0.5, -1.5], y: [0.5, -0.2, 0.1], color: '#0072B2', dash: 'dot', faint: true, width: 1.5 }, { label: 'L', x: [0.5, -0.5, -1.5], y: [-0.5, 0.2, -0.1], color: '#0072B2' }] },
 ];
 
-/** Draws WARM_SPECS[i] on a hidden canvas, then the next one in a later task. */
-function warmPlot(i = 0) {
-  if (i >= WARM_SPECS.length || perf.firstPlotsAt) return;
+/** Draws WARM_SPECS[i] on a hidden canvas, then the next one in a later task (`again`: also
+ *  after the first plots: the full module's plot code, once it is live). */
+function warmPlot(i = 0, again = false) {
+  if (i >= WARM_SPECS.length || (perf.firstPlotsAt && !again)) return;
   const c = document.createElement('canvas');
   c.id = 'pidlab-warm-plot';
   c.width = 160;
@@ -325,7 +327,16 @@ function warmPlot(i = 0) {
     // (nothing lost: the real plots report their own errors)
   }
   c.remove();
-  setTimeout(() => warmPlot(i + 1), 0);
+  setTimeout(() => warmPlot(i + 1, again), 0);
+}
+
+/** The slow worker computes the current design once (its module compiles the code of a design
+ *  on the first calls: at start-up, and when the full module arrives). */
+function warmDesign() {
+  if (!store.state.method || store.state.method === '__literal') return;
+  const params = methodParams();
+  if (!('lambda' in params) && !('target_ms' in params)) params.target_ms = 1.6;
+  W.warm({ plant: store.state.plant, method: store.state.method, params, scenario: store.state.scenario });
 }
 
 /** See window.__pidlab.settled. */
@@ -333,7 +344,9 @@ async function settled(all) {
   const frame = () => new Promise((res) => requestAnimationFrame(() => res()));
   for (let i = 0; i < 20000; i++) {
     await frame();
-    if (isCurrent(all)) { await frame(); return; }
+    // (and the full module is live, unless a test holds it: what the tests call on
+    // window.__pidlab.wasm then is the full module)
+    if (isCurrent(all) && !E.fullPending()) { await frame(); return; }
   }
 }
 const sweepDone = () => { const s = sweepState(); return !s || s.done; };
@@ -363,7 +376,8 @@ async function main() {
   // the workers start (a thread, their script) while the module compiles
   W.spawn();
   W.holdSlow(true);
-  setTimeout(() => W.holdSlow(false), 3000); // (should the first render not draw: never held for good)
+  // (should the first render not draw: never held for good, and the full module comes anyway)
+  setTimeout(() => { W.holdSlow(false); E.loadFull().catch(() => {}); }, 3000);
   try {
     await E.load();
     perf.startup.compiled = performance.now();
@@ -425,6 +439,9 @@ async function main() {
   // What the tests and the benchmark read (the module itself, the state, the timings).
   window.__pidlab = {
     get wasm() { return E.glue(); },
+    /** Which module answered so far: this thread's calls (`page`) and the workers' (`workers`),
+     *  each { first: { fn: n }, full: { fn: n } }; `full`: whether the full module is live. */
+    modules: () => ({ page: E.served(), workers: W.stats().modules, full: E.fullReady() }),
     /** Resolves when the current input is shown: no render waits for the worker (the trade-off
      *  sweep, the identification fit and admissible scans of the slow worker excepted unless
      *  `all`), then two frames. */
@@ -442,11 +459,10 @@ async function main() {
   };
   // The browser tests' hooks, with #test=1 only: make the live instance trap like a dead one.
   if (dec.test) window.__pidlabTest = { forceTrap: W.forceTrap, generation: W.generation, spareReady: () => true, forceTrapMain: E.forceTrap, holdSlow: (held) => W.holdSlow(held, 'test') };
-  if (store.state.method && store.state.method !== '__literal') {
-    const params = methodParams();
-    if (!('lambda' in params) && !('target_ms' in params)) params.target_ms = 1.6;
-    W.warm({ plant: store.state.plant, method: store.state.method, params, scenario: store.state.scenario });
-  }
+  warmDesign();
+  // the full module, once live, serves every call: its code for the current design and the
+  // plots is compiled now, not in the next input's task
+  E.onFull(() => { warmDesign(); setTimeout(() => warmPlot(0, true), 0); });
   perf.startup.built = performance.now();
   // while the worker computes the first design: small drawings on a hidden canvas, so the plot
   // code the first plots need is compiled by then (WARM_SPECS)

@@ -96,11 +96,21 @@ export function exportCode() {
   if (!target) return status('No export target.', true);
   const inp = exportInput(target);
   if (!inp) return status('No controller to export: the design above has failed.', true);
+  exportOf(inp);
+}
+
+function exportOf(inp) {
   try {
     const out = E.call('export_code', inp);
     download(out.text, out.filename);
     status('Downloaded ' + out.filename + '.', false);
   } catch (e) {
+    // (the page's full module is still loading: the design of the click is exported when it is there)
+    if (e instanceof E.NeedsFull) {
+      status('Preparing the export…', false);
+      e.ready.then(() => exportOf(inp), (err) => status(errText(err), true));
+      return;
+    }
     status(errText(e), true);
   }
 }

@@ -19,11 +19,17 @@
 // need() was waiting for calls the consumer's arrival hook (the page renders again; every
 // call then hits the memo).
 //
+// Two modules (engine.js): the workers start on the first module; a request it refuses (the
+// worker answers `needsFull`) is parked, the full module's load is started (engine.js
+// loadFull(), if the page has not started it yet), and the parked requests are queued again
+// when the full module is handed to the workers (upgrade()); a parked request is still dropped
+// when no pass wants it any more. From then on every call goes to the full module.
+//
 // A trap (a wasm RuntimeError, e.g. a Rust panic) kills that worker's instance: the call's
 // answer is an EngineCrash (engine.js, shown as a banner), the worker is replaced, and the
 // input that trapped is not run again by itself (the crash stays in the memo until the next
 // user change, forgetCrashes()).
-import { EngineCrash, reportCrash } from './engine.js';
+import { EngineCrash, reportCrash, loadFull, onFull } from './engine.js';
 
 /** The answer of need() while the request is queued or running. */
 export const PENDING = Symbol('pending');
@@ -41,7 +47,9 @@ const CANCEL_MS = 250;
 const MEMO_SIZE = 64;
 
 const ctl = {
-  module: null,
+  module: null, // the compiled first module
+  full: null, // the compiled full module, once the page has it
+  fullFailed: null, // the Error of a full module that could not be loaded
   makeWorker: null,
   lanes: {},
   gens: {}, // consumer -> current generation
@@ -49,7 +57,7 @@ const ctl = {
   memo: new Map(), // key -> { value } | { error } | { crash }
   traps: 0,
   nextId: 1,
-  stats: { calls: {}, cancelled: 0, dropped: 0 },
+  stats: { calls: {}, cancelled: 0, dropped: 0, parked: 0, modules: { first: {}, full: {} } },
   trace: null, // an array while tracing (traceOn()): [time, event, lane, fn]
 };
 const note = (ev, lane, fn) => { if (ctl.trace) ctl.trace.push([performance.now(), ev, lane, fn]); };
@@ -88,6 +96,7 @@ class Lane {
   constructor(name) {
     this.name = name;
     this.queue = []; // requests not yet posted
+    this.parked = []; // requests the first module refused, waiting for the full one
     this.inflight = null;
     this.instances = 0;
     this.cancelTimer = 0;
@@ -104,7 +113,21 @@ class Lane {
       // a worker that cannot even start (its script failed): said once in the console
       console.error('pidlab: the ' + this.name + ' computation worker failed: ' + (ev.message || ev));
     };
-    if (ctl.module) w.postMessage({ init: ctl.module });
+    // (a fresh worker once the full module is here needs only that one)
+    if (ctl.full) w.postMessage({ init: ctl.full, kind: 'full' });
+    else if (ctl.module) w.postMessage({ init: ctl.module, kind: 'first' });
+  }
+
+  /** Gives the live worker the full module; the parked requests are queued again. */
+  upgrade() {
+    this.worker.postMessage({ init: ctl.full, kind: 'full' });
+    this.unpark();
+  }
+
+  unpark() {
+    if (!this.parked.length) return;
+    this.queue.push(...this.parked.splice(0));
+    this.pump();
   }
 
   /** Ends the worker (its call, if any, is abandoned) and starts a fresh one. */
@@ -120,8 +143,8 @@ class Lane {
     if (w !== this.worker) return;
     if ('ready' in m) {
       this.ready = m.ready;
-      if (this.instances === 1) performance.mark('pidlab-' + this.name + '-worker-ready');
-      if (!m.ready) console.error('pidlab: the ' + this.name + ' worker cannot instantiate the module: ' + m.error);
+      if (this.instances === 1) performance.mark('pidlab-' + this.name + '-worker-ready' + (m.kind === 'full' ? '-full' : ''));
+      if (m.error) console.error('pidlab: the ' + this.name + ' worker cannot instantiate the ' + m.kind + ' module: ' + m.error);
       this.pump();
       return;
     }
@@ -129,6 +152,27 @@ class Lane {
     if (!req || req.id !== m.id) return;
     this.inflight = null;
     clearTimeout(this.cancelTimer);
+    if (m.needsFull) {
+      // the first module refused it: again once the full module is here (at once if it is:
+      // the worker has it by the time the request is posted again)
+      ctl.stats.parked++;
+      note('park', this.name, req.fn);
+      if (ctl.full) this.queue.unshift(req);
+      else if (ctl.fullFailed) {
+        const entry = { error: ctl.fullFailed };
+        remember(req.key, entry);
+        this.settle(req, entry);
+      } else {
+        this.parked.push(req);
+        loadFull().catch(fullFailed);
+      }
+      this.pump();
+      return;
+    }
+    if (m.mod) {
+      const by = ctl.stats.modules[m.mod];
+      if (by) by[req.fn] = (by[req.fn] || 0) + 1;
+    }
     const s = (ctl.stats.calls[req.fn] = ctl.stats.calls[req.fn] || { n: 0, ms: 0, last: 0 });
     s.n++;
     if (m.ms !== undefined) { s.ms += m.ms; s.last = m.ms; }
@@ -201,7 +245,19 @@ class Lane {
 
   find(key) {
     if (this.inflight && this.inflight.key === key) return this.inflight;
-    return this.queue.find((r) => r.key === key) || null;
+    return this.queue.find((r) => r.key === key) || this.parked.find((r) => r.key === key) || null;
+  }
+
+  /** Parked requests no pass wants any more: dropped (their waiters told), as a queued one is. */
+  dropParked() {
+    const keep = [];
+    for (const req of this.parked) {
+      if (this.wanted(req)) { keep.push(req); continue; }
+      ctl.stats.dropped++;
+      note('drop', this.name, req.fn);
+      for (const w of req.waiters) w.reject(new Superseded(req.fn));
+    }
+    this.parked = keep;
   }
 }
 
@@ -212,11 +268,35 @@ export function spawn(makeWorker = defaultMaker()) {
   for (const n of ['fast', 'slow']) ctl.lanes[n] = new Lane(n);
 }
 
-/** Gives the workers the compiled module (engine.js load()); they instantiate it. */
+/** Gives the workers the compiled first module (engine.js load()); they instantiate it, and
+ *  the full module when engine.js has it (upgrade). */
 export function start(module) {
   spawn();
   ctl.module = module;
-  for (const lane of Object.values(ctl.lanes)) lane.worker.postMessage({ init: module });
+  for (const lane of Object.values(ctl.lanes)) lane.worker.postMessage({ init: module, kind: 'first' });
+  onFull(upgrade);
+}
+
+/** The full module could not be loaded: what waits for it gets this error (memoized like the
+ *  module's own refusals; the page shows it as the call's failure). */
+function fullFailed(e) {
+  if (ctl.fullFailed) return;
+  ctl.fullFailed = new Error('the full computation module could not be loaded: ' + (e && e.message ? e.message : String(e)));
+  for (const lane of Object.values(ctl.lanes)) {
+    for (const req of lane.parked.splice(0)) {
+      const entry = { error: ctl.fullFailed };
+      remember(req.key, entry);
+      lane.settle(req, entry);
+    }
+  }
+}
+
+/** The compiled full module: every worker instantiates it and serves every later call with it;
+ *  the requests parked for it are queued again. */
+function upgrade(full) {
+  if (ctl.full) return;
+  ctl.full = full;
+  for (const lane of Object.values(ctl.lanes)) lane.upgrade();
 }
 
 /** { plant, method, params, scenario } of the start-up design: the slow worker computes it once
@@ -246,7 +326,7 @@ export function begin(consumer) {
   note('begin', consumer, ctl.gens[consumer]);
   const lane = ctl.lanes[LANE_OF[consumer]];
   // the requests this pass re-asks for are marked again; give it a turn before cancelling
-  if (lane) queueMicrotask(() => lane.reconsider());
+  if (lane) queueMicrotask(() => { lane.reconsider(); lane.dropParked(); });
   return ctl.gens[consumer];
 }
 
@@ -302,7 +382,7 @@ export function ask(consumer, fn, input) {
 /** Whether `consumer`'s current pass still waits for an answer (need() or ask()). */
 export function busy(consumer) {
   for (const lane of Object.values(ctl.lanes)) {
-    for (const r of [lane.inflight, ...lane.queue]) if (r && r.gens[consumer] === (ctl.gens[consumer] || 0) && (r.needers.includes(consumer) || r.waiters.length)) return true;
+    for (const r of [lane.inflight, ...lane.queue, ...lane.parked]) if (r && r.gens[consumer] === (ctl.gens[consumer] || 0) && (r.needers.includes(consumer) || r.waiters.length)) return true;
   }
   return false;
 }
@@ -315,7 +395,9 @@ export function forgetCrashes() {
 /** Instances made so far: 1 + the traps (a cancellation's restart is not counted). */
 export const generation = () => 1 + ctl.traps;
 
-/** Counters for the tests and the benchmark: calls per function (count, worker ms), cancellations, drops. */
+/** Counters for the tests and the benchmark: calls per function (count, worker ms), cancellations,
+ *  drops, requests parked for the full module, and which module answered (`modules.first`,
+ *  `modules.full`: calls per function). */
 export const stats = () => structuredClone(ctl.stats);
 
 /** Test hook: the fast lane's next call traps (its worker's instance then counts as dead). */

@@ -184,13 +184,18 @@ pub fn methods() -> Value {
 /// `PIDLAB_WRITE_METHODS=1 cargo test --release --lib api::tests::methods_data`).
 pub const METHODS_JSON: &str = include_str!("methods.json");
 
+/// The stable code that ends the message of every [`needs_full`] error: a caller routes on
+/// it (the page's `www/engine.js` and `www/worker.js` check `message.endsWith(NEEDS_FULL_CODE)`),
+/// never on the wording before it. docs/API.md, "Two builds".
+pub const NEEDS_FULL_CODE: &str = "[needs_full]";
+
 /// The error of a call the first module cannot serve (built without the `full` feature): a
-/// caller that sees "needs the full module" is to call the full module instead (the page does
-/// not load the first module yet: README, "A first module").
+/// caller that sees it (its message ends with [`NEEDS_FULL_CODE`]) is to call the full module
+/// instead, as the page does (README, "A first module").
 pub fn needs_full(path: &str, what: &str) -> Error {
     Error::new(
         path,
-        format!("{what} needs the full module (this is the page's first module, pidlab_first)"),
+        format!("{what} needs the full module (this is the page's first module, pidlab_first) {NEEDS_FULL_CODE}"),
     )
 }
 
@@ -615,6 +620,19 @@ pub fn sweep(input: &Value) -> Result<Value> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The page routes a refusal of the first module on the code that ends its message (with the
+    /// path in front, as every error has it), not on its wording.
+    #[test]
+    fn needs_full_ends_with_its_code() {
+        let e = needs_full("method", "'simc'").to_string();
+        assert!(e.starts_with("method: 'simc' needs the full module"), "{e}");
+        assert!(e.ends_with(" [needs_full]"), "{e}");
+        assert!(needs_full("x", "y")
+            .within("outer")
+            .to_string()
+            .ends_with(NEEDS_FULL_CODE));
+    }
 
     /// The first module's `methods()` (the data in `methods.json`) is the full build's, value
     /// for value: every method with its parameters, the families, export targets and identify

@@ -56,3 +56,26 @@ test('first module: what it does not carry says "needs the full module"; unknown
   const msg = (f) => { try { f(); } catch (e) { return e.message; } return null; };
   assert.match(msg(() => first.tune({ method: 'nope', plant: BOILER })), /^method: unknown method 'nope'/);
 });
+
+test('first module: each refusal ends with the stable code the page routes on (api::NEEDS_FULL_CODE); other errors do not', { skip }, async () => {
+  // the page's own check (www/needs-full.js: engine.js and worker.js route on it)
+  const { NEEDS_FULL_CODE: code, isNeedsFull } = await import('../../www/needs-full.js');
+  assert.equal(code, '[needs_full]');
+  const msg = (f) => { try { f(); } catch (e) { return e; } return null; };
+  const controller = pidlab.tune(DESIGN).controller;
+  const loop = { plant: BOILER, controller: { cr: controller.cr, cy: controller.cy }, scenario: SCENARIO };
+  const refusals = [
+    msg(() => first.tune({ method: 'simc', plant: BOILER, params: {} })),
+    msg(() => first.simulate({ ...loop, actuator: { u_min: -2, u_max: 2 } })),
+    msg(() => first.simulate({ ...loop, sampling: { h: 0.05 } })),
+    msg(() => first.simulate({ ...loop, noise: { std: 0.01, seed: 1 } })),
+  ];
+  for (const e of refusals) {
+    assert.ok(e && e.message.endsWith(' ' + code), String(e && e.message));
+    assert.equal(isNeedsFull(e), true);
+  }
+  for (const e of [msg(() => first.tune({ method: 'nope', plant: BOILER })), msg(() => first.simulate({ ...loop, scenario: { t_end: -1 } }))]) {
+    assert.ok(e && !e.message.includes(code), String(e && e.message));
+    assert.equal(isNeedsFull(e), false);
+  }
+});
