@@ -177,7 +177,15 @@ pub fn methods() -> Value {
 /// `methods_data_is_the_registrys`), so that no rule's code is needed to list the rules.
 #[cfg(not(feature = "full"))]
 pub fn methods() -> Value {
-    serde_json::from_str(METHODS_JSON).unwrap_or(Value::Null)
+    data_value(METHODS_JSON)
+}
+
+/// A data file of the first module (`methods.json`, `presets.json`) read: serde_json's parser,
+/// then [`exact_numbers`].
+pub fn data_value(text: &str) -> Value {
+    let mut v = serde_json::from_str(text).unwrap_or(Value::Null);
+    exact_numbers(&mut v);
+    v
 }
 
 /// The full build's `methods()` as JSON text (`src/api/methods.json`; regenerate with
@@ -217,14 +225,7 @@ pub fn presets() -> Value {
 /// computed from the papers' formulas) is needed to list them.
 #[cfg(not(feature = "full"))]
 pub fn presets() -> Value {
-    presets_of_data()
-}
-
-/// `presets.json` read: serde_json's parser, then [`exact_numbers`].
-pub fn presets_of_data() -> Value {
-    let mut v = serde_json::from_str(PRESETS_JSON).unwrap_or(Value::Null);
-    exact_numbers(&mut v);
-    v
+    data_value(PRESETS_JSON)
 }
 
 /// Replaces each `{"f64_bits": "<16 hex digits>"}` of a data file by the number with those
@@ -365,9 +366,30 @@ pub fn tune(input: &Value) -> Result<Value> {
     Ok(json!({
         "method": t.method,
         "controller": Value::Object(c),
-        "details": serde_json::to_value(&t.details).unwrap_or(Value::Null),
+        "details": details_json(&t.details)?,
         "plant": plant_json(&plant),
     }))
+}
+
+/// `tune`'s `details`: the rule's typed record (`rules::Details` is untagged: the record's own
+/// fields).
+#[cfg(feature = "full")]
+fn details_json(d: &rules::Details) -> Result<Value> {
+    Ok(serde_json::to_value(d).unwrap_or(Value::Null))
+}
+
+/// `tune`'s `details` in the first module: the same JSON for the records of its own methods
+/// (`rules::FIRST_METHODS`; `Details` is untagged, so the variant's record serializes alone),
+/// without linking in the serialization of every other paper's record. Its registry tunes
+/// nothing else, so the error is for a method added to `FIRST_METHODS` without its record here.
+#[cfg(not(feature = "full"))]
+fn details_json(d: &rules::Details) -> Result<Value> {
+    match d {
+        rules::Details::PraveenKumarNarayana(pk) => {
+            Ok(serde_json::to_value(pk).unwrap_or(Value::Null))
+        }
+        _ => Err(needs_full("method", "the details of this method")),
+    }
 }
 
 /// `admissible({method, plant, params?})`: for the plant at hand, the interval of each
@@ -667,24 +689,73 @@ pub fn sweep(input: &Value) -> Result<Value> {
 mod tests {
     use super::*;
 
+    /// The bits of every number of `v`, in order (`==` on `Value` compares f64s with `==`,
+    /// which takes -0.0 for 0.0).
+    #[cfg(feature = "full")]
+    fn number_bits(v: &Value) -> Vec<u64> {
+        fn walk(v: &Value, out: &mut Vec<u64>) {
+            match v {
+                Value::Number(n) => out.push(n.as_f64().expect("number").to_bits()),
+                Value::Array(a) => a.iter().for_each(|x| walk(x, out)),
+                Value::Object(m) => m.values().for_each(|x| walk(x, out)),
+                _ => {}
+            }
+        }
+        let mut out = vec![];
+        walk(v, &mut out);
+        out
+    }
+
     /// The first module's `methods()` (the data in `methods.json`) is the full build's, value
     /// for value: every method with its parameters, the families, export targets and identify
-    /// families (exact equality). `PIDLAB_WRITE_METHODS=1` rewrites the file from the registry
-    /// first.
+    /// families (exact equality, and every number's bits). `PIDLAB_WRITE_METHODS=1` rewrites
+    /// the file from the registry first (compact, one method a line; numbers as in
+    /// `presets.json`).
     #[cfg(feature = "full")]
     #[test]
     fn methods_data_is_the_registrys() {
         let full = methods_of_registry();
         if std::env::var_os("PIDLAB_WRITE_METHODS").is_some() {
-            let text = serde_json::to_string_pretty(&full).expect("json") + "\n";
+            // compact (it is linked into the first module), one method a line
+            let mut text = String::from("{");
+            for (i, (k, v)) in full.as_object().expect("object").iter().enumerate() {
+                if i > 0 {
+                    text.push(',');
+                }
+                text.push_str(&format!("\n{}:", serde_json::to_string(k).expect("key")));
+                match v {
+                    Value::Array(a) if k == "methods" => {
+                        text.push('[');
+                        for (j, m) in a.iter().enumerate() {
+                            if j > 0 {
+                                text.push(',');
+                            }
+                            text.push('\n');
+                            exact_json(m, &mut text);
+                        }
+                        text.push_str("\n]");
+                    }
+                    _ => exact_json(v, &mut text),
+                }
+            }
+            text.push_str("\n}\n");
             let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/api/methods.json");
             std::fs::write(path, text).expect("write src/api/methods.json");
         }
-        let data: Value = serde_json::from_str(METHODS_JSON).expect("methods.json parses");
+        assert!(
+            serde_json::from_str::<Value>(METHODS_JSON).is_ok(),
+            "methods.json parses"
+        );
+        let data = data_value(METHODS_JSON);
         assert_eq!(
             data, full,
             "src/api/methods.json differs from the registry's methods(); regenerate it with \
              PIDLAB_WRITE_METHODS=1 cargo test --release --lib api::tests::methods_data"
+        );
+        assert_eq!(
+            number_bits(&data),
+            number_bits(&full),
+            "methods.json: a number differs in its bits"
         );
         // the first module's own methods are listed
         for id in rules::FIRST_METHODS {
@@ -811,25 +882,19 @@ mod tests {
             serde_json::from_str::<Value>(PRESETS_JSON).is_ok(),
             "presets.json parses"
         );
-        let data = presets_of_data();
+        let data = data_value(PRESETS_JSON);
         assert_eq!(
             data, full,
             "src/api/presets.json differs from the papers' presets(); regenerate it with \
              PIDLAB_WRITE_PRESETS=1 cargo test --release --lib api::tests::presets_data"
         );
         // `==` on f64 would hide -0.0 vs 0.0: compare the bits of every number
-        fn bits(v: &Value, out: &mut Vec<u64>) {
-            match v {
-                Value::Number(n) => out.push(n.as_f64().expect("number").to_bits()),
-                Value::Array(a) => a.iter().for_each(|x| bits(x, out)),
-                Value::Object(m) => m.values().for_each(|x| bits(x, out)),
-                _ => {}
-            }
-        }
-        let (mut a, mut b) = (vec![], vec![]);
-        bits(&data, &mut a);
-        bits(&full, &mut b);
-        assert_eq!(a, b, "presets.json: a number differs in its bits");
+        let a = number_bits(&data);
+        assert_eq!(
+            a,
+            number_bits(&full),
+            "presets.json: a number differs in its bits"
+        );
         assert!(
             a.len() > 1000,
             "the presets hold their numbers ({})",
