@@ -177,7 +177,15 @@ pub fn methods() -> Value {
 /// `methods_data_is_the_registrys`), so that no rule's code is needed to list the rules.
 #[cfg(not(feature = "full"))]
 pub fn methods() -> Value {
-    serde_json::from_str(METHODS_JSON).unwrap_or(Value::Null)
+    data_value(METHODS_JSON)
+}
+
+/// A data file of the first module (`methods.json`, `presets.json`) read: serde_json's parser,
+/// then [`exact_numbers`].
+pub fn data_value(text: &str) -> Value {
+    let mut v = serde_json::from_str(text).unwrap_or(Value::Null);
+    exact_numbers(&mut v);
+    v
 }
 
 /// The full build's `methods()` as JSON text (`src/api/methods.json`; regenerate with
@@ -211,7 +219,51 @@ pub fn methods_of_registry() -> Value {
 }
 
 /// Every paper preset: `{ presets: [...] }`.
+#[cfg(feature = "full")]
 pub fn presets() -> Value {
+    presets_of_registry()
+}
+
+/// `presets()` in the first module (built without the `full` feature): the same value, read
+/// from `presets.json` (the full build's `presets()`, checked equal by the test
+/// `presets_data_is_the_registrys`), so that no paper's preset code (the comparison settings
+/// computed from the papers' formulas) is needed to list them.
+#[cfg(not(feature = "full"))]
+pub fn presets() -> Value {
+    data_value(PRESETS_JSON)
+}
+
+/// Replaces each `{"f64_bits": "<16 hex digits>"}` of a data file by the number with those
+/// bits: the data files' form of a number that serde_json's parser (without its
+/// `float_roundtrip` feature) reads one ulp off from every decimal of 17 to 20 digits (see
+/// the test `presets_data_is_the_registrys`).
+pub fn exact_numbers(v: &mut Value) {
+    match v {
+        Value::Array(a) => a.iter_mut().for_each(exact_numbers),
+        Value::Object(m) => {
+            let bits = match m.get("f64_bits") {
+                Some(Value::String(h)) if m.len() == 1 && h.len() == 16 => {
+                    u64::from_str_radix(h, 16).ok()
+                }
+                _ => None,
+            };
+            match bits.and_then(|b| serde_json::Number::from_f64(f64::from_bits(b))) {
+                Some(n) => *v = Value::Number(n),
+                None => m.values_mut().for_each(exact_numbers),
+            }
+        }
+        _ => {}
+    }
+}
+
+/// The full build's `presets()` as JSON text (`src/api/presets.json`, one preset a line; every
+/// number written so that serde_json's parser and any correctly rounding one read the same
+/// `f64`; regenerate with `PIDLAB_WRITE_PRESETS=1 cargo test --release --lib
+/// api::tests::presets_data`).
+pub const PRESETS_JSON: &str = include_str!("presets.json");
+
+/// `presets()` computed from the papers' folders (the full build).
+pub fn presets_of_registry() -> Value {
     json!({ "presets": rules::presets().iter().map(preset_json).collect::<Vec<_>>() })
 }
 
@@ -319,9 +371,30 @@ pub fn tune(input: &Value) -> Result<Value> {
     Ok(json!({
         "method": t.method,
         "controller": Value::Object(c),
-        "details": serde_json::to_value(&t.details).unwrap_or(Value::Null),
+        "details": details_json(&t.details)?,
         "plant": plant_json(&plant),
     }))
+}
+
+/// `tune`'s `details`: the rule's typed record (`rules::Details` is untagged: the record's own
+/// fields).
+#[cfg(feature = "full")]
+fn details_json(d: &rules::Details) -> Result<Value> {
+    Ok(serde_json::to_value(d).unwrap_or(Value::Null))
+}
+
+/// `tune`'s `details` in the first module: the same JSON for the records of its own methods
+/// (`rules::FIRST_METHODS`; `Details` is untagged, so the variant's record serializes alone),
+/// without linking in the serialization of every other paper's record. Its registry tunes
+/// nothing else, so the error is for a method added to `FIRST_METHODS` without its record here.
+#[cfg(not(feature = "full"))]
+fn details_json(d: &rules::Details) -> Result<Value> {
+    match d {
+        rules::Details::PraveenKumarNarayana(pk) => {
+            Ok(serde_json::to_value(pk).unwrap_or(Value::Null))
+        }
+        _ => Err(needs_full("method", "the details of this method")),
+    }
 }
 
 /// `admissible({method, plant, params?})`: for the plant at hand, the interval of each
@@ -634,24 +707,73 @@ mod tests {
             .ends_with(NEEDS_FULL_CODE));
     }
 
+    /// The bits of every number of `v`, in order (`==` on `Value` compares f64s with `==`,
+    /// which takes -0.0 for 0.0).
+    #[cfg(feature = "full")]
+    fn number_bits(v: &Value) -> Vec<u64> {
+        fn walk(v: &Value, out: &mut Vec<u64>) {
+            match v {
+                Value::Number(n) => out.push(n.as_f64().expect("number").to_bits()),
+                Value::Array(a) => a.iter().for_each(|x| walk(x, out)),
+                Value::Object(m) => m.values().for_each(|x| walk(x, out)),
+                _ => {}
+            }
+        }
+        let mut out = vec![];
+        walk(v, &mut out);
+        out
+    }
+
     /// The first module's `methods()` (the data in `methods.json`) is the full build's, value
     /// for value: every method with its parameters, the families, export targets and identify
-    /// families (exact equality). `PIDLAB_WRITE_METHODS=1` rewrites the file from the registry
-    /// first.
+    /// families (exact equality, and every number's bits). `PIDLAB_WRITE_METHODS=1` rewrites
+    /// the file from the registry first (compact, one method a line; numbers as in
+    /// `presets.json`).
     #[cfg(feature = "full")]
     #[test]
     fn methods_data_is_the_registrys() {
         let full = methods_of_registry();
         if std::env::var_os("PIDLAB_WRITE_METHODS").is_some() {
-            let text = serde_json::to_string_pretty(&full).expect("json") + "\n";
+            // compact (it is linked into the first module), one method a line
+            let mut text = String::from("{");
+            for (i, (k, v)) in full.as_object().expect("object").iter().enumerate() {
+                if i > 0 {
+                    text.push(',');
+                }
+                text.push_str(&format!("\n{}:", serde_json::to_string(k).expect("key")));
+                match v {
+                    Value::Array(a) if k == "methods" => {
+                        text.push('[');
+                        for (j, m) in a.iter().enumerate() {
+                            if j > 0 {
+                                text.push(',');
+                            }
+                            text.push('\n');
+                            exact_json(m, &mut text);
+                        }
+                        text.push_str("\n]");
+                    }
+                    _ => exact_json(v, &mut text),
+                }
+            }
+            text.push_str("\n}\n");
             let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/api/methods.json");
             std::fs::write(path, text).expect("write src/api/methods.json");
         }
-        let data: Value = serde_json::from_str(METHODS_JSON).expect("methods.json parses");
+        assert!(
+            serde_json::from_str::<Value>(METHODS_JSON).is_ok(),
+            "methods.json parses"
+        );
+        let data = data_value(METHODS_JSON);
         assert_eq!(
             data, full,
             "src/api/methods.json differs from the registry's methods(); regenerate it with \
              PIDLAB_WRITE_METHODS=1 cargo test --release --lib api::tests::methods_data"
+        );
+        assert_eq!(
+            number_bits(&data),
+            number_bits(&full),
+            "methods.json: a number differs in its bits"
         );
         // the first module's own methods are listed
         for id in rules::FIRST_METHODS {
@@ -661,6 +783,181 @@ mod tests {
                 .iter()
                 .any(|m| m["id"] == *id));
         }
+    }
+
+    /// The JSON text of a number that serde_json's parser (without its `float_roundtrip`
+    /// feature: the crate's build) reads back as exactly `x`, and that denotes a decimal inside
+    /// `x`'s rounding interval (core's correctly rounding `str::parse` reads `x` too): the
+    /// shortest round-trip text when serde_json reads it back, otherwise the 17- to 20-digit
+    /// decimals nearest `x` (fewest digits, closest first). serde_json's default parser
+    /// rounds the significand to f64 and then divides by a power of ten, so it may miss `x`
+    /// by one ulp on all of them: then `{"f64_bits": "<16 hex digits>"}`, which
+    /// [`exact_numbers`] reads.
+    #[cfg(feature = "full")]
+    fn exact_number_text(x: f64) -> String {
+        let reads = |t: &str| {
+            serde_json::from_str::<Value>(t)
+                .ok()
+                .and_then(|v| v.as_f64())
+                .map(f64::to_bits)
+                == Some(x.to_bits())
+                && t.parse::<f64>().map(f64::to_bits) == Ok(x.to_bits())
+        };
+        let shortest = serde_json::to_string(&x).expect("finite number");
+        if reads(&shortest) {
+            return shortest;
+        }
+        for digits in [17usize, 18, 19, 20] {
+            // x rounded to `digits` significant digits: mantissa m (as an integer) and exponent
+            let e = format!("{:.*e}", digits - 1, x);
+            let (mant, exp) = e.split_once('e').expect("exponent");
+            let exp: i32 = exp.parse().expect("exponent");
+            let neg = mant.starts_with('-');
+            let m: i128 = mant
+                .trim_start_matches('-')
+                .replace('.', "")
+                .parse()
+                .expect("mantissa");
+            // the decimals within x's rounding interval are within a few ulps' worth of m
+            for j in 0..2000i128 {
+                for cand in [m + j, m - j] {
+                    let t = format!(
+                        "{}{}e{}",
+                        if neg { "-" } else { "" },
+                        cand,
+                        exp - (digits as i32 - 1)
+                    );
+                    if reads(&t) {
+                        return t;
+                    }
+                }
+            }
+        }
+        format!("{{\"f64_bits\":\"{:016x}\"}}", x.to_bits())
+    }
+
+    /// Compact JSON text of `v` with [`exact_number_text`] numbers (object keys in the
+    /// `Map`'s order, as `serde_json` writes them).
+    #[cfg(feature = "full")]
+    fn exact_json(v: &Value, out: &mut String) {
+        match v {
+            Value::Number(n) if n.is_f64() => {
+                out.push_str(&exact_number_text(n.as_f64().expect("f64")))
+            }
+            Value::Array(a) => {
+                out.push('[');
+                for (i, x) in a.iter().enumerate() {
+                    if i > 0 {
+                        out.push(',');
+                    }
+                    exact_json(x, out);
+                }
+                out.push(']');
+            }
+            Value::Object(m) => {
+                out.push('{');
+                for (i, (k, x)) in m.iter().enumerate() {
+                    if i > 0 {
+                        out.push(',');
+                    }
+                    out.push_str(&serde_json::to_string(k).expect("key"));
+                    out.push(':');
+                    exact_json(x, out);
+                }
+                out.push('}');
+            }
+            _ => out.push_str(&serde_json::to_string(v).expect("json")),
+        }
+    }
+
+    /// The first module's `presets()` (the data in `presets.json`) is the full build's, value
+    /// for value and bit for bit (exact equality of the parsed `Value`s: `f64`s compare
+    /// equal only when identical, and no preset holds a NaN or a signed zero that `==` would
+    /// hide: checked below). `PIDLAB_WRITE_PRESETS=1` rewrites the file from the papers'
+    /// folders first: `{"presets":[` then one preset a line.
+    #[cfg(feature = "full")]
+    #[test]
+    fn presets_data_is_the_registrys() {
+        let full = presets_of_registry();
+        if std::env::var_os("PIDLAB_WRITE_PRESETS").is_some() {
+            let mut text = String::from("{\"presets\":[\n");
+            for (i, p) in full["presets"]
+                .as_array()
+                .expect("presets")
+                .iter()
+                .enumerate()
+            {
+                if i > 0 {
+                    text.push_str(",\n");
+                }
+                exact_json(p, &mut text);
+            }
+            text.push_str("\n]}\n");
+            let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/api/presets.json");
+            std::fs::write(path, text).expect("write src/api/presets.json");
+        }
+        assert!(
+            serde_json::from_str::<Value>(PRESETS_JSON).is_ok(),
+            "presets.json parses"
+        );
+        let data = data_value(PRESETS_JSON);
+        assert_eq!(
+            data, full,
+            "src/api/presets.json differs from the papers' presets(); regenerate it with \
+             PIDLAB_WRITE_PRESETS=1 cargo test --release --lib api::tests::presets_data"
+        );
+        // `==` on f64 would hide -0.0 vs 0.0: compare the bits of every number
+        let a = number_bits(&data);
+        assert_eq!(
+            a,
+            number_bits(&full),
+            "presets.json: a number differs in its bits"
+        );
+        assert!(
+            a.len() > 1000,
+            "the presets hold their numbers ({})",
+            a.len()
+        );
+    }
+
+    /// The number texts of the data files: the shortest when serde_json reads it back, and
+    /// otherwise a longer decimal both parsers read as the same `f64` (the numbers below are
+    /// from `presets()`: 1.0009394999999999 is read by serde_json's default parser as the next
+    /// f64 up, 1.0009395).
+    #[cfg(feature = "full")]
+    #[test]
+    fn exact_number_texts() {
+        assert_eq!(exact_number_text(0.5), "0.5");
+        assert_eq!(exact_number_text(60.0), "60.0");
+        for bits in [
+            4607186649931867322u64,
+            4592371962211465429,
+            4594212051873190379,
+        ] {
+            let x = f64::from_bits(bits);
+            let t = exact_number_text(x);
+            assert_ne!(t, serde_json::to_string(&x).expect("json"), "{x:e}");
+            let mut v: Value = serde_json::from_str(&t).expect("parses");
+            exact_numbers(&mut v);
+            assert_eq!(v.as_f64().map(f64::to_bits), Some(bits), "{t}");
+            if !t.starts_with('{') {
+                assert_eq!(t.parse::<f64>().map(f64::to_bits), Ok(bits), "{t}");
+            }
+        }
+        // 0.9833999999999999 (a gain of preset kaya2020/ex2/chien): no decimal of 17
+        // to 20 digits is read back by serde_json's default parser, hence the bits
+        let x = f64::from_bits(0x3fef780346dc5d63);
+        assert_eq!(x.to_string(), "0.9833999999999999");
+        let t = exact_number_text(x);
+        assert_eq!(t, r#"{"f64_bits":"3fef780346dc5d63"}"#);
+        let mut v: Value = serde_json::from_str(&t).expect("parses");
+        exact_numbers(&mut v);
+        assert_eq!(v.as_f64().map(f64::to_bits), Some(x.to_bits()));
+        // anything else stays as it is
+        let mut v = serde_json::json!({"f64_bits": "3fef780346dc5d6", "a": [{"f64_bits": 1.0}]});
+        let before = v.clone();
+        exact_numbers(&mut v);
+        assert_eq!(v, before);
     }
 
     /// One slider update through the JSON API analyses its design once: `tune` keeps the

@@ -42,6 +42,20 @@ test('first module: the default design (tune, continuous simulate, analyze, freq
   assert.deepEqual(first.freqresp(loop), pidlab.freqresp(loop));
 });
 
+// `details` of the default method in its other modes (the first module serializes its own
+// method's record only: the same JSON as the full module's untagged Details)
+test('first module: tune details of praveen_kumar\'s other modes (target Ms, derivative on the error) as the full module', { skip }, () => {
+  for (const params of [
+    { lambda: 1.87, epsilon: 0.2, target_ms: 2.0 },
+    { lambda: 1.87, epsilon: 0.5, derivative: 'error', n: 8 },
+  ]) {
+    const d = { method: 'praveen_kumar', plant: BOILER, params };
+    const t = first.tune(d);
+    assert.deepEqual(t, pidlab.tune(d));
+    assert.ok(Object.keys(t.details).length > 3, 'details has the record\'s fields');
+  }
+});
+
 test('first module: what it does not carry says "needs the full module"; unknown input errors stay as in the full module', { skip }, () => {
   assert.throws(() => first.tune({ method: 'simc', plant: BOILER, params: {} }), /^Error: method: 'simc' needs the full module/);
   const controller = pidlab.tune(DESIGN).controller;
