@@ -5,7 +5,8 @@
 //! rule across the λ drag of the benchmark, |L(j∞)| rising toward 1 at its end; derivative
 //! filters; an ideal derivative; a PI; an analytic case) it simulates with the rule's step and
 //! with `h = θ/N` for N = 10, 5, 2, 1 ([`pidlab::sim::simulate_at_step`]), and prints for each:
-//! - the largest error of the samples y and u against a run at `h = θ/240` (scaled by the largest
+//! - the largest error of the samples y and u against a run at `h = θ/240` or 4 times finer than
+//!   the rule's step if that is finer (scaled by the largest
 //!   |y|, |u| of the reference), and for the two loops with an exact solution (integrator under
 //!   P control: the method of steps; a first-order lag in open loop) against that solution;
 //! - the largest relative change of the integral metrics (IAE, ISE, ITAE, ISTE) and of the
@@ -153,7 +154,7 @@ fn main() {
     .plant();
     let bench = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
     let mut cases = vec![];
-    for lambda in [1.8, 1.9, 1.96] {
+    for lambda in [1.8, 1.9, 1.96, 1.97] {
         let p = Params::default()
             .with("lambda", lambda)
             .with("epsilon", 0.2);
@@ -232,9 +233,12 @@ fn main() {
             s(0.5 + 1.234, 1.0) + s(10.0 + 1.234, -0.5)
         })),
     });
-    println!("Errors against h = θ/240 (y, u: largest |Δ| / largest |·|; metrics: largest relative change, the overshoot's absolute); CPU: median of {runs} runs of response + metrics.");
+    println!("Errors against h = θ/240 or a quarter of the rule's step (y, u: largest |Δ| / largest |·|; metrics: largest relative change, the overshoot's absolute); CPU: median of {runs} runs of response + metrics.");
     for case in &cases {
-        let (fine, fine_w) = run(case, Some(240));
+        // the reference: θ/240, or 4 times finer than the rule's step where that is finer
+        // (near the neutral limit the rule goes to θ/387 at λ = 1.97)
+        let n_rule = (case.plant.delay / run(case, None).0.internal_step()).round() as usize;
+        let (fine, fine_w) = run(case, Some(240.max(4 * n_rule)));
         let (ys, us) = (maxabs(&fine.y), maxabs(&fine.u));
         println!();
         println!("{}", case.name);

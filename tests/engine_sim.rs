@@ -281,3 +281,51 @@ fn a_step_longer_than_dt_samples_inside_its_pieces_exactly() {
     let e = sim::simulate_at_step(&no_delay, &c, &sc, 10).unwrap_err();
     assert!(e.to_string().starts_with("plant.delay: "), "{e}");
 }
+
+#[wasm_bindgen_test(unsupported = test)]
+fn near_the_neutral_limit_the_default_step_stays_exact() {
+    // The boiler under Praveen Kumar's rule at the end of the benchmark's λ drag: |L(j∞)| =
+    // |E| ≈ 0.964 (λ = 1.96) and ≈ 0.98 (λ = 1.97, near the admissible end 1.973). The error of
+    // the method grows like (N·(1 − |E|))^−6 (N = θ/h; sim module docs, "Near the neutral
+    // limit"): with only h ≤ dt, 0.5/ρ(A) (N = 10) it was 5.5e-5 of the largest |u| at λ = 1.96.
+    // Reference: the same method at h = θ/960 or 4 times finer than the rule's step (θ/93 at
+    // λ = 1.96, θ/387 at 1.97), so its own error is below 4^−6 ≈ 2.4e-4 of the default's. Tolerance 1e-9 of the largest
+    // |y|, |u|: the rule aims at 1e-10 (its fit to the measured errors scatters by a factor 2–3)
+    // and the comparison adds round-off ~1e-12; 5.5e-5 before the rule fails it by far.
+    use pidlab::rules::{self, Params};
+    use pidlab::sim;
+    let boiler = Family::IpdtIr {
+        k: 0.547,
+        tau: 1.06,
+        tau_z: 0.418,
+        theta: 0.1,
+    }
+    .plant();
+    let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
+    for lambda in [1.96, 1.97] {
+        let p = Params::default()
+            .with("lambda", lambda)
+            .with("epsilon", 0.2);
+        let c = rules::tune("praveen_kumar", &boiler, &p)
+            .unwrap()
+            .controller;
+        let rule = sim::simulate(&boiler, &c, &sc).unwrap();
+        let n_rule = (0.1 / rule.internal_step()).round() as usize;
+        let fine = sim::simulate_at_step(&boiler, &c, &sc, 960.max(4 * n_rule)).unwrap();
+        assert!(rule.diverged_at.is_none() && fine.diverged_at.is_none());
+        let maxabs = |v: &[f64]| v.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+        let maxdiff = |a: &[f64], b: &[f64]| {
+            a.iter()
+                .zip(b)
+                .map(|(x, y)| (x - y).abs())
+                .fold(0.0, f64::max)
+        };
+        assert_eq!(rule.t.len(), fine.t.len());
+        let dy = maxdiff(&rule.y, &fine.y) / maxabs(&fine.y);
+        let du = maxdiff(&rule.u, &fine.u) / maxabs(&fine.u);
+        assert!(
+            dy <= 1e-9 && du <= 1e-9,
+            "λ = {lambda}: dy {dy:e}, du {du:e}"
+        );
+    }
+}

@@ -18,7 +18,8 @@
 //! on `v(t − θ)` (a neutral equation, `|E| = |L(j∞)|`).
 //!
 //! The internal step is `h = θ/N` (so the delay maps steps onto steps exactly) with
-//! `h ≤ dt` and `h ≤ 0.5/ρ(A)`. Every step is cut at the offsets of the set-point and load
+//! `h ≤ dt`, `h ≤ 0.5/ρ(A)` and, on a neutral loop (`0 < |E| < 1`), `h ≤ 0.3·θ·(1 − |E|)`
+//! (below: "Near the neutral limit"). Every step is cut at the offsets of the set-point and load
 //! events, so every discontinuity `t_e + kθ` they cause lies on a piece boundary. On each piece
 //! the delayed input `w` is known at 6 equispaced nodes (they are the nodes of the piece one
 //! delay earlier); it is interpolated by a degree-5 polynomial and the state equation is
@@ -34,6 +35,20 @@
 //! resolution; and on the neutral loops of the λ drag the fast mode bounds the step anyway
 //! (`0.5/ρ(A)`: `θ/6` on the boiler at λ = 1.9, where `θ/5` is 70 times less accurate than
 //! `θ/10`). [`simulate_at_step`] runs a chosen `h = θ/n` for such studies.
+//!
+//! Near the neutral limit (`|E| → 1`, the end of the boiler's λ drag under Praveen Kumar's
+//! rule) the step must shrink with `1 − |E|`. The jumps of `v` lie on piece boundaries and the
+//! interpolation is of a smooth function, but the loop's chain of roots near
+//! `Re s = ln|E|/θ` is barely damped: the interpolation error injected on every piece returns
+//! every θ multiplied by `E` and accumulates (and the oscillatory roots at `ω ≈ (2k+1)π/θ`
+//! are resolved by `N` steps per delay). `ρ(A)` (the loop opened at `w`) does not see it.
+//! Measured (`simulate_at_step` against `h = θ/960`): with `N = 10` the error of `u`
+//! is 1.6e-9 at `|E| = 0.82` (λ = 1.9), 5.5e-5 at 0.964 (λ = 1.96), 2e-2 at 0.991 (λ = 1.97);
+//! it falls as `N⁻⁶` and is `≈ 1.2e-7·(N·(1 − |E|))⁻⁶` up to 0.964, so
+//! `N ≥ 3.3/(1 − |E|)` keeps it ≤ ~1e-10 (λ = 1.9: θ/19, 2.7e-10; 1.96: θ/93, 4e-11; 1.97:
+//! θ/387, 3e-12, where the law over-refines: θ/120 would give 4e-10). The bound never asks
+//! for more than a quarter of the piece cap (`h ≥ 4·t_end/10⁶`: λ = 1.973, |E| = 0.9998,
+//! θ/834, 1.5e-12 over 30 s).
 //!
 //! A controller with a model-based set-point path ([`crate::model::controller::ModelLoop`]: an
 //! internal model with its own dead time θ_m) has two delays; [`simulate`] hands it to the
