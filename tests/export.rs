@@ -9,6 +9,7 @@
 mod common;
 
 use pidlab::api;
+use pidlab::model::controller::Pid;
 use pidlab::model::poly::C64;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -44,6 +45,11 @@ fn tmp_dir(name: &str) -> PathBuf {
         .join(name);
     std::fs::create_dir_all(&d).unwrap();
     d
+}
+
+/// A PID's controller JSON, as the API writes it.
+fn pid_json(p: Pid) -> Value {
+    api::controller_json(&p.to_controller().unwrap())
 }
 
 fn export(v: Value) -> Value {
@@ -263,7 +269,7 @@ fn header_and_determinism() {
 fn matlab_content() {
     // a filtered 2-DOF PID: Kp = 2, Ki = 0.5, Kd = 0.8, N = 10, b = 0.6, c = 0.2
     let (kp, ki, kd, n, b, c) = (2.0, 0.5, 0.8, 10.0, 0.6, 0.2);
-    let ctl = pidlab::model::controller::Pid::parallel(kp, ki, kd)
+    let ctl = Pid::parallel(kp, ki, kd)
         .weights(b, c)
         .filter_n(n)
         .to_controller()
@@ -304,11 +310,7 @@ fn matlab_content() {
     assert!(t.contains("C = pidstd(Kp, Ti, Td, N);"));
     assert!(t.contains("C2 = pidstd2(Kp, Ti, Td, N, b, c);"));
     // ideal PID on the error: pidstd with N = Inf, Cr = Cy
-    let ideal = api::controller_json(
-        &pidlab::model::controller::Pid::ideal(1.61, 11.5, 1.15)
-            .to_controller()
-            .unwrap(),
-    );
+    let ideal = pid_json(Pid::ideal(1.61, 11.5, 1.15));
     let t = export(json!({"plant": plant, "controller": ideal, "target": "matlab", "date": DATE}));
     let t = t["text"].as_str().unwrap();
     assert!(
@@ -507,18 +509,12 @@ use pidlab::model::discrete::{AntiWindup, DiscreteController, Limits, Method};
 /// The sampled cases: (name, plant, controller JSON, sampling, actuator).
 fn sampled_cases() -> Vec<(String, Value, Value, Value, Value)> {
     let mut out = vec![];
-    let filtered = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 0.8)
+    let filtered = pid_json(
+        Pid::parallel(2.0, 0.5, 0.8)
             .weights(0.6, 0.2)
-            .filter_n(10.0)
-            .to_controller()
-            .unwrap(),
+            .filter_n(10.0),
     );
-    let pi = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(1.3, 0.4, 0.0)
-            .to_controller()
-            .unwrap(),
-    );
+    let pi = pid_json(Pid::parallel(1.3, 0.4, 0.0));
     let plant = json!({"family": "piptd", "k": 0.2, "theta": 1.5});
     let lim = json!({"u_min": -0.8, "u_max": 1.1});
     for (cname, ctl) in [("pid2dof", &filtered), ("pi", &pi)] {
@@ -751,12 +747,10 @@ fn c_export_reproduces_pidlab_sampled_simulation() {
     let dir = tmp_dir("c_sim");
     let boiler = common::boiler_json();
     let piptd = json!({"family": "piptd", "k": 0.2, "theta": 1.5});
-    let filtered = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 0.8)
+    let filtered = pid_json(
+        Pid::parallel(2.0, 0.5, 0.8)
             .weights(0.6, 0.2)
-            .filter_n(10.0)
-            .to_controller()
-            .unwrap(),
+            .filter_n(10.0),
     );
     let tuned = |m: &str, p: &Value, params: Value| {
         api::tune(&json!({"method": m, "plant": p, "params": params})).unwrap()["controller"]
@@ -1098,22 +1092,9 @@ fn st_export_matches_c() {
 #[test]
 fn sampled_bad_input() {
     let plant = json!({"family": "piptd", "k": 0.2, "theta": 1.5});
-    let ideal = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 1.0)
-            .to_controller()
-            .unwrap(),
-    );
-    let pi = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 0.0)
-            .to_controller()
-            .unwrap(),
-    );
-    let pd = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.0, 0.5)
-            .filter_n(5.0)
-            .to_controller()
-            .unwrap(),
-    );
+    let ideal = pid_json(Pid::parallel(2.0, 0.5, 1.0));
+    let pi = pid_json(Pid::parallel(2.0, 0.5, 0.0));
+    let pd = pid_json(Pid::parallel(2.0, 0.0, 0.5).filter_n(5.0));
     let cases: Vec<(Value, &str)> = vec![
         (
             json!({"plant": plant, "controller": pi, "target": "c"}),
