@@ -5,24 +5,12 @@
 import { createRequire } from 'node:module';
 import { fileURLToPath } from 'node:url';
 import path from 'node:path';
+import { gauss } from '../tests/node/rng.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const require = createRequire(import.meta.url);
 const pidlab = require(path.resolve(here, '../pkg-node/pidlab.js'));
 const RUNS = Math.max(5, Number(process.argv[2]) || 30);
-
-/** Seeded Gaussian numbers (mulberry32 + Box–Muller). */
-function gauss(seed) {
-  let a = seed >>> 0;
-  const u = () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return (((t ^ (t >>> 14)) >>> 0) + 0.5) / 4294967296;
-  };
-  return () => Math.sqrt(-2 * Math.log(u())) * Math.cos(2 * Math.PI * u());
-}
 
 const N = 2000;
 const g = gauss(1);

@@ -27,15 +27,12 @@
 // committed). Times are the page's performance.now(). Needs dist/pidlab.html (bash
 // scripts/page.sh --no-serve) and Debian's /usr/bin/chromium (PIDLAB_CHROMIUM overrides).
 import { existsSync } from 'node:fs';
-import { createServer } from 'node:http';
-import { readFile } from 'node:fs/promises';
-import { normalize, extname } from 'node:path';
 import { cpus, loadavg } from 'node:os';
 import { join, resolve, dirname } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import * as S from '../www/state.js';
 import * as U from '../www/url.js';
-import { launch } from '../tests/browser/harness.mjs';
+import { launch, serveWww } from '../tests/browser/harness.mjs';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const dist = process.env.PIDLAB_PAGE ? resolve(process.env.PIDLAB_PAGE) : join(root, 'dist', 'pidlab.html');
@@ -272,23 +269,6 @@ async function run(c) {
   }
   if (!page.isClosed()) await page.close();
   return out;
-}
-
-const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm' };
-/** Serves www/ on 127.0.0.1 (an ephemeral port): { url, close }. */
-function serveWww() {
-  const www = join(root, 'www');
-  const server = createServer(async (req, res) => {
-    const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^([/\\])+/, '');
-    const file = join(www, path || 'index.html');
-    if (!file.startsWith(www)) { res.writeHead(403).end(); return; }
-    try {
-      res.writeHead(200, { 'content-type': MIME[extname(file)] || 'application/octet-stream' }).end(await readFile(file));
-    } catch {
-      res.writeHead(404).end();
-    }
-  });
-  return new Promise((ok) => server.listen(0, '127.0.0.1', () => ok({ url: `http://127.0.0.1:${server.address().port}/index.html`, close: () => new Promise((r) => server.close(r)) })));
 }
 
 /** Navigation -> the first plots painted (the servo plot drawn), `count` loads of `url`. */

@@ -9,6 +9,7 @@
 mod common;
 
 use pidlab::api;
+use pidlab::model::controller::Pid;
 use pidlab::model::poly::C64;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -44,6 +45,11 @@ fn tmp_dir(name: &str) -> PathBuf {
         .join(name);
     std::fs::create_dir_all(&d).unwrap();
     d
+}
+
+/// A PID's controller JSON, as the API writes it.
+fn pid_json(p: Pid) -> Value {
+    api::controller_json(&p.to_controller().unwrap())
 }
 
 fn export(v: Value) -> Value {
@@ -263,7 +269,7 @@ fn header_and_determinism() {
 fn matlab_content() {
     // a filtered 2-DOF PID: Kp = 2, Ki = 0.5, Kd = 0.8, N = 10, b = 0.6, c = 0.2
     let (kp, ki, kd, n, b, c) = (2.0, 0.5, 0.8, 10.0, 0.6, 0.2);
-    let ctl = pidlab::model::controller::Pid::parallel(kp, ki, kd)
+    let ctl = Pid::parallel(kp, ki, kd)
         .weights(b, c)
         .filter_n(n)
         .to_controller()
@@ -304,11 +310,7 @@ fn matlab_content() {
     assert!(t.contains("C = pidstd(Kp, Ti, Td, N);"));
     assert!(t.contains("C2 = pidstd2(Kp, Ti, Td, N, b, c);"));
     // ideal PID on the error: pidstd with N = Inf, Cr = Cy
-    let ideal = api::controller_json(
-        &pidlab::model::controller::Pid::ideal(1.61, 11.5, 1.15)
-            .to_controller()
-            .unwrap(),
-    );
+    let ideal = pid_json(Pid::ideal(1.61, 11.5, 1.15));
     let t = export(json!({"plant": plant, "controller": ideal, "target": "matlab", "date": DATE}));
     let t = t["text"].as_str().unwrap();
     assert!(
@@ -507,18 +509,12 @@ use pidlab::model::discrete::{AntiWindup, DiscreteController, Limits, Method};
 /// The sampled cases: (name, plant, controller JSON, sampling, actuator).
 fn sampled_cases() -> Vec<(String, Value, Value, Value, Value)> {
     let mut out = vec![];
-    let filtered = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 0.8)
+    let filtered = pid_json(
+        Pid::parallel(2.0, 0.5, 0.8)
             .weights(0.6, 0.2)
-            .filter_n(10.0)
-            .to_controller()
-            .unwrap(),
+            .filter_n(10.0),
     );
-    let pi = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(1.3, 0.4, 0.0)
-            .to_controller()
-            .unwrap(),
-    );
+    let pi = pid_json(Pid::parallel(1.3, 0.4, 0.0));
     let plant = json!({"family": "piptd", "k": 0.2, "theta": 1.5});
     let lim = json!({"u_min": -0.8, "u_max": 1.1});
     for (cname, ctl) in [("pid2dof", &filtered), ("pi", &pi)] {
@@ -675,11 +671,36 @@ fn compile_c(dir: &Path, name: &str, text: &str) -> PathBuf {
     exe
 }
 
+/// Runs the compiled C program `exe` (of case `name`) with `input` on stdin (one "r_k y_k"
+/// line a sample) and returns what it writes: (v_k, u_k), one pair a line.
+fn run_c(exe: &Path, name: &str, input: &str) -> Vec<(f64, f64)> {
+    use std::io::Write as _;
+    let mut child = Command::new(exe)
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(input.as_bytes())
+        .unwrap();
+    let res = child.wait_with_output().unwrap();
+    assert!(res.status.success(), "{name}: the program failed");
+    let text = String::from_utf8(res.stdout).unwrap();
+    text.lines()
+        .map(|line| {
+            let mut it = line.split(' ').map(|x| x.parse::<f64>().unwrap());
+            (it.next().unwrap(), it.next().unwrap())
+        })
+        .collect()
+}
+
 /// (b) The C export, compiled with the system `cc` and run on the recorded (r_k, y_k), gives
 /// pidlab's own sampled controller's v_k and u_k to 1e-12.
 #[test]
 fn c_export_runs_like_pidlab() {
-    use std::io::Write as _;
     let dir = tmp_dir("c");
     let seq = recorded();
     let input: String = seq.iter().map(|(r, y)| format!("{r:?} {y:?}\n")).collect();
@@ -689,30 +710,11 @@ fn c_export_runs_like_pidlab() {
         let text = out["text"].as_str().unwrap();
         assert!(out["filename"].as_str().unwrap().ends_with(".c"));
         let exe = compile_c(&dir, &name, text);
-        let mut child = Command::new(&exe)
-            .stdin(std::process::Stdio::piped())
-            .stdout(std::process::Stdio::piped())
-            .spawn()
-            .unwrap();
-        child
-            .stdin
-            .take()
-            .unwrap()
-            .write_all(input.as_bytes())
-            .unwrap();
-        let res = child.wait_with_output().unwrap();
-        assert!(res.status.success(), "{name}: the program failed");
-        let lines: Vec<String> = String::from_utf8(res.stdout)
-            .unwrap()
-            .lines()
-            .map(String::from)
-            .collect();
-        assert_eq!(lines.len(), seq.len(), "{name}: one line per sample");
+        let vu = run_c(&exe, &name, &input);
+        assert_eq!(vu.len(), seq.len(), "{name}: one line per sample");
         let mut dc = discrete(&ctl, &sampling, &actuator);
         let (mut at_limit, mut worst) = (0, 0.0f64);
-        for (k, ((r, y), line)) in seq.iter().zip(&lines).enumerate() {
-            let mut it = line.split(' ').map(|x| x.parse::<f64>().unwrap());
-            let (vc, uc) = (it.next().unwrap(), it.next().unwrap());
+        for (k, ((r, y), &(vc, uc))) in seq.iter().zip(&vu).enumerate() {
             let (v, u) = dc.step(*r, *y);
             // 1e-12 relative to the size of the signal (O(1) here): the C runs the same
             // operations in the same order, so the difference is 0 unless the compiler
@@ -742,16 +744,13 @@ fn c_export_runs_like_pidlab() {
 /// simulation's to 1e-12.
 #[test]
 fn c_export_reproduces_pidlab_sampled_simulation() {
-    use std::io::Write as _;
     let dir = tmp_dir("c_sim");
     let boiler = common::boiler_json();
     let piptd = json!({"family": "piptd", "k": 0.2, "theta": 1.5});
-    let filtered = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 0.8)
+    let filtered = pid_json(
+        Pid::parallel(2.0, 0.5, 0.8)
             .weights(0.6, 0.2)
-            .filter_n(10.0)
-            .to_controller()
-            .unwrap(),
+            .filter_n(10.0),
     );
     let tuned = |m: &str, p: &Value, params: Value| {
         api::tune(&json!({"method": m, "plant": p, "params": params})).unwrap()["controller"]
@@ -819,23 +818,9 @@ fn c_export_reproduces_pidlab_sampled_simulation() {
         let input: String = (0..t.len())
             .map(|k| format!("{:?} {:?}\n", r[k], y[k] + n[k]))
             .collect();
-        let mut child = Command::new(&exe)
-            .stdin(std::process::Stdio::piped())
-            .stdout(std::process::Stdio::piped())
-            .spawn()
-            .unwrap();
-        child
-            .stdin
-            .take()
-            .unwrap()
-            .write_all(input.as_bytes())
-            .unwrap();
-        let res = child.wait_with_output().unwrap();
-        let lines = String::from_utf8(res.stdout).unwrap();
+        let vu = run_c(&exe, name, &input);
         let (mut worst, mut at_limit) = (0.0f64, 0);
-        for (k, line) in lines.lines().enumerate() {
-            let mut it = line.split(' ').map(|x| x.parse::<f64>().unwrap());
-            let (vc, uc) = (it.next().unwrap(), it.next().unwrap());
+        for (k, &(vc, uc)) in vu.iter().enumerate() {
             // 1e-12 relative to the signal (O(1)): the bound. The y_k of the output
             // samples and the y(t_k) the simulated controller read come from the same exact
             // trajectory but may differ in the last bits (evaluated on either side of a piece
@@ -854,7 +839,7 @@ fn c_export_reproduces_pidlab_sampled_simulation() {
                 at_limit += 1;
             }
         }
-        assert_eq!(lines.lines().count(), t.len(), "{name}");
+        assert_eq!(vu.len(), t.len(), "{name}");
         if !actuator.is_null() {
             assert!(at_limit >= 10, "{name}: {at_limit} samples at a limit");
         }
@@ -1107,22 +1092,9 @@ fn st_export_matches_c() {
 #[test]
 fn sampled_bad_input() {
     let plant = json!({"family": "piptd", "k": 0.2, "theta": 1.5});
-    let ideal = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 1.0)
-            .to_controller()
-            .unwrap(),
-    );
-    let pi = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.5, 0.0)
-            .to_controller()
-            .unwrap(),
-    );
-    let pd = api::controller_json(
-        &pidlab::model::controller::Pid::parallel(2.0, 0.0, 0.5)
-            .filter_n(5.0)
-            .to_controller()
-            .unwrap(),
-    );
+    let ideal = pid_json(Pid::parallel(2.0, 0.5, 1.0));
+    let pi = pid_json(Pid::parallel(2.0, 0.5, 0.0));
+    let pd = pid_json(Pid::parallel(2.0, 0.0, 0.5).filter_n(5.0));
     let cases: Vec<(Value, &str)> = vec![
         (
             json!({"plant": plant, "controller": pi, "target": "c"}),

@@ -10,7 +10,7 @@
 mod common;
 
 use nalgebra::{DMatrix, DVector};
-use pidlab::analysis::simulate_real;
+use pidlab::analysis::{simulate_real, SimResult};
 use pidlab::model::controller::{lead_lag, Controller, Pid};
 use pidlab::model::discrete::{AntiWindup, DiscreteController, Limits, Method};
 use pidlab::model::plant::{Family, Plant};
@@ -119,6 +119,23 @@ struct Case {
     t_end: f64,
 }
 
+impl Case {
+    /// The engine's simulation of the case's loop (sampled at `h` by `method`, with its
+    /// limits and anti-windup) over the scenario `sc`, with measurement `noise` if any.
+    fn simulate(&self, sc: &Scenario, noise: Option<NoiseSpec>) -> SimResult {
+        let rl = RealLoop {
+            limits: self.limits,
+            anti_windup: self.aw,
+            sampling: Some(Sampling {
+                h: self.h,
+                method: self.method,
+            }),
+            noise,
+        };
+        simulate_real(&self.plant, &self.c, sc, &rl).unwrap()
+    }
+}
+
 fn check(case: &Case, noise: Option<NoiseSpec>) -> f64 {
     // A one-sided valve (u_min = 0) gets a load of +1.5, which asks for u < 0: the valve
     // closes and stays at its limit.
@@ -127,16 +144,7 @@ fn check(case: &Case, noise: Option<NoiseSpec>) -> f64 {
     let n = (case.t_end / h).round() as usize;
     let kd = n / 2;
     let sc = Scenario::steps(n as f64 * h, h, 0.0, r, kd as f64 * h, d);
-    let rl = RealLoop {
-        limits: case.limits,
-        anti_windup: case.aw,
-        sampling: Some(Sampling {
-            h,
-            method: case.method,
-        }),
-        noise,
-    };
-    let res = simulate_real(&case.plant, &case.c, &sc, &rl).unwrap();
+    let res = case.simulate(&sc, noise);
     assert!(!res.diverged, "{}: diverged", case.name);
     let mut dc = DiscreteController::new(&case.c, h, case.method, case.limits, case.aw).unwrap();
     let (yr, ur) = reference(
@@ -338,16 +346,7 @@ fn time_at_limit_and_tv_of_the_applied_input() {
     let n = (case.t_end / h).round() as usize;
     let kd = n / 2;
     let sc = Scenario::steps(n as f64 * h, h, 0.0, 1.0, kd as f64 * h, -0.5);
-    let rl = RealLoop {
-        limits: case.limits,
-        anti_windup: case.aw,
-        sampling: Some(Sampling {
-            h,
-            method: case.method,
-        }),
-        noise: None,
-    };
-    let res = simulate_real(&case.plant, &case.c, &sc, &rl).unwrap();
+    let res = case.simulate(&sc, None);
     let servo = res.metrics.servo.as_ref().unwrap();
     let at = (0..kd)
         .filter(|k| res.u[*k] <= -0.3 || res.u[*k] >= 0.3)
@@ -555,16 +554,7 @@ fn between_samples_the_plant_is_exact() {
         let kd = n / 2;
         let d = if case.limits.u_min == 0.0 { 1.5 } else { -0.5 };
         let sc = Scenario::steps(n as f64 * h, h / sub as f64, 0.0, 1.0, kd as f64 * h, d);
-        let rl = RealLoop {
-            limits: case.limits,
-            anti_windup: case.aw,
-            sampling: Some(Sampling {
-                h,
-                method: case.method,
-            }),
-            noise: None,
-        };
-        let res = simulate_real(&case.plant, &case.c, &sc, &rl).unwrap();
+        let res = case.simulate(&sc, None);
         let mut dc =
             DiscreteController::new(&case.c, h, case.method, case.limits, case.aw).unwrap();
         let (yr, _) = reference_fine(&case.plant, h, n + 1, 1.0, d, kd, None, sub, |r, y| {

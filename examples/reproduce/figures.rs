@@ -89,6 +89,18 @@ fn curve(label: &str, points: Vec<(f64, f64)>) -> Curve {
     }
 }
 
+/// Shamsuzzoha & Lee 2008, Figs. 8-9: the λ guidelines, column `lambda_ms<Ms>` against
+/// column `x`, for Ms = 1.6, 1.8, 2.0.
+fn lambda_guidelines(csv: &Csv, x: usize) -> Result<Vec<Curve>, String> {
+    ["1.6", "1.8", "2.0"]
+        .iter()
+        .map(|ms| {
+            let y = csv.col(&format!("lambda_ms{ms}"))?;
+            Ok(curve(&format!("Ms = {ms}"), csv.xy(x, y, |_| true)))
+        })
+        .collect()
+}
+
 fn panel(y_label: &str, curves: Vec<Curve>) -> Panel {
     Panel {
         title: String::new(),
@@ -419,9 +431,6 @@ pub fn figures(dir: &Path) -> Result<Vec<Figure>, String> {
                 vec![panel("IAE (unit load step)", curves)],
             ),
         );
-        let lam = |c: &str, l: &str| -> Result<Curve, String> {
-            Ok(curve(l, csv.xy(x, csv.col(c)?, |_| true)))
-        };
         add(
             SL,
             "Fig. 8",
@@ -431,22 +440,12 @@ pub fn figures(dir: &Path) -> Result<Vec<Figure>, String> {
                 "Shamsuzzoha & Lee 2008, Fig. 8: λ guidelines for FODIP".into(),
                 "θ/τ",
                 None,
-                vec![panel(
-                    "λ",
-                    vec![
-                        lam("lambda_ms1.6", "Ms = 1.6")?,
-                        lam("lambda_ms1.8", "Ms = 1.8")?,
-                        lam("lambda_ms2.0", "Ms = 2.0")?,
-                    ],
-                )],
+                vec![panel("λ", lambda_guidelines(&csv, x)?)],
             ),
         );
         let f9 = "shamsuzzoha_lee2008_fig9.csv";
         let c9 = Csv::read(dir, f9)?;
         let x9 = c9.col("theta")?;
-        let l9 = |c: &str, l: &str| -> Result<Curve, String> {
-            Ok(curve(l, c9.xy(x9, c9.col(c)?, |_| true)))
-        };
         add(
             SL,
             "Fig. 9",
@@ -456,14 +455,7 @@ pub fn figures(dir: &Path) -> Result<Vec<Figure>, String> {
                 "Shamsuzzoha & Lee 2008, Fig. 9: λ guidelines for DIP".into(),
                 "θ",
                 None,
-                vec![panel(
-                    "λ",
-                    vec![
-                        l9("lambda_ms1.6", "Ms = 1.6")?,
-                        l9("lambda_ms1.8", "Ms = 1.8")?,
-                        l9("lambda_ms2.0", "Ms = 2.0")?,
-                    ],
-                )],
+                vec![panel("λ", lambda_guidelines(&c9, x9)?)],
             ),
         );
     }

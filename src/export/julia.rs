@@ -5,15 +5,13 @@
 //! `y/r = (Cr/Cy)·feedback(L, 1)`, `y/d = feedback(L, 1)·(1/Cy)` when `Cy` is improper, else
 //! `feedback(P*delay(theta), Cy)`.
 
-use super::{comment_lines, header, num, nums, Design};
+use super::{comment_lines, header, tf_texts, Design};
 use std::fmt::Write;
 
 /// The script's text.
 pub fn write(d: &Design) -> String {
     let mut s = comment_lines(&header(d, "Julia script (ControlSystems.jl)"), "# ", &[]);
-    let (pn, pd) = d.plant.tf.to_desc();
-    let (rn, rd) = d.controller.cr.to_desc();
-    let (yn, yd) = d.controller.cy.to_desc();
+    let (pn, pd, theta, rn, rd, yn, yd) = tf_texts(d);
     let _ = write!(
         s,
         r#"
@@ -32,13 +30,6 @@ Cy = tf([{yn}], [{yd}])
 L = ss(Cy * P) * delay(theta)
 T_yr = ss(minreal(Cr / Cy)) * feedback(L, 1.0)   # y/r = (Cr/Cy) * L/(1 + L)
 "#,
-        pn = nums(&pn),
-        pd = nums(&pd),
-        theta = num(d.plant.delay),
-        rn = nums(&rn),
-        rd = nums(&rd),
-        yn = nums(&yn),
-        yd = nums(&yd),
     );
     if d.controller.cy.is_proper() {
         s.push_str(
@@ -48,8 +39,6 @@ T_yr = ss(minreal(Cr / Cy)) * feedback(L, 1.0)   # y/r = (Cr/Cy) * L/(1 + L)
         let _ = writeln!(
             s,
             "T_yd = feedback(L, 1.0) * ss(tf([{yd}], [{yn}]))   # y/d = P/(1 + L) = (L/(1 + L)) / Cy",
-            yd = nums(&yd),
-            yn = nums(&yn),
         );
     }
     s.push_str(

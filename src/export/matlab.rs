@@ -5,7 +5,7 @@
 //! `pidstd2(Kp, Ti, Td, N, b, c)`. The `tf` coefficients are the design; the standard-form
 //! numbers are recovered from them (a few roundings away) and the script checks they agree.
 
-use super::{comment_lines, header, num, nums, std_pid, Design};
+use super::{comment_lines, header, num, std_pid, tf_texts, Design};
 use std::fmt::Write;
 
 /// The script's text.
@@ -15,9 +15,7 @@ pub fn write(d: &Design) -> String {
         "% ",
         &[],
     );
-    let (pn, pd) = d.plant.tf.to_desc();
-    let (rn, rd) = d.controller.cr.to_desc();
-    let (yn, yd) = d.controller.cy.to_desc();
+    let (pn, pd, theta, rn, rd, yn, yd) = tf_texts(d);
     let _ = write!(
         s,
         r#"
@@ -29,13 +27,6 @@ P = tf([{pn}], [{pd}], 'InputDelay', theta);
 Cr = tf([{rn}], [{rd}]);
 Cy = tf([{yn}], [{yd}]);
 "#,
-        theta = num(d.plant.delay),
-        pn = nums(&pn),
-        pd = nums(&pd),
-        rn = nums(&rn),
-        rd = nums(&rd),
-        yn = nums(&yn),
-        yd = nums(&yd),
     );
     let proper = d.controller.cy.is_proper() && d.controller.cr.is_proper();
     match std_pid(&d.controller) {

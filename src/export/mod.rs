@@ -233,6 +233,19 @@ pub fn nums(xs: &[f64]) -> String {
     xs.iter().map(|&x| num(x)).collect::<Vec<_>>().join(", ")
 }
 
+/// The continuous design as the MATLAB, Julia and python-control scripts write it:
+/// `(pn, pd, theta, rn, rd, yn, yd)`, the coefficient lists ([`nums`], highest power first)
+/// of the plant's rational part's numerator and denominator, the dead time ([`num`]), then
+/// those of `Cr` and of `Cy`.
+pub(crate) fn tf_texts(d: &Design) -> (String, String, String, String, String, String, String) {
+    let (pn, pd) = d.plant.tf.to_desc();
+    let (rn, rd) = d.controller.cr.to_desc();
+    let (yn, yd) = d.controller.cy.to_desc();
+    let theta = num(d.plant.delay);
+    let n = |x: Vec<f64>| nums(&x);
+    (n(pn), n(pd), theta, n(rn), n(rd), n(yn), n(yd))
+}
+
 /// Text reduced to printable ASCII for a comment or a string: Greek letters spelled out, a
 /// few signs replaced, anything else non-printable becomes `?`; line breaks become spaces.
 pub fn ascii(s: &str) -> String {

@@ -7,7 +7,7 @@
 //! frequency responses evaluated by python-control) for checking against pidlab; `--plot`:
 //! the step responses with matplotlib.
 
-use super::{comment_lines, header, num, nums, Design};
+use super::{comment_lines, header, nums, tf_texts, Design};
 use std::fmt::Write;
 
 /// Padé order used for the simulations of the script (stated in its text).
@@ -19,9 +19,7 @@ pub const CHECK_W: [f64; 6] = [0.013, 0.1, 0.37, 1.0, 2.9, 10.0];
 /// The script's text.
 pub fn write(d: &Design) -> String {
     let mut s = comment_lines(&header(d, "python-control script"), "# ", &[]);
-    let (pn, pd) = d.plant.tf.to_desc();
-    let (rn, rd) = d.controller.cr.to_desc();
-    let (yn, yd) = d.controller.cy.to_desc();
+    let (pn, pd, theta, rn, rd, yn, yd) = tf_texts(d);
     let _ = write!(
         s,
         r#"#
@@ -128,13 +126,6 @@ def main(argv):
 if __name__ == "__main__":
     sys.exit(main(sys.argv[1:]))
 "#,
-        pn = nums(&pn),
-        pd = nums(&pd),
-        theta = num(d.plant.delay),
-        rn = nums(&rn),
-        rd = nums(&rd),
-        yn = nums(&yn),
-        yd = nums(&yd),
         pade = PADE_ORDER,
         check_w = nums(&CHECK_W),
     );

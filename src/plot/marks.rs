@@ -1,6 +1,7 @@
 //! Reference marks: the zero axes of the Nyquist plane, vertical marker lines, marked points,
 //! and the title.
 
+use super::color::Rgba;
 use super::lines::{clip, dashes};
 use super::spec::Spec;
 use super::style::{derr, Style};
@@ -63,14 +64,8 @@ pub(super) fn draw_vlines<DB: DrawingBackend, F: Fn((f64, f64)) -> (i32, i32)>(
             for d in dashes(&[a, b], 4.0 * k, 4.0 * k) {
                 root.draw(&PathElement::new(d, ls)).map_err(derr)?;
             }
-            if !v.label.is_empty() {
-                let ts = (FontFamily::SansSerif, st.small)
-                    .into_font()
-                    .color(&v.color.style())
-                    .pos(Pos::new(HPos::Left, VPos::Top));
-                root.draw_text(&v.label, &ts, (b.0 + st.px(3.0), b.1 + st.px(2.0)))
-                    .map_err(derr)?;
-            }
+            let at = (b.0 + st.px(3.0), b.1 + st.px(2.0));
+            draw_label(root, st, &v.label, v.color, VPos::Top, at)?;
         }
     }
     Ok(())
@@ -93,15 +88,29 @@ pub(super) fn draw_points<DB: DrawingBackend, F: Fn((f64, f64)) -> (i32, i32)>(
                 .map_err(derr)?;
             root.draw(&PathElement::new(vec![(c.0, c.1 - r), (c.0, c.1 + r)], ls))
                 .map_err(derr)?;
-            if !p.label.is_empty() {
-                let ts = (FontFamily::SansSerif, st.small)
-                    .into_font()
-                    .color(&p.color.style())
-                    .pos(Pos::new(HPos::Left, VPos::Bottom));
-                root.draw_text(&p.label, &ts, (c.0 + r, c.1 - r))
-                    .map_err(derr)?;
-            }
+            let at = (c.0 + r, c.1 - r);
+            draw_label(root, st, &p.label, p.color, VPos::Bottom, at)?;
         }
+    }
+    Ok(())
+}
+
+/// A mark's label, if any, in the small font and the mark's colour, left-aligned at `at` with
+/// the vertical anchor `v`.
+fn draw_label<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    st: &Style,
+    label: &str,
+    color: Rgba,
+    v: VPos,
+    at: (i32, i32),
+) -> Result<()> {
+    if !label.is_empty() {
+        let ts = (FontFamily::SansSerif, st.small)
+            .into_font()
+            .color(&color.style())
+            .pos(Pos::new(HPos::Left, v));
+        root.draw_text(label, &ts, at).map_err(derr)?;
     }
     Ok(())
 }

@@ -7,14 +7,11 @@
 // page from file:// with the browser offline, and on www/ served over HTTP as ES modules.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { createServer } from 'node:http';
-import { readFile } from 'node:fs/promises';
 import { readFileSync } from 'node:fs';
-import { join, normalize, extname } from 'node:path';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
-import { root, frames, pageUrl } from './harness.mjs';
+import { frames, pageUrl } from './harness.mjs';
 
 let browser;
 
@@ -26,24 +23,6 @@ before(async () => {
 after(async () => {
   if (browser) await browser.close();
 });
-
-const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm' };
-
-/** Serves www/ on 127.0.0.1 (an ephemeral port); resolves to { url, close }. */
-function serveWww() {
-  const www = join(root, 'www');
-  const server = createServer(async (req, res) => {
-    const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^([/\\])+/, '');
-    const file = join(www, path || 'index.html');
-    if (!file.startsWith(www)) { res.writeHead(403).end(); return; }
-    try {
-      res.writeHead(200, { 'content-type': MIME[extname(file)] || 'application/octet-stream' }).end(await readFile(file));
-    } catch {
-      res.writeHead(404).end();
-    }
-  });
-  return new Promise((ok) => server.listen(0, '127.0.0.1', () => ok({ url: `http://127.0.0.1:${server.address().port}/index.html`, close: () => new Promise((r) => server.close(r)) })));
-}
 
 /** Once the render for the latest input has run and its results are on screen (not marked
  *  busy), then two frames. While the full module is held, settled() cannot be used: the method
@@ -61,10 +40,7 @@ async function shown(page) {
  *  shown. */
 async function openHeld(url) {
   const page = await browser.ctx.newPage();
-  const log = { errors: [], requests: [] };
-  page.on('console', (m) => { if (m.type() === 'error') log.errors.push(m.text()); });
-  page.on('pageerror', (e) => log.errors.push(String(e)));
-  page.on('request', (r) => log.requests.push(r.url()));
+  const log = H.record(page);
   await page.addInitScript(() => { window.PIDLAB_TEST_HOLD_FULL = new Promise((r) => { window.__releaseFull = r; }); });
   await page.goto(url);
   await page.waitForSelector('body[data-ready="1"]', { timeout: 30000 });
@@ -184,11 +160,10 @@ test('single-file page, offline: first plots from the first module; a method, ac
 });
 
 test('www/ served: the same, with the modules fetched from pkg-first/ and pkg/', async () => {
-  const srv = await serveWww();
+  const srv = await H.serveWww();
   try {
     const log = await scenario(srv.url, 'www/ served');
-    const base = srv.url.replace(/index\.html$/, '');
-    for (const f of ['pkg-first/pidlab_first_bg.wasm', 'pkg/pidlab_bg.wasm']) assert.ok(log.requests.includes(base + f), f + ' fetched: ' + log.requests.join(' '));
+    for (const f of ['pkg-first/pidlab_first_bg.wasm', 'pkg/pidlab_bg.wasm']) assert.ok(log.requests.includes(srv.base + f), f + ' fetched: ' + log.requests.join(' '));
   } finally {
     await srv.close();
   }

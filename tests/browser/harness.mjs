@@ -1,10 +1,13 @@
-// Shared harness of the browser tests (not a test file: the runner picks up *.test.mjs):
-// headless Debian Chromium through playwright-core on dist/pidlab.html opened from file://.
+// Shared harness of the browser tests (not a test file: the runner picks up *.test.mjs; the
+// benchmark bench/page-latency.mjs imports it too): headless Debian Chromium through
+// playwright-core on dist/pidlab.html opened from file://, or on www/ served (serveWww).
 // Chromium: /usr/bin/chromium (override with PIDLAB_CHROMIUM).
 import assert from 'node:assert/strict';
 import { mkdtempSync, rmSync, existsSync, readFileSync } from 'node:fs';
+import { readFile } from 'node:fs/promises';
+import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
-import { join, resolve, dirname } from 'node:path';
+import { join, resolve, dirname, normalize, extname } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { chromium } from 'playwright-core';
 
@@ -44,15 +47,21 @@ export async function launch({ requirePage = true } = {}) {
   };
 }
 
+/** Records the page's console errors and page errors (`log.errors`) and every request's URL
+ *  (`log.requests`) on `log`; returns `log`. */
+export function record(page, log = { errors: [], requests: [] }) {
+  page.on('console', (m) => { if (m.type() === 'error') log.errors.push(m.text()); });
+  page.on('pageerror', (e) => log.errors.push(String(e)));
+  page.on('request', (r) => log.requests.push(r.url()));
+  return log;
+}
+
 /** Opens the page; records console errors, page errors, every request, and every request that
  *  is not local (aborted). Resolves once the app is ready and has rendered. */
 export async function open(ctx, hash = '', viewport) {
   const page = await ctx.newPage();
   if (viewport) await page.setViewportSize(viewport);
-  const log = { errors: [], requests: [], blocked: [] };
-  page.on('console', (m) => { if (m.type() === 'error') log.errors.push(m.text()); });
-  page.on('pageerror', (e) => log.errors.push(String(e)));
-  page.on('request', (r) => log.requests.push(r.url()));
+  const log = record(page, { errors: [], requests: [], blocked: [] });
   await page.route('**/*', (route) => {
     const u = route.request().url();
     if (/^(file|data|blob):/.test(u)) return route.continue();
@@ -62,6 +71,29 @@ export async function open(ctx, hash = '', viewport) {
   await page.goto(pageUrl + hash);
   await ready(page);
   return { page, log };
+}
+
+const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm' };
+
+/** Serves www/ (the page as ES modules) on 127.0.0.1, an ephemeral port; resolves to
+ *  { base: 'http://127.0.0.1:PORT/', url: base + 'index.html', close }. */
+export function serveWww() {
+  const www = join(root, 'www');
+  const server = createServer(async (req, res) => {
+    const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^([/\\])+/, '');
+    const file = join(www, path || 'index.html');
+    if (!file.startsWith(www)) { res.writeHead(403).end(); return; }
+    try {
+      const body = await readFile(file);
+      res.writeHead(200, { 'content-type': MIME[extname(file)] || 'application/octet-stream' }).end(body);
+    } catch {
+      res.writeHead(404).end();
+    }
+  });
+  return new Promise((ok) => server.listen(0, '127.0.0.1', () => {
+    const base = `http://127.0.0.1:${server.address().port}/`;
+    ok({ base, url: base + 'index.html', close: () => new Promise((r) => server.close(r)) });
+  }));
 }
 
 /** Waits for the app's ready mark and its first render. */
@@ -93,11 +125,12 @@ export async function setInput(page, sel, value, ev = 'input') {
   await frames(page);
 }
 
-/** Per canvas: the number of clearly coloured pixels (a drawn data curve, not grid or text). */
-export async function colouredPixels(page) {
-  return page.evaluate(() => {
+/** Per canvas (those of the plots, or those `sel` selects): the number of clearly coloured
+ *  pixels (a drawn data curve, not grid or text). */
+export async function colouredPixels(page, sel = '.plot canvas') {
+  return page.evaluate((s) => {
     const out = {};
-    for (const c of document.querySelectorAll('.plot canvas')) {
+    for (const c of document.querySelectorAll(s)) {
       const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
       let n = 0;
       for (let i = 0; i < d.length; i += 4) {
@@ -108,7 +141,7 @@ export async function colouredPixels(page) {
       out[c.id] = n;
     }
     return out;
-  });
+  }, sel);
 }
 
 /** The banners' texts. */

@@ -26,23 +26,8 @@ after(async () => {
 /** Opens the page (see harness.mjs: console/page errors, requests, non-local ones aborted). */
 const open = (hash = '', viewport) => H.open(browser.ctx, hash, viewport);
 
-/** Per canvas: the number of clearly coloured pixels (a drawn data curve, not grid or text). */
-async function colouredPixels(page) {
-  return page.evaluate(() => {
-    const out = {};
-    for (const c of document.querySelectorAll('canvas')) {
-      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
-      let n = 0;
-      for (let i = 0; i < d.length; i += 4) {
-        const mx = Math.max(d[i], d[i + 1], d[i + 2]);
-        const mn = Math.min(d[i], d[i + 1], d[i + 2]);
-        if (d[i + 3] > 0 && mx - mn > 60) n++;
-      }
-      out[c.id] = n;
-    }
-    return out;
-  });
-}
+/** Per canvas of the page (all of them): the number of clearly coloured pixels. */
+const colouredPixels = (page) => H.colouredPixels(page, 'canvas');
 
 async function assertPlotsDrawn(page, what) {
   const px = await colouredPixels(page);

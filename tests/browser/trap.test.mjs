@@ -8,13 +8,10 @@
 // HTTP as ES modules (a module worker, www/worker.js).
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { createServer } from 'node:http';
-import { readFile } from 'node:fs/promises';
-import { join, normalize, extname } from 'node:path';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
-import { root, setInput, ready } from './harness.mjs';
+import { setInput, ready } from './harness.mjs';
 
 let browser;
 
@@ -95,42 +92,17 @@ test('single-file page: a forced trap shows a message, re-instantiates the modul
   await plain.page.close();
 });
 
-const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.wasm': 'application/wasm' };
-
-/** Serves www/ on 127.0.0.1 (an ephemeral port); resolves to { url, close }. */
-function serveWww() {
-  const www = join(root, 'www');
-  const server = createServer(async (req, res) => {
-    const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^([/\\])+/, '');
-    const file = join(www, path || 'index.html');
-    if (!file.startsWith(www)) { res.writeHead(403).end(); return; }
-    try {
-      const body = await readFile(file);
-      res.writeHead(200, { 'content-type': MIME[extname(file)] || 'application/octet-stream' }).end(body);
-    } catch {
-      res.writeHead(404).end();
-    }
-  });
-  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve({
-    url: `http://127.0.0.1:${server.address().port}/`,
-    close: () => new Promise((r) => server.close(r)),
-  })));
-}
-
 test('www/ served as ES modules: loads, and recovers from a forced trap the same way', async () => {
-  const srv = await serveWww();
+  const srv = await H.serveWww();
   const page = await browser.ctx.newPage();
-  const log = { errors: [], requests: [], workers: [] };
+  const log = H.record(page, { errors: [], requests: [], workers: [] });
   page.on('worker', (w) => log.workers.push(w.url()));
-  page.on('console', (m) => { if (m.type() === 'error') log.errors.push(m.text()); });
-  page.on('pageerror', (e) => log.errors.push(String(e)));
-  page.on('request', (r) => log.requests.push(r.url()));
   try {
-    await page.goto(srv.url + 'index.html' + testHash(boiler(1.0)));
+    await page.goto(srv.url + testHash(boiler(1.0)));
     await ready(page);
     assert.deepEqual(log.errors, [], 'no error on load');
     await trapAndRecover(page, log);
-    for (const u of log.requests) assert.ok(u.startsWith(srv.url), 'only the page\'s own files: ' + u);
+    for (const u of log.requests) assert.ok(u.startsWith(srv.base), 'only the page\'s own files: ' + u);
     assert.ok(log.requests.some((u) => u.endsWith('/worker.js')), 'the worker module was loaded');
     // two workers at load (fast, slow), a third after the trap (a cancelled long call may add more)
     assert.ok(log.workers.length >= 3 && log.workers.every((u) => u.endsWith('/worker.js')), 'a fresh worker after the trap: ' + log.workers.join(' '));

@@ -3,24 +3,12 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { pidlab } from './pidlab.mjs';
-
-/** Seeded uniform (mulberry32) and Gaussian (Box–Muller) numbers. */
-function rng(seed) {
-  let a = seed >>> 0;
-  const u = () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return (((t ^ (t >>> 14)) >>> 0) + 0.5) / 4294967296;
-  };
-  return () => Math.sqrt(-2 * Math.log(u())) * Math.cos(2 * Math.PI * u());
-}
+import { gauss } from './rng.mjs';
 
 /** A step test of k(1 − τ_z s)e^{−θs}/(τs + 1): u steps 0 → 1 at the first sample ≥ 1, y from
  *  the closed form k[1 − (1 + τ_z/τ)e^{−(t − t_s − θ)/τ}] plus an offset of 5 and noise. */
 export function bump({ k, tau, tau_z, theta }, n, dt, noise, seed) {
-  const g = rng(seed);
+  const g = gauss(seed);
   const t = Array.from({ length: n }, (_, i) => i * dt);
   const ts = t.find((x) => x >= 1);
   const u = t.map((x) => (x >= ts ? 1 : 0));

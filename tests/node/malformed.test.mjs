@@ -5,20 +5,9 @@
 import test from 'node:test';
 import assert from 'node:assert/strict';
 import { pidlab, BOILER, BOILER_TF, IPD, FIELD_PATH } from './pidlab.mjs';
+import { uniform as rng } from './rng.mjs';
 
 const CALLS_PER_EXPORT = 1200;
-
-// Deterministic PRNG (mulberry32) so that a failure is reproducible by its seed.
-function rng(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 function nested(depth) {
   let v = [1];

@@ -75,6 +75,32 @@ pub struct MethodISolution {
     pub td_init: f64,
 }
 
+impl MethodISolution {
+    /// The solution at `td` whose Steps 2-4 gave `fp` = [`fixed_point`]'s (K_C, τ_I, w_P,
+    /// PM_max, _), after `iterations` fixed-point iterations in `outer` outer passes from
+    /// `init` = (τ_D,init, τ_I,init).
+    fn at(
+        td: f64,
+        fp: (f64, f64, f64, f64, usize),
+        iterations: usize,
+        outer: usize,
+        init: (f64, f64),
+    ) -> Self {
+        let (kc, ti, w_p, pm_max, _) = fp;
+        MethodISolution {
+            kc,
+            ti,
+            td,
+            w_p,
+            pm_max,
+            iterations,
+            outer_iterations: outer,
+            ti_init: init.1,
+            td_init: init.0,
+        }
+    }
+}
+
 /// Steps 3-5 of Algorithm I (Steps 2-4 of II and III): at fixed τ_D, iterate
 /// K_C ← Eq. (11) at w_P of Eq. (10), τ_I ← largest root of Eq. (20), until τ_I settles.
 /// Returns (K_C, τ_I, w_P, PM_max, iterations).
@@ -191,19 +217,9 @@ pub fn algorithm1(
     let td = td_factor * base;
     // Step 2: τ_I,init = 1.2 τ_I,min
     let ti_init = 1.2 * (d + tz + 1.0 - td);
-    let (kc, ti, w_p, pm_max, it) = fixed_point(d, tz, td, zeta, ti_init)?;
+    let fp = fixed_point(d, tz, td, zeta, ti_init)?;
     Ok((
-        MethodISolution {
-            kc,
-            ti,
-            td,
-            w_p,
-            pm_max,
-            iterations: it,
-            outer_iterations: 1,
-            ti_init,
-            td_init: td,
-        },
+        MethodISolution::at(td, fp, fp.4, 1, (td, ti_init)),
         warnings,
     ))
 }
@@ -253,19 +269,9 @@ pub fn algorithm2(d: f64, tz: f64, zeta: f64, init: Option<(f64, f64)>) -> Resul
             }
         }
         if let Some(td) = done {
-            let (kc, ti, w_p, pm_max, it) = fixed_point(d, tz, td, zeta, ti_warm)?;
-            total += it;
-            return Ok(MethodISolution {
-                kc,
-                ti,
-                td,
-                w_p,
-                pm_max,
-                iterations: total,
-                outer_iterations: outer,
-                ti_init: ti0,
-                td_init: td0,
-            });
+            let fp = fixed_point(d, tz, td, zeta, ti_warm)?;
+            total += fp.4;
+            return Ok(MethodISolution::at(td, fp, total, outer, (td0, ti0)));
         }
     }
     Err(Error::new(
@@ -337,6 +343,23 @@ pub struct Alg3Info {
     pub j: f64,
     /// Number of simulations run.
     pub simulations: usize,
+}
+
+/// Algorithm III's result: `sol` with the criterion of a unit load step there (one more
+/// simulation, `sims` before it), as both [`algorithm3_reference`] and [`algorithm3`] end.
+fn alg3_result(
+    p: &Process,
+    criterion: &str,
+    sol: MethodISolution,
+    sims: usize,
+) -> Result<(MethodISolution, Alg3Info)> {
+    let (kp, ki, kd) = p.ipd_from_series(sol.kc, sol.ti, sol.td);
+    let j = load_criterion(p, kp, ki, kd, criterion, p.tau_p * (60.0 + 20.0 * sol.ti))?;
+    let info = Alg3Info {
+        j,
+        simulations: sims + 1,
+    };
+    Ok((sol, info))
 }
 
 /// Algorithm III's initial pair (τ_D,init, τ_I,init): `init` when given, else Eqs. 21-22 exact.
@@ -417,28 +440,10 @@ pub fn algorithm3_reference(
             Some(((x - 0.15 * x.max(0.1)).max(lo), x + 0.15 * x.max(0.1)))
         };
         if step.abs() <= 1e-5 * td.max(1.0) && !at_edge {
-            let (kc, ti_f, w_p, pm_max, it) = fixed_point(d, tz, td, zeta, ti)?;
-            total += it;
-            let (kp, ki, kd) = p.ipd_from_series(kc, ti_f, td);
-            let j = load_criterion(p, kp, ki, kd, criterion, p.tau_p * (60.0 + 20.0 * ti_f))?;
-            sims += 1;
-            return Ok((
-                MethodISolution {
-                    kc,
-                    ti: ti_f,
-                    td,
-                    w_p,
-                    pm_max,
-                    iterations: total,
-                    outer_iterations: outer,
-                    ti_init: ti0,
-                    td_init: td0,
-                },
-                Alg3Info {
-                    j,
-                    simulations: sims,
-                },
-            ));
+            let fp = fixed_point(d, tz, td, zeta, ti)?;
+            total += fp.4;
+            let sol = MethodISolution::at(td, fp, total, outer, (td0, ti0));
+            return alg3_result(p, criterion, sol, sims);
         }
     }
     Err(Error::new(
@@ -624,28 +629,10 @@ fn alg3_root(
         return Ok(None);
     };
     // the solution as the reference returns it: Steps 2-4 at τ_D, then J there
-    let Ok((kc, ti_f, w_p, pm_max, it)) = fixed_point(d, tz, td, zeta, ti_warm) else {
+    let Ok(fp) = fixed_point(d, tz, td, zeta, ti_warm) else {
         return Ok(None);
     };
-    total += it;
-    let (kp, ki, kd) = p.ipd_from_series(kc, ti_f, td);
-    let j = load_criterion(p, kp, ki, kd, criterion, p.tau_p * (60.0 + 20.0 * ti_f))?;
-    sims += 1;
-    Ok(Some((
-        MethodISolution {
-            kc,
-            ti: ti_f,
-            td,
-            w_p,
-            pm_max,
-            iterations: total,
-            outer_iterations: evals,
-            ti_init: ti0,
-            td_init: td0,
-        },
-        Alg3Info {
-            j,
-            simulations: sims,
-        },
-    )))
+    total += fp.4;
+    let sol = MethodISolution::at(td, fp, total, evals, (td0, ti0));
+    alg3_result(p, criterion, sol, sims).map(Some)
 }
