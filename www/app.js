@@ -205,7 +205,7 @@ function render(arrival = false) {
       perf.firstPhases = { ...perf.phases };
       // the slow worker's scans and sweeps, and the full module's compilation, wait until the
       // first plots (drawn by the first module) are on screen
-      afterPaint(() => { W.holdSlow(false); E.loadFull().catch(() => {}); });
+      afterPaint(() => { W.holdSlow(false); warmDesign(); E.loadFull().catch(() => {}); });
     }
     showEnvelope(r);
     scheduleClassroom(r);
@@ -333,8 +333,9 @@ function warmPlot(i = 0, again = false) {
 }
 
 /** The slow worker computes the current design once (its module compiles the code of a design
- *  on the first calls): when the full module arrives. (At start-up the page's thread computes
- *  the first design with the first module, whose compiled code the workers share.) */
+ *  on the first calls, and the fast worker's next calls find it compiled): after the first
+ *  plots are painted (the first design itself needs no worker), and when the full module
+ *  arrives. */
 function warmDesign() {
   if (!store.state.method || store.state.method === '__literal') return;
   const params = methodParams();
@@ -434,10 +435,11 @@ async function main() {
   if (Object.keys(ins.values).length) store.state = S.cleanState(I.lockValues(store.state));
   // the first design (the method panel's λ for Ms = 1.6, then tune, simulate, analyze), unless
   // carried by the page, is computed on this thread with the first module, in this task, and
-  // its plots drawn at once:
-  // no worker round trip before the first plots (worker-client.js inlineStartup; README, "The
-  // page's start-up, measured"); every later call goes to the workers
+  // its plots drawn at once: no worker round trip before the first plots (worker-client.js
+  // inlineStartup; README, "The page's start-up, measured"); every later call goes to the
+  // workers (off after render() below, and after this task whatever happens in it)
   W.inlineStartup(true);
+  setTimeout(() => W.inlineStartup(false), 0);
   // (the single file carries the default page's first design, computed when it was built:
   // www/seed.js; its answers are found in the memo by the requests below)
   W.seed(readSeed());
