@@ -141,6 +141,21 @@ for (const [dir, base] of [['pkg', 'pidlab'], ['pkg-first', 'pidlab_first']]) {
     process.exit(3);
   }
 }
+// The default page's first design (www/seed.js), computed here by the first module's own wasm:
+// the page finds these answers in its memo instead of computing them at start-up.
+let seedText;
+{
+  const glue = await import(pathToFileURL(join(www, 'pkg-first', 'pidlab_first.js')).href + '?seed');
+  glue.initSync({ module: readFileSync(join(www, 'pkg-first', 'pidlab_first_bg.wasm')) });
+  const S = await import(pathToFileURL(join(www, 'state.js')).href);
+  const Seed = await import(pathToFileURL(join(www, 'seed.js')).href);
+  const m = glue.methods();
+  S.setFamilies(m.families);
+  const simInput = (st) => { const out = {}; for (const k of ['actuator', 'sampling', 'noise']) if (st[k]) out[k] = st[k]; return out; };
+  const entries = Seed.firstDesign((fn, input) => glue[fn](input), m.methods, S.defaultState(), { controllerOf: S.controllerOf, simInput });
+  if (entries.length < 3) fail('seed: the default page\'s first design has ' + entries.length + ' requests (expected the tune, simulate and analyze at least)');
+  seedText = Seed.encodeSeed(entries, (b) => Buffer.from(b.buffer, b.byteOffset, b.byteLength).toString('base64'));
+}
 const css = read(join(www, 'style.css')).toString('utf8');
 const wasmFirst = read(join(www, 'pkg-first', 'pidlab_first_bg.wasm'));
 const wasmFull = read(join(www, 'pkg', 'pidlab_bg.wasm'));
@@ -233,7 +248,8 @@ rep(/<link rel="stylesheet" href="style.css">/, `<style>${css}</style>\n<script>
 // The full module as base64 in a data block (a script element of a non-JavaScript type is never
 // run, so the CSP need not allow it), before the module script: engine.js reads it by id.
 const fullData = `<script type="application/octet-stream" id="pidlab-wasm-full">${wasmFull.toString('base64')}</script>`;
-rep(/<script type="module" src="app.js"><\/script>/, `${fullData}\n<script type="module">${script}</script>`, 'the app.js script tag');
+const seedData = `<script type="application/json" id="pidlab-first-design">${seedText}</script>`;
+rep(/<script type="module" src="app.js"><\/script>/, `${fullData}\n${seedData}\n<script type="module">${script}</script>`, 'the app.js script tag');
 
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, page);

@@ -30,6 +30,7 @@ import * as Er from './errors.js';
 import * as Hi from './history.js';
 import * as XD from './export-data.js';
 import * as RL from './realloop.js';
+import { readSeed } from './seed.js';
 
 /**
  * Shows the state in every control. A panel whose rows have the shapes it shows already (the
@@ -175,7 +176,8 @@ function render(arrival = false) {
   try {
     if (!arrival) C.updateRanges();
     const r = compute();
-    if (!r.pending && inputFrame.due) {
+    // (the first plots are drawn at once: no frame before them shows anything of an input)
+    if (!r.pending && inputFrame.due && perf.firstPlotsAt) {
       setBusy(true);
       applyLater();
       return;
@@ -203,7 +205,7 @@ function render(arrival = false) {
       perf.firstPhases = { ...perf.phases };
       // the slow worker's scans and sweeps, and the full module's compilation, wait until the
       // first plots (drawn by the first module) are on screen
-      afterPaint(() => { W.holdSlow(false); E.loadFull().catch(() => {}); });
+      afterPaint(() => { W.holdSlow(false); warmDesign(); E.loadFull().catch(() => {}); });
     }
     showEnvelope(r);
     scheduleClassroom(r);
@@ -331,7 +333,9 @@ function warmPlot(i = 0, again = false) {
 }
 
 /** The slow worker computes the current design once (its module compiles the code of a design
- *  on the first calls: at start-up, and when the full module arrives). */
+ *  on the first calls, and the fast worker's next calls find it compiled): after the first
+ *  plots are painted (the first design itself needs no worker), and when the full module
+ *  arrives. */
 function warmDesign() {
   if (!store.state.method || store.state.method === '__literal') return;
   const params = methodParams();
@@ -395,6 +399,7 @@ async function main() {
     S.setFamilies(store.families);
     const pr = E.call('presets');
     store.presets = Array.isArray(pr) ? pr : (pr && pr.presets) || [];
+    perf.startup.methods = performance.now();
   } catch (e) {
     $('loading').textContent = 'The computation module failed: ' + errText(e);
     return;
@@ -428,7 +433,18 @@ async function main() {
   }
   // instructor mode: the values of `lock=key:value`, checked like a URL's state
   if (Object.keys(ins.values).length) store.state = S.cleanState(I.lockValues(store.state));
+  // the first design (the method panel's λ for Ms = 1.6, then tune, simulate, analyze), unless
+  // carried by the page, is computed on this thread with the first module, in this task, and
+  // its plots drawn at once: no worker round trip before the first plots (worker-client.js
+  // inlineStartup; README, "The page's start-up, measured"); every later call goes to the
+  // workers (off after render() below, and after this task whatever happens in it)
+  W.inlineStartup(true);
+  setTimeout(() => W.inlineStartup(false), 0);
+  // (the single file carries the default page's first design, computed when it was built:
+  // www/seed.js; its answers are found in the memo by the requests below)
+  W.seed(readSeed());
   buildAll();
+  perf.startup.controls = performance.now();
   buildExport(store.exportTargets);
   P.refreshPins();
   wire();
@@ -459,7 +475,6 @@ async function main() {
   };
   // The browser tests' hooks, with #test=1 only: make the live instance trap like a dead one.
   if (dec.test) window.__pidlabTest = { forceTrap: W.forceTrap, generation: W.generation, spareReady: () => true, forceTrapMain: E.forceTrap, holdSlow: (held) => W.holdSlow(held, 'test') };
-  warmDesign();
   // the full module, once live, serves every call: its code for the current design and the
   // plots is compiled now, not in the next input's task
   E.onFull(() => { warmDesign(); setTimeout(() => warmPlot(0, true), 0); });
@@ -468,6 +483,7 @@ async function main() {
   // code the first plots need is compiled by then (WARM_SPECS)
   setTimeout(() => warmPlot(), 0);
   render();
+  W.inlineStartup(false);
   Api.start(ins.api, () => settled(false));
   document.body.setAttribute('data-ready', '1');
 }

@@ -4,7 +4,9 @@
 
 // inputs: renders for a new input so far; shown: the `inputs` count whose results are on screen
 // (equal when the page shows its latest input).
-// startup: performance.now() at the app's start, the module compiled, the controls built;
+// startup: performance.now() at the app's start (script), the first module compiled
+// (compiled), methods() and presets() read (methods), the controls built (controls: with the
+// method panel's λ for Ms = 1.6, computed on this thread at start-up), everything wired (built);
 // firstPlotsAt: when the first response plots were drawn (bench/page-latency.mjs --first), and
 // firstPhases: that render's phases;
 // classroom: the time of each later chunk that draws a classroom panel (app.js), the last 1000.

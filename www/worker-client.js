@@ -25,11 +25,18 @@
 // when the full module is handed to the workers (upgrade()); a parked request is still dropped
 // when no pass wants it any more. From then on every call goes to the full module.
 //
+// Start-up (README, "The page's start-up, measured"): until the first plots are drawn, need()
+// of the design's own consumers (render, standin) computes tune, simulate and analyze on the
+// page's thread with its instance of the same first module (engine.js call()), memoized as a
+// worker's answer would be: the first design then waits for no worker (their start, their
+// instantiation, three round trips in turn). inlineStartup(false) ends it (app.js, after the
+// first plots). A call the first module refuses goes to the workers as usual.
+//
 // A trap (a wasm RuntimeError, e.g. a Rust panic) kills that worker's instance: the call's
 // answer is an EngineCrash (engine.js, shown as a banner), the worker is replaced, and the
 // input that trapped is not run again by itself (the crash stays in the memo until the next
 // user change, forgetCrashes()).
-import { EngineCrash, reportCrash, loadFull, onFull } from './engine.js';
+import { EngineCrash, NeedsFull, reportCrash, loadFull, onFull, call } from './engine.js';
 
 /** The answer of need() while the request is queued or running. */
 export const PENDING = Symbol('pending');
@@ -57,9 +64,60 @@ const ctl = {
   memo: new Map(), // key -> { value } | { error } | { crash }
   traps: 0,
   nextId: 1,
-  stats: { calls: {}, cancelled: 0, dropped: 0, parked: 0, modules: { first: {}, full: {} } },
+  stats: { calls: {}, cancelled: 0, dropped: 0, parked: 0, seeded: 0, seedHits: 0, modules: { first: {}, full: {} } },
   trace: null, // an array while tracing (traceOn()): [time, event, lane, fn]
+  inline: false, // start-up: the design's calls run on the page's thread (inlineStartup)
 };
+
+// what inlineStartup() computes on the page's thread: the first design's calls
+const INLINE_CONSUMERS = ['render', 'standin'];
+const INLINE_FNS = ['tune', 'simulate', 'analyze'];
+
+/** Start-up (true) until the first plots are drawn (false): need() of the render and standin
+ *  consumers computes tune, simulate and analyze on the page's thread. */
+export function inlineStartup(on) {
+  // (test hook, tests/browser/firstpage.test.mjs: the workers compute the first design too)
+  ctl.inline = !!on && !globalThis.PIDLAB_TEST_NO_INLINE;
+}
+
+/** Answers known before they are asked (www/seed.js: the default page's first design, computed
+ *  when the single file was built by the same first module): [[fn, input, value], …] into the
+ *  memo. stats().seeded counts them, stats().seedHits the ones a request found. */
+export function seed(entries) {
+  for (const [fn, input, value] of entries) {
+    remember(keyOf(fn, input), { value, seed: true });
+    ctl.stats.seeded++;
+  }
+}
+
+/** fn(input) on the page's thread, as the worker would answer it: the memo entry ({ value },
+ *  { error } with the module's error's name and message, { crash }), or null when the first
+ *  module refuses the call (the workers then take it, and park it for the full module). */
+function computeHere(fn, input) {
+  const t0 = performance.now();
+  let entry;
+  try {
+    entry = { value: call(fn, input) };
+  } catch (e) {
+    if (e instanceof NeedsFull) return null;
+    if (e instanceof EngineCrash) {
+      // (engine.js has restarted the page's instance and reports the crash)
+      entry = { crash: e };
+    } else {
+      // (the worker's answer carries the error's name and message: the same Error here)
+      const err = new Error(e && e.message !== undefined ? String(e.message) : String(e));
+      err.name = (e && e.name) || 'Error';
+      entry = { error: err };
+    }
+  }
+  const s = (ctl.stats.calls[fn] = ctl.stats.calls[fn] || { n: 0, ms: 0, last: 0 });
+  s.n++;
+  s.last = performance.now() - t0;
+  s.ms += s.last;
+  s.inline = (s.inline || 0) + 1;
+  note('inline ' + s.last.toFixed(1), 'page', fn);
+  return entry;
+}
 const note = (ev, lane, fn) => { if (ctl.trace) ctl.trace.push([performance.now(), ev, lane, fn]); };
 
 /** Starts recording what the workers do (the benchmark's and the tests' diagnostics); returns
@@ -363,8 +421,17 @@ export function need(consumer, fn, input) {
   const e = ctl.memo.get(key);
   if (e) {
     remember(key, e);
+    if (e.seed) { ctl.stats.seedHits++; e.seed = false; }
     if ('value' in e) return e.value;
     throw e.error || e.crash;
+  }
+  if (ctl.inline && INLINE_CONSUMERS.includes(consumer) && INLINE_FNS.includes(fn)) {
+    const here = computeHere(fn, input);
+    if (here) {
+      remember(key, here);
+      if ('value' in here) return here.value;
+      throw here.error || here.crash;
+    }
   }
   enqueue(consumer, fn, input, key, null);
   return PENDING;

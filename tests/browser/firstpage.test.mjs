@@ -38,8 +38,12 @@ async function shown(page) {
 
 /** Opens `url` with the full module's load held; resolves once the first plots are drawn and
  *  shown. */
-async function openHeld(url) {
+async function openHeld(url, { noInline = false, noSeed = false } = {}) {
   const page = await browser.ctx.newPage();
+  // (test hooks: the first design not carried by the file (www/seed.js), not computed on the
+  // page's thread at start-up (worker-client.js inlineStartup))
+  if (noInline) await page.addInitScript(() => { window.PIDLAB_TEST_NO_INLINE = true; });
+  if (noSeed) await page.addInitScript(() => { window.PIDLAB_TEST_NO_SEED = true; });
   const log = H.record(page);
   await page.addInitScript(() => { window.PIDLAB_TEST_HOLD_FULL = new Promise((r) => { window.__releaseFull = r; }); });
   await page.goto(url);
@@ -81,16 +85,26 @@ async function clickExport(page) {
 
 async function scenario(url, label) {
   const { page, log } = await openHeld(url);
-  // 1. The first plots come from the first module: the page thread's plot calls and the
-  // workers' tune/simulate/analyze, none from the full module, which is not live.
+  // 1. The first plots come from the first module: the plot calls and the first design (tune,
+  // simulate, analyze; computed on the page's thread at start-up, worker-client.js
+  // inlineStartup, or carried by the single file, www/seed.js), none from the full module,
+  // which is not live.
   let mods = await page.evaluate(() => window.__pidlab.modules());
   assert.equal(mods.full, false, label + ': the full module is held');
   assert.ok(mods.page.first.plot >= 4, label + ': the four response plots drawn by the first module: ' + JSON.stringify(mods.page));
+  // (the single file carries the first design's answers: www/seed.js; served, the page's
+  // thread computes them)
+  if (label === 'www/ served') for (const fn of ['tune', 'simulate', 'analyze']) assert.ok(mods.page.first[fn] >= 1, label + ': ' + fn + ' of the first design answered by the first module on the page: ' + JSON.stringify(mods.page));
   assert.deepEqual(mods.page.full, {});
-  for (const fn of ['tune', 'simulate', 'analyze']) assert.ok(mods.workers.first[fn] >= 1, label + ': ' + fn + ' answered by the first module: ' + JSON.stringify(mods.workers));
   assert.deepEqual(mods.workers.full, {});
   const px = await H.colouredPixels(page);
   for (const id of ['plot-servo', 'plot-load', 'plot-u', 'plot-nyquist']) assert.ok(px[id] > 100, `${label}: ${id} drawn (${px[id]} coloured pixels)`);
+  // a λ move after start-up: computed by the workers, on the first module
+  await put(page, '#mp-lambda', 1.2);
+  await shown(page);
+  mods = await page.evaluate(() => window.__pidlab.modules());
+  for (const fn of ['tune', 'simulate', 'analyze']) assert.ok(mods.workers.first[fn] >= 1, label + ': ' + fn + ' answered by the first module in a worker: ' + JSON.stringify(mods.workers));
+  assert.deepEqual(mods.workers.full, {});
   const m0 = await msCheck(page);
   assert.equal(m0.shown, String(m0.ms), label + ': Ms readout = analyze() of the design');
   await noRefusalShown(page);
@@ -166,6 +180,50 @@ test('www/ served: the same, with the modules fetched from pkg-first/ and pkg/',
     for (const f of ['pkg-first/pidlab_first_bg.wasm', 'pkg/pidlab_bg.wasm']) assert.ok(log.requests.includes(srv.base + f), f + ' fetched: ' + log.requests.join(' '));
   } finally {
     await srv.close();
+  }
+});
+
+/** What the page shows of its design: the state, every readout, the metrics table, the banners
+ *  and the pixels of the four response plots. */
+const shows = (page) => page.evaluate(() => ({
+  state: window.__pidlab.state(),
+  readouts: [...document.querySelectorAll('#readouts [data-value]')].map((e) => [e.id, e.getAttribute('data-value'), e.textContent]),
+  metrics: document.getElementById('metrics').innerText,
+  banners: document.getElementById('banners').innerText,
+  plots: ['plot-servo', 'plot-load', 'plot-u', 'plot-nyquist'].map((id) => document.getElementById(id).toDataURL()),
+}));
+
+test('start-up: the first design carried by the single file, or computed on the page\'s thread, shows exactly what the workers compute', async () => {
+  // three loads of the default page, the full module held in each (the first plots are the
+  // first module's, and nothing after them, e.g. the plant's admissible intervals, changes the
+  // design meanwhile): as built (the answers carried by the file: www/seed.js), without them
+  // (computed on the page's thread: worker-client.js inlineStartup), and without either (the
+  // workers compute them, as before both)
+  const seeded = await openHeld(pageUrl);
+  const inline = await openHeld(pageUrl, { noSeed: true });
+  const workers = await openHeld(pageUrl, { noSeed: true, noInline: true });
+  const [a, b, c] = await Promise.all([seeded, inline, workers].map((x) => x.page.evaluate(() => window.__pidlab.worker())));
+  const DESIGN = ['tune', 'simulate', 'analyze'];
+  // as built: every carried answer found (the λ for Ms = 1.6, the tune, simulate, analyze),
+  // none of them computed anywhere
+  assert.ok(a.seeded >= 4 && a.seedHits === a.seeded, 'every carried answer used: ' + JSON.stringify(a));
+  for (const fn of DESIGN) assert.ok(!a.calls[fn] && !a.modules.first[fn], fn + ' not computed: ' + JSON.stringify(a));
+  // without them: computed on the page's thread, no worker asked
+  assert.equal(b.seeded, 0);
+  for (const fn of DESIGN) {
+    assert.ok(b.calls[fn] && b.calls[fn].inline === b.calls[fn].n, fn + ' computed on the page at start-up: ' + JSON.stringify(b.calls));
+    assert.ok(!b.modules.first[fn], fn + ' not asked of a worker: ' + JSON.stringify(b.modules));
+    assert.ok(c.calls[fn] && !c.calls[fn].inline && c.modules.first[fn] >= 1, fn + ' computed by a worker without either: ' + JSON.stringify(c));
+  }
+  const [sa, sb, sc] = await Promise.all([seeded, inline, workers].map((x) => shows(x.page)));
+  assert.equal(sa.state.method, 'praveen_kumar');
+  assert.equal(typeof sa.state.params.lambda, 'number', 'λ for Ms = 1.6 solved');
+  assert.ok(sa.readouts.length >= 3, JSON.stringify(sa.readouts));
+  assert.deepEqual(sa, sc, 'carried = computed by the workers');
+  assert.deepEqual(sb, sc, 'computed on the page = computed by the workers');
+  for (const x of [seeded, inline, workers]) {
+    assert.deepEqual(x.log.errors, []);
+    await x.page.close();
   }
 });
 
