@@ -744,7 +744,9 @@ fn tables_2_to_5(s: &mut String) {
          interval; our dt = 0.01 values are 3× the printed ones for Example 1, every-tenth-sample \
          values (TV(0.1)) are within 30 % of print. Example 2 (smaller abs L(j∞), larger θ) agrees within 5 %. \
          TV is reported, not asserted.\n\
-         - Pai et al. 2010: the paper does not give the structure. With the series PID and derivative \
+         - Pai et al. 2010: the paper does not give the structure, and Pai et al. 2010 itself (J. \
+         Process Control 20(6):726-733) is in none of the public corpora searched (by title, \
+         authors, abstract wording and its printed settings). With the series PID and derivative \
          filter 0.1τ_D on the error, Example 1's regulatory row reproduces (IAE, ISE, M_p, t_s, TV \
          within 2.5 %), and its +40 % delay row roughly (M_p equal, IAE 11 % high); the servo rows \
          and Example 2 do not (Example 2 with +40 % delay is unstable with this mapping, the printed \
