@@ -535,3 +535,74 @@ fn filtered_design_tends_to_the_ideal_one() {
     assert!((d2 / d1 - 0.5).abs() < 0.1, "{d1} {d2}");
     assert!(d1 > 1e-4 && d1 < 0.01, "{d1}");
 }
+
+/// The signed integral of the error is fixed by the gains (the plant integrates, so u(∞) = 0
+/// after a set-point step and −d after a load step): ∫e = (1 − ε)k_p·r/k_i (servo) and
+/// ∫y = d/k_i (load), the identity the report uses to show that Example 2's printed nominal
+/// regulatory IAE (0.8433 < d/k_i = 0.9176) is not of this loop.
+#[wasm_bindgen_test(unsupported = test)]
+fn signed_error_integral_is_fixed_by_the_gains() {
+    use pidlab::rules::praveen_kumar_narayana::studies;
+    for example in [1usize, 2] {
+        let p = [pk::EX1, pk::EX2_REDUCED][example - 1];
+        let d = pk::design(&p, pk::LAMBDA_PAPER[example - 1]).unwrap();
+        let c = studies::proposed_controller(example).unwrap();
+        let plant = studies::simulated_plant(example, false);
+        let t_end = if example == 1 { 100.0 } else { 600.0 };
+        for (sp, load, expected) in [
+            (0.2, 0.0, (1.0 - pk::EPSILON_DEFAULT) * d.kp * 0.2 / d.ki),
+            (0.0, 0.2, -0.2 / d.ki),
+        ] {
+            let r = simulate(
+                &plant,
+                &c,
+                &Scenario::steps(t_end, 0.01, 0.0, sp, 0.0, load),
+            )
+            .unwrap();
+            // Trapezoid rule on the 0.01 samples of a continuous, piecewise-smooth e: its error
+            // is O(h²) ≈ 1e-5 of the integral; 1e-4 relative leaves room and still fails for
+            // any wrong gain or ε (a 1 % change).
+            let e: Vec<f64> = r.y.iter().map(|y| sp - y).collect();
+            let integral: f64 = e.windows(2).map(|w| 0.5 * 0.01 * (w[0] + w[1])).sum();
+            assert!(
+                ((integral - expected) / expected).abs() < 1e-4,
+                "example {example}, sp {sp}: {integral} vs {expected}"
+            );
+        }
+    }
+    // Example 2's printed nominal regulatory IAE against the bound IAE ≥ abs ∫e = d/k_i.
+    let d = pk::design(&pk::EX2_REDUCED, pk::LAMBDA_PAPER[1]).unwrap();
+    let bound = 0.2 / d.ki;
+    assert!((bound - 0.91761).abs() < 5e-6, "{bound}");
+    assert!(pk::tables::TABLES_2_TO_5[1].proposed_regulatory.iae < bound);
+}
+
+/// The study option of the report's proposed rows: the derivative of y filtered by a lag
+/// 0.015 (fitted on Example 2). Example 2's +40 % dead-time rows then reproduce their
+/// printed IAE, ISE, ITAE, M_p and t_s within 2 % (the report's criterion; the printed
+/// values have 4-5 significant digits, so 2 % is far above print rounding), where the ideal
+/// derivative leaves the servo and regulatory ITAE 4.1 % and 4.3 % low and the regulatory
+/// t_s 13 % short.
+#[wasm_bindgen_test(unsupported = test)]
+fn fitted_derivative_lag_reproduces_example2_delay_rows() {
+    use pidlab::rules::praveen_kumar_narayana::studies;
+    let table = pk::tables::TABLES_2_TO_5
+        .iter()
+        .find(|t| t.example == 2 && t.delay_plus_40)
+        .unwrap();
+    let plant = studies::simulated_plant(2, true);
+    let c = studies::proposed_controller_filtered(2, 0.015).unwrap();
+    let (sv, rg) = studies::servo_and_regulatory(&plant, &c, 600.0).unwrap();
+    for (m, p) in [
+        (sv, table.proposed_servo.values()),
+        (rg, table.proposed_regulatory.values()),
+    ] {
+        for (k, ours) in [m.iae, m.ise, m.itae, m.mp, m.ts].into_iter().enumerate() {
+            assert!(
+                ((ours - p[k]) / p[k]).abs() < 0.02,
+                "column {k}: {ours} vs {}",
+                p[k]
+            );
+        }
+    }
+}
