@@ -40,6 +40,7 @@ import { readSeed } from './seed.js';
  */
 function buildAll() {
   const focused = document.activeElement && document.activeElement !== document.body ? document.activeElement.id : '';
+  structure.due = false;
   C.buildFamily();
   C.buildMethod();
   C.buildPert();
@@ -52,15 +53,48 @@ function buildAll() {
   if (focused && document.activeElement && document.activeElement.id !== focused && $(focused)) $(focused).focus();
 }
 
+// A structural change of the state (another plant family or method, a preset, the embed API's
+// state): the input's frame shows the control's own change (the select's value, the family's
+// sliders, the preset's text); the other panels (the method's, built anew: 5–10 ms of
+// script, style and layout) are built in the task after that frame, and the render follows
+// them. Until then the results are marked busy, and a render (another input meanwhile) waits
+// for the panels: it is the panels' build that renders.
+const structure = { due: false };
+function rebuildSoon() {
+  C.buildFamily();
+  Pr.showPresetInfo();
+  panelsSoon();
+}
+
+/** Every panel built (buildAll), then a render, in the task after the frame (see rebuildSoon). */
+function panelsSoon() {
+  setBusy(true);
+  if (structure.due) return;
+  structure.due = true;
+  afterPaint(() => {
+    if (!structure.due) return; // (built meanwhile: a restored state)
+    buildAll();
+    changed();
+  });
+}
+
 // The embed choices (a checkbox per control row) are built again only when the rows or the
-// chosen keys changed: the rows kept in place need none.
+// chosen keys changed: the rows kept in place need none. They are built in a task after the
+// frame (the box is below the plots: 30-odd rows of checkboxes rebuilt cost the input's frame script,
+// style and layout).
 let embedKey = '';
+const embedSoon = { due: false };
 function embedChoices() {
-  const rows = [...document.querySelectorAll('.controls .row[data-key]')].map((r) => { const l = r.querySelector('label'); return [r.getAttribute('data-key'), l ? l.textContent : '']; });
-  const key = JSON.stringify([rows, store.state.show]);
-  if (key === embedKey && $('embed-choices').childElementCount === rows.length) return;
-  embedKey = key;
-  Sh.buildEmbedChoices();
+  if (embedSoon.due) return;
+  embedSoon.due = true;
+  afterPaint(() => {
+    embedSoon.due = false;
+    const rows = [...document.querySelectorAll('.controls .row[data-key]')].map((r) => { const l = r.querySelector('label'); return [r.getAttribute('data-key'), l ? l.textContent : '']; });
+    const key = JSON.stringify([rows, store.state.show]);
+    if (key === embedKey && $('embed-choices').childElementCount === rows.length) return;
+    embedKey = key;
+    Sh.buildEmbedChoices();
+  });
 }
 
 /** The banners of calls that crashed the module (a trap) since the last render. */
@@ -171,6 +205,8 @@ function setBusy(b) {
 function render(arrival = false) {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
+  // the panels of a structural change are built first (rebuildSoon): their build renders
+  if (structure.due) { setBusy(true); return; }
   if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); }
   W.begin('render');
   try {
@@ -246,10 +282,8 @@ function wire() {
     st.method = $('method').value || null;
     st.params = {};
     st.target = null;
-    C.buildMethod();
-    embedChoices();
-    Sh.applyEmbed();
-    changed();
+    // the input's frame shows the select; the method's panel, built anew, the next one
+    panelsSoon();
   });
   $('target-on').addEventListener('change', () => {
     const st = store.state;
@@ -299,7 +333,7 @@ function wire() {
  *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep; `panels` false:
  *  the readouts and response plots only, the classroom panels drawn in later frames aside). */
 function isCurrent(all = false, sweep = true, panels = true) {
-  const waiting = (panels && classroom.scheduled) || later.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  const waiting = (panels && classroom.scheduled) || later.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 
@@ -404,7 +438,7 @@ async function main() {
     $('loading').textContent = 'The computation module failed: ' + errText(e);
     return;
   }
-  connect({ render, rebuild: () => { buildAll(); changed(); } });
+  connect({ render, rebuild: rebuildSoon });
   // The worker's answers: a render's render again; admissible's rebuild the method's sliders.
   W.onArrival('render', () => changed(false, true));
   W.onArrival('ranges', C.rangesArrived);

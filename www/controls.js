@@ -128,6 +128,13 @@ export function slider({ id, key, label, unit, min, max, step, value, onInput, d
    *  preset, reset): the value exactly in the number box, the field's messages cleared, a value
    *  outside the interval said beside the field. */
   row.reset = (v, d = false) => {
+    // the row shows v already, enabled as asked, with no message beside it: nothing to write
+    // (a restored state changes one or two values; the other rows of its panels stay as they are)
+    if (num.value === String(v) && num.disabled === d && range.disabled === d && !document.getElementById(num.id + '-err')) {
+      range.value = String(v); // (the thumb: the same position is no change)
+      Er.forget(num.id);
+      return;
+    }
     row.setDisabled(d);
     range.value = String(v);
     num.value = String(v);

@@ -5,7 +5,7 @@
 // state.noise, each null when off. A value the page can check itself (crossed limits, h ≤ 0,
 // a negative std, tt ≤ 0) is refused beside its field and not applied; the module's own errors
 // on these fields (`actuator.*`, `sampling.*`, `noise.*`) are shown there too (errors.js).
-import { $, el } from './dom.js';
+import { $, el, afterPaint } from './dom.js';
 import { store, changed } from './store.js';
 import * as Er from './errors.js';
 
@@ -45,6 +45,13 @@ export function limitLines(state) {
   return out;
 }
 
+/** A field changed the state in place: the panel no longer shows the settings it was built
+ *  with (buildReal builds it again for any state then). */
+function typed() {
+  const box = $('real-params');
+  if (box) box.shownKey = null;
+}
+
 /** A number input row in the scenario's style (label, unit); `blank`: what an empty field means. */
 function numRow(id, label, value, onValue, blank) {
   Er.forget(id);
@@ -57,7 +64,7 @@ function numRow(id, label, value, onValue, blank) {
     else if (v !== undefined && !Number.isFinite(v)) bad = 'type a number';
     else bad = onValue(v, true);
     Er.setLocal(inp, bad ? label + ': ' + bad + '; not applied.' : '');
-    if (!bad) { onValue(v, false); changed(); }
+    if (!bad) { onValue(v, false); typed(); changed(); }
   });
   return el('div', { class: 'row small', 'data-key': id, 'data-label': label }, el('label', { for: id }, label), inp);
 }
@@ -66,7 +73,7 @@ function selectRow(id, label, opts, value, onValue) {
   Er.forget(id);
   const sel = el('select', { id }, ...opts.map(([v, t]) => el('option', { value: v, text: t })));
   sel.value = value;
-  sel.addEventListener('change', () => { onValue(sel.value); changed(); });
+  sel.addEventListener('change', () => { onValue(sel.value); typed(); changed(); });
   return el('div', { class: 'row small', 'data-key': id, 'data-label': label }, el('label', { for: id }, label), sel);
 }
 
@@ -76,18 +83,19 @@ function selectRow(id, label, opts, value, onValue) {
  * back on the control that was used.
  */
 function rebuildSoon(id) {
-  setTimeout(() => {
+  // (after the frame that shows the switch: the panel's new rows are the next frame's)
+  afterPaint(() => {
     buildReal();
     const x = $(id);
     if (x) x.focus();
-  }, 0);
+  });
 }
 
 function checkRow(id, label, checked, onValue) {
   Er.forget(id);
   const box = el('input', { type: 'checkbox', id });
   box.checked = checked;
-  box.addEventListener('change', () => { onValue(box.checked); rebuildSoon(id); changed(); });
+  box.addEventListener('change', () => { onValue(box.checked); typed(); rebuildSoon(id); changed(); });
   return el('div', { class: 'row small check', 'data-key': id, 'data-label': label }, box, el('label', { for: id, text: ' ' + label }));
 }
 
@@ -96,69 +104,78 @@ export function buildReal() {
   const box = $('real-params');
   if (!box) return;
   const st = store.state;
+  // the panel shows these settings already, with no message beside a field (a restored state
+  // whose real loop is unchanged: undo of another control, reset, most presets): kept
+  const key = JSON.stringify([st.actuator, st.sampling, st.noise]);
+  if (box.shownKey === key && box.childElementCount && !box.querySelector('.field-error')) return;
+  box.shownKey = key;
   const a = st.actuator;
   const smp = st.sampling;
   const nz = st.noise;
+  // (the fields' listeners read the state's objects when they run, not these: a panel kept for
+  // a restored state, a new object with the same settings, writes that state)
+  const A = () => store.state.actuator;
+  const SMP = () => store.state.sampling;
   const kids = [];
   kids.push(checkRow('rl-limits', 'Actuator limits', !!a, (on) => {
-    if (on) st.actuator = structuredClone(memo.actuator);
-    else { memo.actuator = structuredClone(st.actuator); st.actuator = null; }
+    if (on) store.state.actuator = structuredClone(memo.actuator);
+    else { memo.actuator = structuredClone(store.state.actuator); store.state.actuator = null; }
   }));
   if (a) {
-    const lo = () => (typeof a.u_min === 'number' ? a.u_min : -Infinity);
-    const hi = () => (typeof a.u_max === 'number' ? a.u_max : Infinity);
-    kids.push(numRow('rl-umin', 'u_min', a.u_min, (v, dry) => {
+    const lo = () => (typeof A().u_min === 'number' ? A().u_min : -Infinity);
+    const hi = () => (typeof A().u_max === 'number' ? A().u_max : Infinity);
+    kids.push(numRow('rl-umin', 'u_min', A().u_min, (v, dry) => {
       if (v !== undefined && v >= hi()) return 'must be below u_max (' + Er.short(hi()) + ')';
-      if (!dry) { if (v === undefined) delete a.u_min; else a.u_min = v; }
+      if (!dry) { if (v === undefined) delete A().u_min; else A().u_min = v; }
       return '';
     }, 'none'));
-    kids.push(numRow('rl-umax', 'u_max', a.u_max, (v, dry) => {
+    kids.push(numRow('rl-umax', 'u_max', A().u_max, (v, dry) => {
       if (v !== undefined && v <= lo()) return 'must be above u_min (' + Er.short(lo()) + ')';
-      if (!dry) { if (v === undefined) delete a.u_max; else a.u_max = v; }
+      if (!dry) { if (v === undefined) delete A().u_max; else A().u_max = v; }
       return '';
     }, 'none'));
-    const kind = a.anti_windup ? a.anti_windup.kind : 'none';
+    const kind = A().anti_windup ? A().anti_windup.kind : 'none';
     kids.push(selectRow('rl-aw', 'Anti-windup', AW_KINDS, kind, (k) => {
-      if (k === 'none') delete a.anti_windup; else a.anti_windup = { kind: k };
+      if (k === 'none') delete A().anti_windup; else A().anti_windup = { kind: k };
       rebuildSoon('rl-aw');
     }));
     if (kind === 'tracking') {
-      kids.push(numRow('rl-tt', 'Tracking time tt', a.anti_windup.tt, (v, dry) => {
+      kids.push(numRow('rl-tt', 'Tracking time tt', A().anti_windup.tt, (v, dry) => {
         if (v !== undefined && !(v > 0)) return 'must be greater than 0';
-        if (!dry) { if (v === undefined) delete a.anti_windup.tt; else a.anti_windup.tt = v; }
+        if (!dry) { if (v === undefined) delete A().anti_windup.tt; else A().anti_windup.tt = v; }
         return '';
       }, 'default'));
     }
   }
   kids.push(checkRow('rl-sampled', 'Sampled controller', !!smp, (on) => {
     if (on) {
-      st.sampling = structuredClone(memo.sampling);
+      store.state.sampling = structuredClone(memo.sampling);
       // An ideal derivative cannot be discretised by Tustin or forward Euler (the module says
       // so): start such a controller with backward Euler, as the code export's "auto" does.
       const c = store.last && store.last.ctl;
-      if (c && !memo.chosen && (improper(c.cr) || improper(c.cy))) st.sampling.method = 'backward';
+      if (c && !memo.chosen && (improper(c.cr) || improper(c.cy))) store.state.sampling.method = 'backward';
     } else {
-      memo.sampling = structuredClone(st.sampling);
-      st.sampling = null;
+      memo.sampling = structuredClone(store.state.sampling);
+      store.state.sampling = null;
       // noise is read by the sampled controller only
-      if (st.noise) { memo.noise = structuredClone(st.noise); st.noise = null; }
+      if (store.state.noise) { memo.noise = structuredClone(store.state.noise); store.state.noise = null; }
     }
   }));
   if (smp) {
-    kids.push(numRow('rl-h', 'Sample time h', smp.h, (v, dry) => {
-      const tEnd = st.scenario.t_end;
+    kids.push(numRow('rl-h', 'Sample time h', SMP().h, (v, dry) => {
+      const tEnd = store.state.scenario.t_end;
       if (!(v > 0)) return 'must be greater than 0';
       if (v > tEnd) return 'must not exceed the end time (' + Er.short(tEnd) + ')';
-      if (!dry) smp.h = v;
+      if (!dry) SMP().h = v;
       return '';
     }));
-    kids.push(selectRow('rl-method', 'Discretisation', METHODS, smp.method || 'tustin', (m) => { smp.method = m; memo.chosen = true; }));
+    kids.push(selectRow('rl-method', 'Discretisation', METHODS, SMP().method || 'tustin', (m) => { SMP().method = m; memo.chosen = true; }));
   }
   // The noise std: 0 is no noise. It needs the sampled controller (disabled without it).
   const std = numRow('rl-noise', 'Measurement noise std', nz ? nz.std : 0, (v, dry) => {
     if (!(v >= 0)) return 'must be 0 or more';
     if (!dry) {
-      if (v === 0) { if (st.noise) memo.noise = structuredClone(st.noise); st.noise = null; } else st.noise = { std: v, seed: st.noise ? st.noise.seed : memo.noise.seed };
+      if (v === 0) { if (store.state.noise) memo.noise = structuredClone(store.state.noise); store.state.noise = null; } else store.state.noise = { std: v, seed: store.state.noise ? store.state.noise.seed : memo.noise.seed };
       syncSeed();
     }
     return '';
@@ -168,8 +185,9 @@ export function buildReal() {
   const reroll = el('button', { type: 'button', id: 'rl-reroll', text: 'Re-roll noise', title: 'A new seed for the noise samples' });
   reroll.disabled = !nz;
   reroll.addEventListener('click', () => {
-    if (!st.noise) return;
-    st.noise.seed = newSeed(st.noise.seed);
+    if (!store.state.noise) return;
+    store.state.noise.seed = newSeed(store.state.noise.seed);
+    typed();
     syncSeed();
     changed();
   });
