@@ -375,10 +375,10 @@ pub fn scenario_json(sc: &Scenario) -> Value {
 pub fn tune(input: &Value) -> Result<Value> {
     let inp: TuneIn = from_json(input, "")?;
     #[cfg(not(feature = "full"))]
-    if !rules::FIRST_METHODS.contains(&inp.method.as_str()) {
-        if METHOD_IDS.contains(&inp.method.as_str()) {
-            return Err(needs_full("method", &format!("'{}'", inp.method)));
-        }
+    if !rules::FIRST_METHODS.contains(&inp.method.as_str())
+        && METHOD_IDS.contains(&inp.method.as_str())
+    {
+        return Err(needs_full("method", &format!("'{}'", inp.method)));
     }
     let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
     let params = input::params(&inp.params);
