@@ -52,6 +52,7 @@ const GLUES = new Map([
   [join(www, 'pkg-first', 'pidlab_first.js'), 'PIDLAB_FRESH_GLUE_FIRST'],
 ]);
 let order = [];
+let inWorker = false; // bundling the computation worker's script (bundleWorker)
 
 function modName(p) {
   return '__m_' + relative(www, p).replace(/\.js$/, '').replace(/[^A-Za-z0-9]/g, '_');
@@ -86,6 +87,11 @@ function inlineModule(path) {
   const name = modName(path);
   modules.set(path, { name, code: null });
   let src = replaceImports(read(path).toString('utf8'), path);
+  // The first module's methods()/presets() data (src/api/first_data.js, a wasm-bindgen snippet
+  // the glue imports): the workers never call them, so their copy of it has the functions only.
+  if (inWorker && path.endsWith(join('src', 'api', 'first_data.js'))) {
+    src = [...src.matchAll(/^export function ([A-Za-z_$][\w$]*)/gm)].map(([, f]) => `export function ${f}() { throw new Error('${f}: not in the computation worker'); }`).join('\n');
+  }
   const exportsList = [];
   // export function/class/const/let/var/async function
   src = src.replace(/^export\s+((?:async\s+)?function\*?|class|const|let|var)\s+([A-Za-z_$][\w$]*)/gm, (_, kw, id) => {
@@ -174,6 +180,7 @@ function bundleWorker() {
   const saved = [modules, order];
   modules = new Map();
   order = [];
+  inWorker = true;
   const wp = join(www, 'worker.js');
   modules.set(wp, { name: '(worker.js)', code: null });
   const entrySrc = replaceImports(read(wp).toString('utf8'), wp);
@@ -186,6 +193,7 @@ function bundleWorker() {
   if (/\bimport\.meta\b/.test(code)) fail('worker.js or the glue uses import.meta beyond import.meta.url: cannot make a classic worker script');
   const reached = [...modules.keys()];
   [modules, order] = saved;
+  inWorker = false;
   return { code, reached };
 }
 const worker = bundleWorker();

@@ -3,8 +3,9 @@
 //! JS `Error` whose message starts with the field path.
 //!
 //! Built without the `full` feature (the page's first module, `pidlab_first`), it exports only
-//! what the page's start-up and default design need (`methods`, `presets`, `tune` of the
-//! default method, continuous `simulate`, `analyze`, `freqresp`, `plot`); `admissible`,
+//! what the page's start-up and default design need (`methods`, `presets` — answered from data
+//! in the JavaScript glue, `src/api/first_data.js` —, `tune` of the default method, continuous
+//! `simulate`, `analyze`, `freqresp`, `plot`); `admissible`,
 //! `reduce`, `export_code`, `identify`, `sweep` and `sweep_grid` are absent there and the page
 //! calls them on the full module.
 
@@ -111,15 +112,42 @@ pub fn start() {
 }
 
 /// `methods()`: the implemented tuning rules and the plant families (`{ methods, families }`).
+#[cfg(feature = "full")]
 #[wasm_bindgen]
 pub fn methods() -> Result<JsValue, JsError> {
     to_js(&api::methods())
 }
 
 /// `presets()`: every paper example and comparison setting.
+#[cfg(feature = "full")]
 #[wasm_bindgen]
 pub fn presets() -> Result<JsValue, JsError> {
     to_js(&api::presets())
+}
+
+// The first module's `methods()` and `presets()`: the full build's answers as data in its
+// JavaScript glue (`src/api/first_data.js`, copied by wasm-bindgen into the package's
+// `snippets/`), not in its wasm (issue 15: 108 kB of JSON text, and no JSON parsing).
+#[cfg(not(feature = "full"))]
+#[wasm_bindgen(module = "/src/api/first_data.js")]
+extern "C" {
+    fn first_methods() -> JsValue;
+    fn first_presets() -> JsValue;
+}
+
+/// `methods()` in the first module: the full module's value (tests/node/first_module.test.mjs
+/// compares them), from `src/api/first_data.js`.
+#[cfg(not(feature = "full"))]
+#[wasm_bindgen]
+pub fn methods() -> Result<JsValue, JsError> {
+    Ok(first_methods())
+}
+
+/// `presets()` in the first module: the full module's value, from `src/api/first_data.js`.
+#[cfg(not(feature = "full"))]
+#[wasm_bindgen]
+pub fn presets() -> Result<JsValue, JsError> {
+    Ok(first_presets())
 }
 
 /// `tune({method, plant, params})`.

@@ -172,25 +172,64 @@ pub fn methods() -> Value {
     methods_of_registry()
 }
 
-/// `methods()` in the first module (built without the `full` feature): the same value, read
-/// from `methods.json` (the full build's `methods()`, checked equal by the test
-/// `methods_data_is_the_registrys`), so that no rule's code is needed to list the rules.
-#[cfg(not(feature = "full"))]
-pub fn methods() -> Value {
-    data_value(METHODS_JSON)
+/// A data text of the first module's JavaScript data file (`src/api/first_data.js`: `name`
+/// is `METHODS` or `PRESETS`): the JSON lines between `const <name> = () => (` and the line
+/// `);`.
+#[cfg(all(test, feature = "full"))]
+pub(crate) fn first_data_text(name: &str) -> &'static str {
+    let (from, to) = first_data_range(FIRST_DATA_JS, name);
+    &FIRST_DATA_JS[from..to]
 }
 
-/// A data file of the first module (`methods.json`, `presets.json`) read: serde_json's parser,
-/// then [`exact_numbers`].
-pub fn data_value(text: &str) -> Value {
+/// Where the data text `name` lies in `js` (a `first_data.js` text), as a byte range.
+#[cfg(all(test, feature = "full"))]
+fn first_data_range(js: &str, name: &str) -> (usize, usize) {
+    let start = format!("\nconst {name} = () => (\n");
+    let from = js
+        .find(&start)
+        .map(|i| i + start.len())
+        .unwrap_or_else(|| panic!("first_data.js: no line 'const {name} = () => ('"));
+    let len = js[from..]
+        .find("\n);\n")
+        .expect("first_data.js: the line ');' after the data");
+    (from, from + len + 1)
+}
+
+/// The first module's data file (`methods()` and `presets()` of the full build as JSON texts,
+/// carried by the first module's JavaScript glue, not its wasm: src/wasm.rs).
+#[cfg(all(test, feature = "full"))]
+const FIRST_DATA_JS: &str = include_str!("first_data.js");
+
+/// A data text of the first module (`METHODS`, `PRESETS` of `first_data.js`) read:
+/// serde_json's parser, then [`exact_numbers`].
+#[cfg(all(test, feature = "full"))]
+pub(crate) fn data_value(text: &str) -> Value {
     let mut v = serde_json::from_str(text).unwrap_or(Value::Null);
     exact_numbers(&mut v);
     v
 }
 
-/// The full build's `methods()` as JSON text (`src/api/methods.json`; regenerate with
-/// `PIDLAB_WRITE_METHODS=1 cargo test --release --lib api::tests::methods_data`).
-pub const METHODS_JSON: &str = include_str!("methods.json");
+/// Every method id `methods()` lists, in its order (checked by the test
+/// `method_ids_are_the_registrys`): the first module, which has neither the rules' code nor
+/// the `methods()` data, tells a known method it does not tune from an unknown one with it.
+pub const METHOD_IDS: &[&str] = &[
+    "arvanitis_alg1",
+    "arvanitis_alg2",
+    "arvanitis_alg3",
+    "arvanitis_m2_xi",
+    "arvanitis_m2_theta",
+    "arvanitis_m2_beta",
+    "shamsuzzoha_lee",
+    "kaya",
+    "medarametla",
+    "praveen_kumar",
+    "simc",
+    "amigo",
+    "imc_lambda",
+    "zn_step",
+    "zn_ultimate",
+    "chen_seborg2002",
+];
 
 /// The stable code that ends the message of every [`needs_full`] error: a caller routes on
 /// it (the page's `www/engine.js` and `www/worker.js` check `message.endsWith(NEEDS_FULL_CODE)`),
@@ -224,20 +263,12 @@ pub fn presets() -> Value {
     presets_of_registry()
 }
 
-/// `presets()` in the first module (built without the `full` feature): the same value, read
-/// from `presets.json` (the full build's `presets()`, checked equal by the test
-/// `presets_data_is_the_registrys`), so that no paper's preset code (the comparison settings
-/// computed from the papers' formulas) is needed to list them.
-#[cfg(not(feature = "full"))]
-pub fn presets() -> Value {
-    data_value(PRESETS_JSON)
-}
-
 /// Replaces each `{"f64_bits": "<16 hex digits>"}` of a data file by the number with those
 /// bits: the data files' form of a number that serde_json's parser (without its
 /// `float_roundtrip` feature) reads one ulp off from every decimal of 17 to 20 digits (see
-/// the test `presets_data_is_the_registrys`).
-pub fn exact_numbers(v: &mut Value) {
+/// the test `presets_data_is_the_registrys`; `first_data.js` does the same in JavaScript).
+#[cfg(all(test, feature = "full"))]
+pub(crate) fn exact_numbers(v: &mut Value) {
     match v {
         Value::Array(a) => a.iter_mut().for_each(exact_numbers),
         Value::Object(m) => {
@@ -255,12 +286,6 @@ pub fn exact_numbers(v: &mut Value) {
         _ => {}
     }
 }
-
-/// The full build's `presets()` as JSON text (`src/api/presets.json`, one preset a line; every
-/// number written so that serde_json's parser and any correctly rounding one read the same
-/// `f64`; regenerate with `PIDLAB_WRITE_PRESETS=1 cargo test --release --lib
-/// api::tests::presets_data`).
-pub const PRESETS_JSON: &str = include_str!("presets.json");
 
 /// `presets()` computed from the papers' folders (the full build).
 pub fn presets_of_registry() -> Value {
@@ -350,13 +375,10 @@ pub fn scenario_json(sc: &Scenario) -> Value {
 pub fn tune(input: &Value) -> Result<Value> {
     let inp: TuneIn = from_json(input, "")?;
     #[cfg(not(feature = "full"))]
-    if !rules::FIRST_METHODS.contains(&inp.method.as_str()) {
-        let known = methods()["methods"]
-            .as_array()
-            .is_some_and(|ms| ms.iter().any(|m| m["id"] == inp.method.as_str()));
-        if known {
-            return Err(needs_full("method", &format!("'{}'", inp.method)));
-        }
+    if !rules::FIRST_METHODS.contains(&inp.method.as_str())
+        && METHOD_IDS.contains(&inp.method.as_str())
+    {
+        return Err(needs_full("method", &format!("'{}'", inp.method)));
     }
     let plant = input::plant(input::required(&inp.plant, "plant")?, "plant")?;
     let params = input::params(&inp.params);
@@ -724,11 +746,36 @@ mod tests {
         out
     }
 
-    /// The first module's `methods()` (the data in `methods.json`) is the full build's, value
+    /// Rewrites the data text `name` (`METHODS`, `PRESETS`) of `src/api/first_data.js`, the
+    /// rest of the file as it is (the tests below, with `PIDLAB_WRITE_METHODS` /
+    /// `PIDLAB_WRITE_PRESETS`; the test then fails until it is built again with the new file).
+    #[cfg(feature = "full")]
+    fn write_first_data(name: &str, text: &str) {
+        assert!(
+            text.ends_with('\n') && !text.contains("\n);\n"),
+            "{name}: a data text"
+        );
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/api/first_data.js");
+        let js = std::fs::read_to_string(path).expect("read src/api/first_data.js");
+        let (from, to) = first_data_range(&js, name);
+        let out = format!("{}{}{}", &js[..from], text, &js[to..]);
+        std::fs::write(path, out).expect("write src/api/first_data.js");
+    }
+
+    /// `METHOD_IDS` (the first module's list of the methods it does not tune itself) is the
+    /// registry's, in order.
+    #[cfg(feature = "full")]
+    #[test]
+    fn method_ids_are_the_registrys() {
+        let ids: Vec<String> = rules::methods().into_iter().map(|m| m.id).collect();
+        assert_eq!(ids, METHOD_IDS);
+    }
+
+    /// The first module's `methods()` (`METHODS` of `first_data.js`) is the full build's, value
     /// for value: every method with its parameters, the families, export targets and identify
     /// families (exact equality, and every number's bits). `PIDLAB_WRITE_METHODS=1` rewrites
-    /// the file from the registry first (compact, one method a line; numbers as in
-    /// `presets.json`).
+    /// its text in the file from the registry first (compact, one method a line; numbers as in
+    /// `PRESETS`).
     #[cfg(feature = "full")]
     #[test]
     fn methods_data_is_the_registrys() {
@@ -757,23 +804,23 @@ mod tests {
                 }
             }
             text.push_str("\n}\n");
-            let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/api/methods.json");
-            std::fs::write(path, text).expect("write src/api/methods.json");
+            write_first_data("METHODS", &text);
         }
+        let methods_json = first_data_text("METHODS");
         assert!(
-            serde_json::from_str::<Value>(METHODS_JSON).is_ok(),
-            "methods.json parses"
+            serde_json::from_str::<Value>(methods_json).is_ok(),
+            "first_data.js METHODS parses"
         );
-        let data = data_value(METHODS_JSON);
+        let data = data_value(methods_json);
         assert_eq!(
             data, full,
-            "src/api/methods.json differs from the registry's methods(); regenerate it with \
-             PIDLAB_WRITE_METHODS=1 cargo test --release --lib api::tests::methods_data"
+            "src/api/first_data.js METHODS differs from the registry's methods(); regenerate it \
+             with PIDLAB_WRITE_METHODS=1 cargo test --release --lib api::tests::methods_data"
         );
         assert_eq!(
             number_bits(&data),
             number_bits(&full),
-            "methods.json: a number differs in its bits"
+            "first_data.js METHODS: a number differs in its bits"
         );
         // the first module's own methods are listed
         for id in rules::FIRST_METHODS {
@@ -870,7 +917,7 @@ mod tests {
         }
     }
 
-    /// The first module's `presets()` (the data in `presets.json`) is the full build's, value
+    /// The first module's `presets()` (`PRESETS` of `first_data.js`) is the full build's, value
     /// for value and bit for bit (exact equality of the parsed `Value`s: `f64`s compare
     /// equal only when identical, and no preset holds a NaN or a signed zero that `==` would
     /// hide: checked below). `PIDLAB_WRITE_PRESETS=1` rewrites the file from the papers'
@@ -893,25 +940,25 @@ mod tests {
                 exact_json(p, &mut text);
             }
             text.push_str("\n]}\n");
-            let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/api/presets.json");
-            std::fs::write(path, text).expect("write src/api/presets.json");
+            write_first_data("PRESETS", &text);
         }
+        let presets_json = first_data_text("PRESETS");
         assert!(
-            serde_json::from_str::<Value>(PRESETS_JSON).is_ok(),
-            "presets.json parses"
+            serde_json::from_str::<Value>(presets_json).is_ok(),
+            "first_data.js PRESETS parses"
         );
-        let data = data_value(PRESETS_JSON);
+        let data = data_value(presets_json);
         assert_eq!(
             data, full,
-            "src/api/presets.json differs from the papers' presets(); regenerate it with \
-             PIDLAB_WRITE_PRESETS=1 cargo test --release --lib api::tests::presets_data"
+            "src/api/first_data.js PRESETS differs from the papers' presets(); regenerate it \
+             with PIDLAB_WRITE_PRESETS=1 cargo test --release --lib api::tests::presets_data"
         );
         // `==` on f64 would hide -0.0 vs 0.0: compare the bits of every number
         let a = number_bits(&data);
         assert_eq!(
             a,
             number_bits(&full),
-            "presets.json: a number differs in its bits"
+            "first_data.js PRESETS: a number differs in its bits"
         );
         assert!(
             a.len() > 1000,

@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import path from 'node:path';
-import { pidlab, BOILER } from './pidlab.mjs';
+import { pidlab, BOILER, PKG } from './pidlab.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const DIR = path.resolve(here, '../../www/pkg-first');
@@ -24,12 +24,45 @@ if (built) {
 const DESIGN = { method: 'praveen_kumar', plant: BOILER, params: { lambda: 1.87, epsilon: 0.2 } };
 const SCENARIO = { t_end: 60, dt: 0.02, setpoint: { time: 0, size: 1 }, disturbance: { time: 30, size: 1 } }; // www/state.js DEFAULT_SCENARIO
 
+// methods() and presets() of the first module come from data in its JavaScript glue
+// (src/api/first_data.js, copied into www/pkg-first/snippets/ by wasm-bindgen), not from its wasm:
+// deepEqual of node:assert/strict compares numbers with Object.is, so every number is the full
+// module's bit for bit (-0 apart from 0; NaN is not in the data).
 test('first module: methods() is the full module\'s, value for value (from data, not rule code)', { skip }, () => {
+  assert.deepEqual(first.methods(), pidlab.methods());
+  // a fresh value at every call, as the full module's (a caller may change it)
+  const a = first.methods();
+  a.methods.length = 0;
   assert.deepEqual(first.methods(), pidlab.methods());
 });
 
 test('first module: presets() is the full module\'s', { skip }, () => {
-  assert.deepEqual(first.presets(), pidlab.presets());
+  const p = first.presets();
+  assert.deepEqual(p, pidlab.presets());
+  // the one number written as its bits in the data ({"f64_bits": ...}: no short decimal is read
+  // as it by both parsers) is a number again: kaya2020/ex2/chien's gain 0.9833999999999999
+  const bits = (x) => { const d = new DataView(new ArrayBuffer(8)); d.setFloat64(0, x); return d.getBigUint64(0).toString(16); };
+  const found = [];
+  const walk = (v) => {
+    if (Array.isArray(v)) v.forEach(walk);
+    else if (v && typeof v === 'object') {
+      assert.ok(!('f64_bits' in v), 'no f64_bits object is left');
+      Object.values(v).forEach(walk);
+    } else if (typeof v === 'number' && bits(v) === '3fef780346dc5d63') found.push(v);
+  };
+  walk(p);
+  assert.ok(found.length >= 1, 'the f64_bits number is there');
+});
+
+test('first module: the wasm carries neither the presets nor the methods (they are in the glue)', { skip }, () => {
+  const wasm = readFileSync(path.join(DIR, 'pidlab_first_bg.wasm')).toString('latin1');
+  const full = readFileSync(path.join(PKG, 'pidlab_bg.wasm')).toString('latin1');
+  // a preset's citation and a method's title: in the full module's wasm, not in the first one's
+  const p = pidlab.presets().presets[0].citation.slice(0, 40);
+  const m = pidlab.methods().methods.find((x) => x.id === 'simc').title;
+  assert.ok(full.includes(p) && full.includes(m), 'the full module carries them (the check can fail)');
+  assert.ok(!wasm.includes(p), 'the first module\'s wasm has no preset text');
+  assert.ok(!wasm.includes(m), 'the first module\'s wasm has no other method\'s title');
 });
 
 test('first module: the default design (tune, continuous simulate, analyze, freqresp) as the full module', { skip }, () => {
