@@ -86,6 +86,7 @@ pub struct Trajectory {
 
 impl Trajectory {
     /// Start time and length of piece `k`.
+    #[inline]
     pub fn piece(&self, k: usize) -> (f64, f64) {
         if let Some(st) = &self.starts {
             return (st[k], self.lens[k]);
@@ -102,6 +103,7 @@ impl Trajectory {
     }
 
     /// Value of a step signal at `t` (right-hand limit).
+    #[inline]
     pub fn step_at(&self, s: &Step, t: f64) -> f64 {
         if s.size != 0.0 && t >= s.time - self.tol {
             s.size
@@ -137,6 +139,7 @@ impl Trajectory {
     }
 
     /// Node values of `y` on piece `k`.
+    #[inline]
     pub fn y_nodes(&self, k: usize) -> &[f64] {
         &self.y[k * NODES..(k + 1) * NODES]
     }
