@@ -25,7 +25,7 @@
 //! - `y_final`, `u_final`: the loop's steady state for the window's r and d (solved
 //!   exactly from the loop equations; the last sample when the loop has no steady state).
 
-use crate::sim::{monomial_coeffs, Response, Scenario, Trajectory, DEG, NODES};
+use crate::sim::{monomial_coeffs, Response, Scenario, Trajectory, DEG, NODES, SIGMA};
 
 /// Metrics of one window (see the module docs for definitions).
 #[derive(Debug, Clone, PartialEq)]
@@ -231,8 +231,7 @@ pub fn quadrature(
 /// `[s0, s1]` (σ_j = j/DEG), in order (what [`Scan::dense`] collects).
 #[inline]
 fn piece_nodes(t0: f64, len: f64, s0: f64, s1: f64, yv: &[f64], mut f: impl FnMut(f64, f64)) {
-    for (j, y) in yv.iter().enumerate() {
-        let s = j as f64 / DEG as f64;
+    for (&s, y) in SIGMA.iter().zip(yv) {
         if s >= s0 - 1e-12 && s <= s1 + 1e-12 {
             f(t0 + s * len, *y);
         }
@@ -299,13 +298,13 @@ impl Integrals {
 
 /// The generic metrics' pass over a window `[a, b]`: the integrals by the quadrature of
 /// [`quadrature`] (the same points, weights and order of summation, so the same values; only
-/// `t` and `e` are evaluated), and every node sample `(t, y)` of the window handed to `node` in
+/// `t` and `e` are evaluated), and every node sample `(t, y)` of the window fed to `nodes` in
 /// the order of [`Scan::dense`] (nothing is collected).
 ///
 /// A whole piece (every piece but the window's ends) hands its six nodes over without the
 /// window tests of [`piece_nodes`] (they all pass there: `s0 = 0`, `s1 ≥ 1 − 1e-12`), and a
 /// whole piece without a sign change of `e` takes the Gauss rule of the precomputed basis.
-fn window_pass(traj: &Trajectory, a: f64, b: f64, mut node: impl FnMut(f64, f64)) -> Integrals {
+fn window_pass(traj: &Trajectory, a: f64, b: f64, nodes: &mut NodeMetrics) -> Integrals {
     let mut sums = Integrals::default();
     let (k0, _) = traj.locate(a);
     let basis = GlBasis::new();
@@ -325,10 +324,10 @@ fn window_pass(traj: &Trajectory, a: f64, b: f64, mut node: impl FnMut(f64, f64)
         let s1 = (c1 - t0) / len;
         let whole = s0 == 0.0 && (1.0 - s1).abs() <= 1e-12;
         if !whole {
-            piece_nodes(t0, len, s0, s1, yv, &mut node);
+            piece_nodes(t0, len, s0, s1, yv, |t, y| nodes.push(t, y));
         } else {
-            for (j, &y) in yv.iter().enumerate() {
-                node(t0 + (j as f64 / DEG as f64) * len, y);
+            for (&s, &y) in SIGMA.iter().zip(yv) {
+                nodes.push(t0 + s * len, y);
             }
             if !node_sign_change(r, yv) {
                 // y at the 8 points, point by point Σ_j l_j(σ_i)·y_j summed in j's order
@@ -409,8 +408,7 @@ fn settling_backwards(
         let (s0, s1) = ((c0 - t0) / len, (c1 - t0) / len);
         let mut found = None;
         let yv = traj.y_nodes(k);
-        for (j, y) in yv.iter().enumerate().rev() {
-            let sj = j as f64 / DEG as f64;
+        for (&sj, y) in SIGMA.iter().zip(yv).rev() {
             if sj >= s0 - 1e-12 && sj <= s1 + 1e-12 {
                 let t = t0 + sj * len;
                 let d = dev(t, *y);
@@ -567,7 +565,7 @@ impl ServoShape {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn push(&mut self, t: f64, y: f64) {
         let y_init = match self.y_init {
             Some(y0) => y0,
@@ -624,7 +622,7 @@ impl Settling {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn push(&mut self, t: f64, dev: f64) {
         if dev > self.band {
             self.last_out = Some((t, dev));
@@ -666,6 +664,31 @@ fn total_variation(res: &Response, a: f64, b: f64, t_end: f64) -> f64 {
     tv
 }
 
+/// The metrics of a window read from its node samples, fed in order: the peak error and, in a
+/// servo window, the shape and the settling time.
+struct NodeMetrics<'a> {
+    traj: &'a Trajectory,
+    servo: bool,
+    r_w: f64,
+    peak_error: f64,
+    shape: ServoShape,
+    settling: Settling,
+}
+
+impl NodeMetrics<'_> {
+    #[inline(always)]
+    fn push(&mut self, t: f64, y: f64) {
+        let traj = self.traj;
+        self.peak_error = self
+            .peak_error
+            .max((traj.step_at(&traj.setpoint, t) - y).abs());
+        if self.servo {
+            self.shape.push(t, y);
+            self.settling.push(t, (y - self.r_w).abs());
+        }
+    }
+}
+
 /// Metrics of the window `[a, b]` whose event has size `step`.
 fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool) -> Metrics {
     let traj = &res.trajectory;
@@ -674,17 +697,22 @@ fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool)
     let ss = res.steady_state(r_w, d_w);
     // one pass: the integrals and, from the node samples, the peak error and (servo) the
     // shape and the settling time; the regulatory band is a fraction of the peak error, so its
-    // settling time takes a second pass over the node samples
-    let mut peak_error: f64 = 0.0;
-    let mut shape = ServoShape::new(r_w, step);
-    let mut servo_settling = Settling::new(sc.settling_band * step.abs());
-    let sums = window_pass(traj, a, b, |t, y| {
-        peak_error = peak_error.max((traj.step_at(&traj.setpoint, t) - y).abs());
-        if servo {
-            shape.push(t, y);
-            servo_settling.push(t, (y - r_w).abs());
-        }
-    });
+    // settling time takes a second pass, backwards from the window's end
+    let mut nodes = NodeMetrics {
+        traj,
+        servo,
+        r_w,
+        peak_error: 0.0,
+        shape: ServoShape::new(r_w, step),
+        settling: Settling::new(sc.settling_band * step.abs()),
+    };
+    let sums = window_pass(traj, a, b, &mut nodes);
+    let NodeMetrics {
+        peak_error,
+        shape,
+        settling: servo_settling,
+        ..
+    } = nodes;
     let (overshoot, undershoot, rise_time) = if servo {
         shape.result()
     } else {

@@ -10,6 +10,17 @@ use nalgebra::{DMatrix, DVector};
 pub const DEG: usize = 5;
 /// Nodes per piece.
 pub const NODES: usize = DEG + 1;
+/// The nodes' local coordinates `σ_j = j/DEG` (each the correctly rounded quotient, as
+/// `j as f64 / DEG as f64` gives it at run time: a table, so no hot loop divides for it).
+pub const SIGMA: [f64; NODES] = {
+    let mut s = [0.0; NODES];
+    let mut j = 0;
+    while j < NODES {
+        s[j] = j as f64 / DEG as f64;
+        j += 1;
+    }
+    s
+};
 
 /// `exp(M·ℓ/DEG)` for one piece of length ℓ of the augmented system over
 /// `[x (n); ξ_j (NODES per delayed channel j); r; d]`: `ẋ = A x + Σ_j b_j ξ_{j,0} + b_r r + b_d d`,
@@ -190,8 +201,8 @@ pub fn lagrange(vals: &[f64], s: f64) -> f64 {
     const W: [f64; NODES] = [1.0, -5.0, 10.0, -10.0, 5.0, -1.0];
     let mut num = 0.0;
     let mut den = 0.0;
-    for (j, (&v, &w)) in vals.iter().zip(W.iter()).enumerate() {
-        let d = s - j as f64 / DEG as f64;
+    for ((&v, &w), &sj) in vals.iter().zip(W.iter()).zip(&SIGMA) {
+        let d = s - sj;
         if d == 0.0 {
             return v;
         }
@@ -207,8 +218,8 @@ pub fn lagrange(vals: &[f64], s: f64) -> f64 {
 fn lagrange2(a: &[f64], b: &[f64], s: f64) -> (f64, f64) {
     const W: [f64; NODES] = [1.0, -5.0, 10.0, -10.0, 5.0, -1.0];
     let (mut na, mut nb, mut den) = (0.0, 0.0, 0.0);
-    for (j, ((&va, &vb), &w)) in a.iter().zip(b).zip(W.iter()).enumerate() {
-        let d = s - j as f64 / DEG as f64;
+    for (((&va, &vb), &w), &sj) in a.iter().zip(b).zip(W.iter()).zip(&SIGMA) {
+        let d = s - sj;
         if d == 0.0 {
             return (va, vb);
         }
