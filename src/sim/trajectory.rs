@@ -179,6 +179,18 @@ impl Trajectory {
         (y, v - self.step_at(&self.disturbance, t))
     }
 
+    /// Ends piece `k` of a stepping loop whose end state is `x_end`: counts it and returns
+    /// false, or, when the piece left the bounds (`bad`) or `x_end` is not finite, keeps the
+    /// `k` pieces before it and returns true (the run diverged at the piece's start).
+    pub(crate) fn close_piece(&mut self, k: usize, bad: bool, x_end: &[f64]) -> bool {
+        self.n_pieces = k + 1;
+        if bad || !x_end.iter().all(|q| q.is_finite()) {
+            self.keep_pieces(k);
+            return true;
+        }
+        false
+    }
+
     /// Keeps only the first `k` pieces (the response before divergence was detected).
     pub fn keep_pieces(&mut self, k: usize) {
         self.n_pieces = k;
