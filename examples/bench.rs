@@ -19,17 +19,15 @@ use pidlab::analysis::{simulate, simulate_real};
 use pidlab::api;
 use pidlab::model::controller::Controller;
 use pidlab::model::discrete::{AntiWindup, Limits, Method};
-use pidlab::model::plant::Family;
 use pidlab::rules::{self, Params};
 use pidlab::sim::Scenario;
 use pidlab::sim::{RealLoop, Sampling};
 use serde_json::Value;
 use std::hint::black_box;
-use std::time::Instant;
 
 #[path = "common/cpu.rs"]
 mod cpu;
-use cpu::cpu_now;
+use cpu::{boiler, time_runs};
 
 const WARMUP: usize = 100;
 
@@ -54,17 +52,11 @@ fn time(mut f: impl FnMut(), runs: usize, warmup: usize) -> Stats {
     for _ in 0..warmup {
         f();
     }
-    let mut v = Vec::with_capacity(runs);
-    let mut cpu = Vec::with_capacity(runs);
-    for _ in 0..runs {
-        let c0 = cpu_now();
-        let t0 = Instant::now();
-        f();
-        v.push(t0.elapsed().as_secs_f64() * 1e3);
-        cpu.push((cpu_now() - c0) * 1e3);
-    }
-    v.sort_by(f64::total_cmp);
-    cpu.sort_by(f64::total_cmp);
+    let (v, cpu) = time_runs(runs, f);
+    let (v, cpu): (Vec<f64>, Vec<f64>) = (
+        v.iter().map(|s| s * 1e3).collect(),
+        cpu.iter().map(|s| s * 1e3).collect(),
+    );
     let q = |v: &[f64], p: f64| v[((p * v.len() as f64) as usize).min(v.len() - 1)];
     Stats {
         median: q(&v, 0.5),
@@ -100,13 +92,7 @@ fn main() {
         .and_then(|a| a.parse().ok())
         .unwrap_or(1000)
         .max(200);
-    let plant = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let plant = boiler();
     let scenario = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
     let ipd = Controller::from_desc(
         &[0.6029],

@@ -15,14 +15,13 @@
 use pidlab::analysis::simulate_real;
 use pidlab::model::controller::Pid;
 use pidlab::model::discrete::{AntiWindup, Limits, Method};
-use pidlab::model::plant::Family;
 use pidlab::sim::{RealLoop, Sampling, Scenario};
 use std::hint::black_box;
 use std::time::Instant;
 
 #[path = "common/cpu.rs"]
 mod cpu;
-use cpu::cpu_now;
+use cpu::{boiler, cpu_now};
 
 fn main() {
     let runs: usize = std::env::args()
@@ -30,13 +29,7 @@ fn main() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(200)
         .max(1);
-    let plant = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let plant = boiler();
     let kc = 1.61;
     let c = Pid::parallel(kc, kc / 11.5, kc * 1.15)
         .filter_n(10.0)

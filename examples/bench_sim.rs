@@ -24,11 +24,10 @@ use pidlab::sim::{self, Scenario};
 use std::collections::hash_map::DefaultHasher;
 use std::hash::{Hash, Hasher};
 use std::hint::black_box;
-use std::time::Instant;
 
 #[path = "common/cpu.rs"]
 mod cpu;
-use cpu::cpu_now;
+use cpu::{boiler, time_runs};
 
 const DRAG: usize = 81;
 
@@ -40,13 +39,7 @@ fn main() {
         .unwrap_or(1000)
         .max(1);
     let part = args.next().unwrap_or_else(|| "all".into());
-    let plant = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let plant = boiler();
     let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
     let drag: Vec<_> = (0..DRAG)
         .map(|i| {
@@ -84,17 +77,11 @@ fn main() {
     for _ in 0..100 {
         one();
     }
-    let mut cpu = Vec::with_capacity(runs);
-    let mut wall = Vec::with_capacity(runs);
-    for _ in 0..runs {
-        let c0 = cpu_now();
-        let t0 = Instant::now();
-        one();
-        wall.push(t0.elapsed().as_secs_f64() * 1e6);
-        cpu.push((cpu_now() - c0) * 1e6);
-    }
-    cpu.sort_by(f64::total_cmp);
-    wall.sort_by(f64::total_cmp);
+    let (wall, cpu) = time_runs(runs, one);
+    let (wall, cpu): (Vec<f64>, Vec<f64>) = (
+        wall.iter().map(|s| s * 1e6).collect(),
+        cpu.iter().map(|s| s * 1e6).collect(),
+    );
     println!(
         "{part}: CPU median {:.1} µs, wall median {:.1} µs, wall min {:.1} µs ({runs} runs)",
         cpu[runs / 2],

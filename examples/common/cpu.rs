@@ -1,6 +1,10 @@
-//! The thread CPU clock the benchmark examples share (`#[path = "common/cpu.rs"] mod cpu;`).
+//! The thread CPU clock the benchmark examples share (`#[path = "common/cpu.rs"] mod cpu;`),
+//! the timing loop over it and the benchmark's plant.
+// not every example uses every helper
+#![allow(dead_code)]
 
-#[cfg(not(target_os = "linux"))]
+use pidlab::model::plant::{Family, Plant};
+
 use std::time::Instant;
 
 /// CPU time of this thread in seconds (Linux); wall time elsewhere.
@@ -32,4 +36,32 @@ pub fn cpu_now() -> f64 {
     use std::sync::OnceLock;
     static T0: OnceLock<Instant> = OnceLock::new();
     T0.get_or_init(Instant::now).elapsed().as_secs_f64()
+}
+
+/// Calls `f` `runs` times and returns the wall and thread-CPU times of the calls in seconds,
+/// each sorted.
+pub fn time_runs(runs: usize, mut f: impl FnMut()) -> (Vec<f64>, Vec<f64>) {
+    let mut wall = Vec::with_capacity(runs);
+    let mut cpu = Vec::with_capacity(runs);
+    for _ in 0..runs {
+        let c0 = cpu_now();
+        let t0 = Instant::now();
+        f();
+        wall.push(t0.elapsed().as_secs_f64());
+        cpu.push(cpu_now() - c0);
+    }
+    wall.sort_by(f64::total_cmp);
+    cpu.sort_by(f64::total_cmp);
+    (wall, cpu)
+}
+
+/// The benchmark's plant, the boiler steam drum `0.547(1 − 0.418 s)e^{−0.1 s}/(s(1.06 s + 1))`.
+pub fn boiler() -> Plant {
+    Family::IpdtIr {
+        k: 0.547,
+        tau: 1.06,
+        tau_z: 0.418,
+        theta: 0.1,
+    }
+    .plant()
 }

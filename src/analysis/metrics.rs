@@ -25,7 +25,7 @@
 //! - `y_final`, `u_final`: the loop's steady state for the window's r and d (solved
 //!   exactly from the loop equations; the last sample when the loop has no steady state).
 
-use crate::sim::{monomial_coeffs, Response, Scenario, Trajectory, DEG, NODES};
+use crate::sim::{monomial_coeffs, Response, Scenario, Trajectory, DEG, NODES, SIGMA};
 
 /// Metrics of one window (see the module docs for definitions).
 #[derive(Debug, Clone, PartialEq)]
@@ -231,8 +231,7 @@ pub fn quadrature(
 /// `[s0, s1]` (σ_j = j/DEG), in order (what [`Scan::dense`] collects).
 #[inline]
 fn piece_nodes(t0: f64, len: f64, s0: f64, s1: f64, yv: &[f64], mut f: impl FnMut(f64, f64)) {
-    for (j, y) in yv.iter().enumerate() {
-        let s = j as f64 / DEG as f64;
+    for (&s, y) in SIGMA.iter().zip(yv) {
         if s >= s0 - 1e-12 && s <= s1 + 1e-12 {
             f(t0 + s * len, *y);
         }
@@ -299,9 +298,13 @@ impl Integrals {
 
 /// The generic metrics' pass over a window `[a, b]`: the integrals by the quadrature of
 /// [`quadrature`] (the same points, weights and order of summation, so the same values; only
-/// `t` and `e` are evaluated), and every node sample `(t, y)` of the window handed to `node` in
+/// `t` and `e` are evaluated), and every node sample `(t, y)` of the window fed to `nodes` in
 /// the order of [`Scan::dense`] (nothing is collected).
-fn window_pass(traj: &Trajectory, a: f64, b: f64, mut node: impl FnMut(f64, f64)) -> Integrals {
+///
+/// A whole piece (every piece but the window's ends) hands its six nodes over without the
+/// window tests of [`piece_nodes`] (they all pass there: `s0 = 0`, `s1 ≥ 1 − 1e-12`), and a
+/// whole piece without a sign change of `e` takes the Gauss rule of the precomputed basis.
+fn window_pass(traj: &Trajectory, a: f64, b: f64, nodes: &mut NodeMetrics) -> Integrals {
     let mut sums = Integrals::default();
     let (k0, _) = traj.locate(a);
     let basis = GlBasis::new();
@@ -316,27 +319,34 @@ fn window_pass(traj: &Trajectory, a: f64, b: f64, mut node: impl FnMut(f64, f64)
             continue;
         }
         let r = traj.step_at(&traj.setpoint, t0);
-        let yv = traj.y_nodes(k);
+        let yv: &[f64; NODES] = traj.y_nodes(k).try_into().expect("NODES node values");
         let s0 = (c0 - t0) / len;
         let s1 = (c1 - t0) / len;
-        piece_nodes(t0, len, s0, s1, yv, &mut node);
-        if s0 == 0.0 && (1.0 - s1).abs() <= 1e-12 && !node_sign_change(r, yv) {
-            // y at the 8 points, point by point Σ_j l_j(σ_i)·y_j summed in j's order
-            let half = 0.5 * len;
-            let mut y8 = [0.0; 8];
-            for (lj, &yj) in basis.lt.iter().zip(yv) {
-                for (y, &l) in y8.iter_mut().zip(lj) {
-                    *y += l * yj;
+        let whole = s0 == 0.0 && (1.0 - s1).abs() <= 1e-12;
+        if !whole {
+            piece_nodes(t0, len, s0, s1, yv, |t, y| nodes.push(t, y));
+        } else {
+            for (&s, &y) in SIGMA.iter().zip(yv) {
+                nodes.push(t0 + s * len, y);
+            }
+            if !node_sign_change(r, yv) {
+                // y at the 8 points, point by point Σ_j l_j(σ_i)·y_j summed in j's order
+                let half = 0.5 * len;
+                let mut y8 = [0.0; 8];
+                for (lj, &yj) in basis.lt.iter().zip(yv) {
+                    for (y, &l) in y8.iter_mut().zip(lj) {
+                        *y += l * yj;
+                    }
                 }
+                let (mut t, mut e, mut w) = ([0.0; 8], [0.0; 8], [0.0; 8]);
+                for (i, ((ti, ei), wi)) in t.iter_mut().zip(&mut e).zip(&mut w).enumerate() {
+                    *ti = t0 + basis.s[i] * len - a;
+                    *ei = r - y8[i];
+                    *wi = GL_W[i] * half;
+                }
+                sums.add8(&t, &e, &w);
+                continue;
             }
-            let (mut t, mut e, mut w) = ([0.0; 8], [0.0; 8], [0.0; 8]);
-            for (i, ((ti, ei), wi)) in t.iter_mut().zip(&mut e).zip(&mut w).enumerate() {
-                *ti = t0 + basis.s[i] * len - a;
-                *ei = r - y8[i];
-                *wi = GL_W[i] * half;
-            }
-            sums.add8(&t, &e, &w);
-            continue;
         }
         let yc = monomial_coeffs(yv);
         let e_at = |s: f64| r - horner(&yc, s);
@@ -353,28 +363,69 @@ fn window_pass(traj: &Trajectory, a: f64, b: f64, mut node: impl FnMut(f64, f64)
     sums
 }
 
-/// Every node sample `(t, y)` of the window `[a, b]`, in the order of [`Scan::dense`].
-fn window_nodes(traj: &Trajectory, a: f64, b: f64, mut node: impl FnMut(f64, f64)) {
+/// The pieces a pass over the window `[a, b]` visits: `k0..k1` (from the piece of `a` to the
+/// first piece that starts at or after `b − tol`; piece starts never decrease).
+fn window_pieces(traj: &Trajectory, a: f64, b: f64) -> (usize, usize) {
     let (k0, _) = traj.locate(a);
-    for k in k0..traj.n_pieces {
+    let n = traj.n_pieces;
+    let starts_before_b = |k: usize| traj.piece(k).0 < b - traj.tol;
+    let mut k1 = if b.is_finite() {
+        (traj.locate(b).0 + 1).min(n)
+    } else {
+        n
+    };
+    while k1 < n && starts_before_b(k1) {
+        k1 += 1;
+    }
+    while k1 > k0 && !starts_before_b(k1 - 1) {
+        k1 -= 1;
+    }
+    (k0, k1.max(k0))
+}
+
+/// The settling time of [`Settling`] over the node samples of the window `[a, b]` (the order
+/// of [`Scan::dense`]) with the deviation `dev(t, y)`, found from the window's end backwards:
+/// the last sample outside the band and the sample after it are the same, so is the result,
+/// and a response that settles early in its window is read over its tail only.
+fn settling_backwards(
+    traj: &Trajectory,
+    a: f64,
+    b: f64,
+    band: f64,
+    dev: impl Fn(f64, f64) -> f64,
+) -> Option<f64> {
+    let (k0, k1) = window_pieces(traj, a, b);
+    let mut s = Settling::new(band);
+    // the sample after the current one (forward order)
+    let mut next: Option<(f64, f64)> = None;
+    for k in (k0..k1).rev() {
         let (t0, len) = traj.piece(k);
-        if t0 >= b - traj.tol {
-            break;
-        }
         let c0 = t0.max(a);
         let c1 = (t0 + len).min(b);
         if c1 - c0 <= traj.tol {
             continue;
         }
-        piece_nodes(
-            t0,
-            len,
-            (c0 - t0) / len,
-            (c1 - t0) / len,
-            traj.y_nodes(k),
-            &mut node,
-        );
+        let (s0, s1) = ((c0 - t0) / len, (c1 - t0) / len);
+        let mut found = None;
+        let yv = traj.y_nodes(k);
+        for (&sj, y) in SIGMA.iter().zip(yv).rev() {
+            if sj >= s0 - 1e-12 && sj <= s1 + 1e-12 {
+                let t = t0 + sj * len;
+                let d = dev(t, *y);
+                if d > band {
+                    found = Some((t, d));
+                    break;
+                }
+                next = Some((t, d));
+            }
+        }
+        if let Some(out) = found {
+            s.last_out = Some(out);
+            s.after = next;
+            break;
+        }
     }
+    s.result(a)
 }
 
 /// True when `e = r − y` changes sign between consecutive nodes of a piece (node values:
@@ -493,6 +544,8 @@ struct ServoShape {
     os: f64,
     us: f64,
     prev: Option<(f64, f64)>,
+    /// `y_init + 0.1·step`, `y_init + 0.9·step` (set by the first sample).
+    targets: [f64; 2],
     /// First crossings of 10 % and 90 % of the step.
     cross: [Option<f64>; 2],
 }
@@ -507,20 +560,29 @@ impl ServoShape {
             os: 0.0,
             us: 0.0,
             prev: None,
+            targets: [0.0; 2],
             cross: [None; 2],
         }
     }
 
+    #[inline(always)]
     fn push(&mut self, t: f64, y: f64) {
-        let y_init = *self.y_init.get_or_insert(y);
+        let y_init = match self.y_init {
+            Some(y0) => y0,
+            None => {
+                self.y_init = Some(y);
+                self.targets = [y + 0.1 * self.step, y + 0.9 * self.step];
+                y
+            }
+        };
         let (sgn, size) = (self.sgn, self.step.abs());
         self.os = self.os.max(sgn * (y - self.r_w) / size);
         self.us = self.us.max(-sgn * (y - y_init) / size);
-        if let Some((t1, y1)) = self.prev {
-            for (c, frac) in self.cross.iter_mut().zip([0.1, 0.9]) {
+        let crossed = self.cross[0].is_some() && self.cross[1].is_some();
+        if let (false, Some((t1, y1))) = (crossed, self.prev) {
+            for (c, &target) in self.cross.iter_mut().zip(&self.targets) {
                 if c.is_none() {
                     // the first pair of samples that crosses y_init + frac·step upwards
-                    let target = y_init + frac * self.step;
                     let f1 = sgn * (y1 - target);
                     let f2 = sgn * (y - target);
                     if f1 < 0.0 && f2 >= 0.0 {
@@ -560,6 +622,7 @@ impl Settling {
         }
     }
 
+    #[inline(always)]
     fn push(&mut self, t: f64, dev: f64) {
         if dev > self.band {
             self.last_out = Some((t, dev));
@@ -601,6 +664,31 @@ fn total_variation(res: &Response, a: f64, b: f64, t_end: f64) -> f64 {
     tv
 }
 
+/// The metrics of a window read from its node samples, fed in order: the peak error and, in a
+/// servo window, the shape and the settling time.
+struct NodeMetrics<'a> {
+    traj: &'a Trajectory,
+    servo: bool,
+    r_w: f64,
+    peak_error: f64,
+    shape: ServoShape,
+    settling: Settling,
+}
+
+impl NodeMetrics<'_> {
+    #[inline(always)]
+    fn push(&mut self, t: f64, y: f64) {
+        let traj = self.traj;
+        self.peak_error = self
+            .peak_error
+            .max((traj.step_at(&traj.setpoint, t) - y).abs());
+        if self.servo {
+            self.shape.push(t, y);
+            self.settling.push(t, (y - self.r_w).abs());
+        }
+    }
+}
+
 /// Metrics of the window `[a, b]` whose event has size `step`.
 fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool) -> Metrics {
     let traj = &res.trajectory;
@@ -609,17 +697,22 @@ fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool)
     let ss = res.steady_state(r_w, d_w);
     // one pass: the integrals and, from the node samples, the peak error and (servo) the
     // shape and the settling time; the regulatory band is a fraction of the peak error, so its
-    // settling time takes a second pass over the node samples
-    let mut peak_error: f64 = 0.0;
-    let mut shape = ServoShape::new(r_w, step);
-    let mut servo_settling = Settling::new(sc.settling_band * step.abs());
-    let sums = window_pass(traj, a, b, |t, y| {
-        peak_error = peak_error.max((traj.step_at(&traj.setpoint, t) - y).abs());
-        if servo {
-            shape.push(t, y);
-            servo_settling.push(t, (y - r_w).abs());
-        }
-    });
+    // settling time takes a second pass, backwards from the window's end
+    let mut nodes = NodeMetrics {
+        traj,
+        servo,
+        r_w,
+        peak_error: 0.0,
+        shape: ServoShape::new(r_w, step),
+        settling: Settling::new(sc.settling_band * step.abs()),
+    };
+    let sums = window_pass(traj, a, b, &mut nodes);
+    let NodeMetrics {
+        peak_error,
+        shape,
+        settling: servo_settling,
+        ..
+    } = nodes;
     let (overshoot, undershoot, rise_time) = if servo {
         shape.result()
     } else {
@@ -628,11 +721,9 @@ fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool)
     let settling_time = if servo {
         servo_settling.result(a)
     } else {
-        let mut s = Settling::new(sc.settling_band * peak_error);
-        window_nodes(traj, a, b, |t, y| {
-            s.push(t, (traj.step_at(&traj.setpoint, t) - y).abs())
-        });
-        s.result(a)
+        settling_backwards(traj, a, b, sc.settling_band * peak_error, |t, y| {
+            (traj.step_at(&traj.setpoint, t) - y).abs()
+        })
     };
     let (y_final, u_final) = ss.unwrap_or((
         res.y.last().copied().unwrap_or(0.0),

@@ -68,7 +68,7 @@ pub use saturation::LimitRecord;
 pub use scenario::{Scenario, Step};
 pub(crate) use single::LoopModel;
 pub(crate) use trajectory::{interpolation_inverse, piece_exponential};
-pub use trajectory::{lagrange, lagrange_deriv, monomial_coeffs, Trajectory, DEG, NODES};
+pub use trajectory::{lagrange, lagrange_deriv, monomial_coeffs, Trajectory, DEG, NODES, SIGMA};
 
 use crate::error::Result;
 use crate::model::controller::Controller;

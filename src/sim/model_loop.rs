@@ -679,10 +679,8 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
             *xr = dot(&p.m_end[row * width..(row + 1) * width], &z);
         }
         z[..n].copy_from_slice(&xn);
-        traj.n_pieces = k + 1;
-        if bad || !xn.iter().all(|q| q.is_finite()) {
+        if traj.close_piece(k, bad, &xn) {
             diverged_at = Some(t0);
-            traj.keep_pieces(k);
             break;
         }
     }

@@ -385,10 +385,8 @@ pub(crate) fn integrate_at(
         traj.v.extend_from_slice(vs);
         traj.y.extend_from_slice(ys);
         z[..n].copy_from_slice(xn);
-        traj.n_pieces = k + 1;
-        if bad || !xn.iter().all(|q| q.is_finite()) {
+        if traj.close_piece(k, bad, xn) {
             diverged_at = Some(t0);
-            traj.keep_pieces(k);
             break;
         }
     }

@@ -10,6 +10,17 @@ use nalgebra::{DMatrix, DVector};
 pub const DEG: usize = 5;
 /// Nodes per piece.
 pub const NODES: usize = DEG + 1;
+/// The nodes' local coordinates `σ_j = j/DEG` (each the correctly rounded quotient, as
+/// `j as f64 / DEG as f64` gives it at run time: a table, so no hot loop divides for it).
+pub const SIGMA: [f64; NODES] = {
+    let mut s = [0.0; NODES];
+    let mut j = 0;
+    while j < NODES {
+        s[j] = j as f64 / DEG as f64;
+        j += 1;
+    }
+    s
+};
 
 /// `exp(M·ℓ/DEG)` for one piece of length ℓ of the augmented system over
 /// `[x (n); ξ_j (NODES per delayed channel j); r; d]`: `ẋ = A x + Σ_j b_j ξ_{j,0} + b_r r + b_d d`,
@@ -86,6 +97,7 @@ pub struct Trajectory {
 
 impl Trajectory {
     /// Start time and length of piece `k`.
+    #[inline]
     pub fn piece(&self, k: usize) -> (f64, f64) {
         if let Some(st) = &self.starts {
             return (st[k], self.lens[k]);
@@ -102,6 +114,7 @@ impl Trajectory {
     }
 
     /// Value of a step signal at `t` (right-hand limit).
+    #[inline]
     pub fn step_at(&self, s: &Step, t: f64) -> f64 {
         if s.size != 0.0 && t >= s.time - self.tol {
             s.size
@@ -137,6 +150,7 @@ impl Trajectory {
     }
 
     /// Node values of `y` on piece `k`.
+    #[inline]
     pub fn y_nodes(&self, k: usize) -> &[f64] {
         &self.y[k * NODES..(k + 1) * NODES]
     }
@@ -165,6 +179,18 @@ impl Trajectory {
         (y, v - self.step_at(&self.disturbance, t))
     }
 
+    /// Ends piece `k` of a stepping loop whose end state is `x_end`: counts it and returns
+    /// false, or, when the piece left the bounds (`bad`) or `x_end` is not finite, keeps the
+    /// `k` pieces before it and returns true (the run diverged at the piece's start).
+    pub(crate) fn close_piece(&mut self, k: usize, bad: bool, x_end: &[f64]) -> bool {
+        self.n_pieces = k + 1;
+        if bad || !x_end.iter().all(|q| q.is_finite()) {
+            self.keep_pieces(k);
+            return true;
+        }
+        false
+    }
+
     /// Keeps only the first `k` pieces (the response before divergence was detected).
     pub fn keep_pieces(&mut self, k: usize) {
         self.n_pieces = k;
@@ -187,8 +213,8 @@ pub fn lagrange(vals: &[f64], s: f64) -> f64 {
     const W: [f64; NODES] = [1.0, -5.0, 10.0, -10.0, 5.0, -1.0];
     let mut num = 0.0;
     let mut den = 0.0;
-    for (j, (&v, &w)) in vals.iter().zip(W.iter()).enumerate() {
-        let d = s - j as f64 / DEG as f64;
+    for ((&v, &w), &sj) in vals.iter().zip(W.iter()).zip(&SIGMA) {
+        let d = s - sj;
         if d == 0.0 {
             return v;
         }
@@ -204,8 +230,8 @@ pub fn lagrange(vals: &[f64], s: f64) -> f64 {
 fn lagrange2(a: &[f64], b: &[f64], s: f64) -> (f64, f64) {
     const W: [f64; NODES] = [1.0, -5.0, 10.0, -10.0, 5.0, -1.0];
     let (mut na, mut nb, mut den) = (0.0, 0.0, 0.0);
-    for (j, ((&va, &vb), &w)) in a.iter().zip(b).zip(W.iter()).enumerate() {
-        let d = s - j as f64 / DEG as f64;
+    for (((&va, &vb), &w), &sj) in a.iter().zip(b).zip(W.iter()).zip(&SIGMA) {
+        let d = s - sj;
         if d == 0.0 {
             return (va, vb);
         }
