@@ -117,6 +117,8 @@ async function scenario(url, label) {
   assert.equal(await page.textContent('#export-status'), 'Preparing the export…');
   // ... actuator limits (simulate with `actuator`: refused by the first module) ...
   await page.click('#rl-limits');
+  // (the limit rows are built in the task after the checkbox's frame: www/realloop.js)
+  await page.waitForSelector('#rl-umin');
   await put(page, '#rl-umin', -1.2);
   await put(page, '#rl-umax', 0.25);
   // ... and a method the first module does not carry
