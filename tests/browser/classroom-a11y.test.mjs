@@ -2,25 +2,19 @@
 // protocol, which the page's Content-Security-Policy does not restrict): no violation of the
 // WCAG 2.0/2.1 level A and AA rules, in the default state and in a classroom state with the
 // frequency and trade-off panels, a perturbation and a pin.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 
 const axeSource = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 const TAGS = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'];
 
-let browser;
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 /** axe-core's WCAG A/AA violations of the page as it is now: "rule: target …" lines. */
 async function violations(page) {

@@ -1,21 +1,15 @@
 // Browser tests of the instructor mode (URL parameters, www/instructor.js, www/i18n.js) and of
 // the postMessage API (www/embed-api.js) between a host page and the embedded page on two
 // different origins (both served from memory by the test, nothing leaves the machine).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 
-let browser;
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 const st = () => ({
   ...S.defaultState(),

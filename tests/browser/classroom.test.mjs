@@ -1,20 +1,14 @@
 // Browser tests of issue 16's panels: the frequency response (numbers against the module's
 // freqresp/analyze), the trade-off sweep (against the module's sweep, cancelled by new input),
 // the perturbation envelope on the Nyquist plot.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 
-let browser;
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 const open = (hash = '', viewport) => H.open(browser.ctx, hash, viewport);
 

@@ -4,20 +4,14 @@
 // panels and the same numbers as a page opened at the resulting state; the embed choices follow
 // the rows; the real-loop panel is kept when a restored state leaves it unchanged and rebuilt
 // when a field was typed since (no timing is asserted: what is checked is what each frame shows).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 
-let browser;
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 const open = (hash = '') => H.open(browser.ctx, hash);
 const boiler = { family: 'ipdt_ir', k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 };

@@ -1,23 +1,14 @@
 // Browser test of the "Export code" menu (www/export.js) on the offline page dist/pidlab.html
 // opened from file:// in headless Chromium: the download happens, with no network request, and
 // holds the current design's numbers. Run with: node --test tests/browser/
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import * as S from '../../www/state.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { setInput } from './harness.mjs';
 
-let browser;
-
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 /** The shortest round-trip literal of x as the Rust side writes it ('2' -> '2.0'). */
 function lit(x) {

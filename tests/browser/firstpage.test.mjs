@@ -5,24 +5,16 @@
 // promise set before the page's scripts run: www/engine.js loadFull waits for it), so "before
 // the full module is ready" is a state the test controls, not a race. Checked on the single-file
 // page from file:// with the browser offline, and on www/ served over HTTP as ES modules.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { frames, pageUrl } from './harness.mjs';
 
-let browser;
-
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 /** Once the render for the latest input has run and its results are on screen (not marked
  *  busy), then two frames. While the full module is held, settled() cannot be used: the method

@@ -1,9 +1,10 @@
 // The identification panel (www/identify.js) on dist/pidlab.html from file://: a CSV pasted in
 // the page is parsed, fitted by the module, drawn, and "Use this model" makes it the page's
 // plant; no request leaves the page. Plus the CSV parser's separators and header rules in Node.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { parseCsv } from '../../www/identify.js';
 
 /** A step test of 2(1 − 0.8 s)e^{−1.37 s}/(5 s + 1), 600 samples at 0.05, step at t = 1, offset
@@ -32,9 +33,7 @@ test('parseCsv: comma, semicolon with decimal commas, tab; header optional; name
   assert.throws(() => parseCsv('0,1\n1,2'), /line 1: 2 column\(s\)/);
 });
 
-let browser;
-before(async () => { browser = await H.launch(); });
-after(async () => { await browser.close(); });
+const browser = browserSuite({ families: false });
 
 test('identify panel: paste, fit, draw, use this model', async () => {
   const { page, log } = await H.open(browser.ctx);

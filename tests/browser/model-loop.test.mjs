@@ -2,14 +2,13 @@
 // control structure) on the offline page dist/pidlab.html, opened from file:// in headless
 // Chromium through playwright-core. Run with: node --test tests/browser/
 // Chromium: /usr/bin/chromium (override with PIDLAB_CHROMIUM).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { frames, setInput, ready } from './harness.mjs';
-
-let browser;
 
 const PRESET = 'medarametla2018/ex1/ajmeri-ali';
 // Example 1: K e^{-5s}/s with K = 0.05; Ajmeri & Ali's set-point PD kp = 2.9933, kd = 7.1189.
@@ -17,14 +16,7 @@ const PRESET = 'medarametla2018/ex1/ajmeri-ali';
 const K = 0.05, KP = 2.9933, KD = 7.1189;
 const IAE_CLOSED_FORM = (1 + K * KD) / (K * KP);
 
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 /** Opens the page (see harness.mjs: console/page errors, requests, non-local ones aborted). */
 const open = (hash = '') => H.open(browser.ctx, hash);

@@ -2,26 +2,17 @@
 // from file:// in headless Chromium through playwright-core.
 //   npm install --no-save playwright-core && node --test tests/browser/
 // Chromium: /usr/bin/chromium (override with PIDLAB_CHROMIUM).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { root, frames, setInput } from './harness.mjs';
 
-let browser;
-
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-  await pickLambdaMethod();
-});
-
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite({ setup: () => pickLambdaMethod() });
 
 /** Opens the page (see harness.mjs: console/page errors, requests, non-local ones aborted). */
 const open = (hash = '', viewport) => H.open(browser.ctx, hash, viewport);

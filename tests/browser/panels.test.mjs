@@ -3,21 +3,15 @@
 // the same shapes instead of building every control again; a panel whose shape changed is built
 // anew; the focus stays on its control; an input whose answers are memoized is applied in the
 // task after its frame.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { frames } from './harness.mjs';
 
-let browser;
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 const open = (hash = '') => H.open(browser.ctx, hash);
 const boiler = { family: 'ipdt_ir', k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 };

@@ -2,22 +2,16 @@
 // anti-windup, the sampled controller, measurement noise. Each check compares what the page
 // shows with a direct call of the module on the same inputs.
 // Run with: bash scripts/page.sh --no-serve && node --test tests/browser/realloop.test.mjs
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { frames, setInput } from './harness.mjs';
 
-let browser;
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 const open = (hash = '') => H.open(browser.ctx, hash);
 

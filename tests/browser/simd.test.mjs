@@ -5,19 +5,12 @@
 // CompileError, and WebAssembly.validate (the page's SIMD probe) returns false. The page must
 // then say, in words, that the browser lacks WebAssembly SIMD; a compile error on a browser
 // that has SIMD keeps the technical message. dist/pidlab.html from file://.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 
-let browser;
-
-before(async () => {
-  browser = await H.launch();
-});
-
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite({ families: false });
 
 /** The loading line once the start-up failed (the page never becomes ready). */
 async function loadingText(simd) {

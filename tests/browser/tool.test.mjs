@@ -1,7 +1,7 @@
 // Browser tests of the page as a dependable tool (issue 12): sliders over the plant's admissible
 // interval, errors beside the field in the user's words, the results kept in view, embedding,
 // undo/redo through the browser history, reset, and the exports carrying the design.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, mkdtempSync, readFileSync, writeFileSync, copyFileSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
@@ -10,16 +10,10 @@ import { pathToFileURL } from 'node:url';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { root, frames, setInput } from './harness.mjs';
 
-let browser;
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 const open = (hash = '', viewport) => H.open(browser.ctx, hash, viewport);
 const boiler = { family: 'ipdt_ir', k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 };

@@ -6,23 +6,15 @@
 // dead instance does, so a page that kept calling it would fail every later assertion. Checked
 // on the single-file page (file://: the worker runs from a Blob URL) and on www/ served over
 // HTTP as ES modules (a module worker, www/worker.js).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { setInput, ready } from './harness.mjs';
 
-let browser;
-
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 const METHOD = 'praveen_kumar';
 const boiler = (lambda) => ({ ...S.defaultState(), method: METHOD, params: { lambda, epsilon: 0.2 }, target: null });

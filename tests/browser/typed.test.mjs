@@ -3,21 +3,15 @@
 // re-drawing take them as they took number[]. A coarse scenario (dt = 0.1: 601 samples, fewer
 // than two per pixel of a plot) hands the plots the typed samples unthinned, so their spec text
 // is written from the Float64Arrays themselves (plots.js arrayText).
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 
-let browser;
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 const boiler = { family: 'ipdt_ir', k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 };
 

@@ -2,23 +2,15 @@
 // long module call, superseded requests are never computed or shown, and what is finally shown
 // is what a direct call of the module gives for the final input. On the single-file page
 // (file://: the worker runs from a Blob URL). Worker traps: tests/browser/trap.test.mjs.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
+import { browserSuite } from './suite.mjs';
 import { frames } from './harness.mjs';
 
-let browser;
-
-before(async () => {
-  S.setFamilies(await H.moduleFamilies());
-  browser = await H.launch();
-});
-
-after(async () => {
-  if (browser) await browser.close();
-});
+const browser = browserSuite();
 
 // Issue 15's plant on which Arvanitis Algorithm III took 2.1 s per tune on the page's thread.
 const SLOW = { family: 'ipdt_ir', k: 0.478, tau: 0.536, tau_z: 2.8, theta: 0.521 };
