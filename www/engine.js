@@ -24,6 +24,7 @@
 import * as firstGlue from './pkg-first/pidlab_first.js';
 import * as fullGlueModule from './pkg/pidlab.js';
 import { isNeedsFull } from './needs-full.js';
+import { decodeBase64 } from './seed.js';
 
 /** The error of a call the first module cannot serve while the full module is not ready yet. */
 export class NeedsFull extends Error {
@@ -96,15 +97,6 @@ function instantiate(s, glue) {
   glue.initSync({ module: s.module });
   s.glue = glue;
   s.generation++;
-}
-
-/** The bytes of a base64 text (Uint8Array.fromBase64 where the browser has it). */
-function decodeBase64(b64) {
-  if (typeof Uint8Array.fromBase64 === 'function') return Uint8Array.fromBase64(b64);
-  const bin = atob(b64);
-  const bytes = new Uint8Array(bin.length);
-  for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
-  return bytes;
 }
 
 /** A module's wasm compiled from pkg dirs next to this file (the served page). */

@@ -64,19 +64,21 @@ export function encodeSeed(entries, toBase64) {
   return text.replace(/</g, '\\u003c');
 }
 
-function fromBase64(s) {
-  if (typeof Uint8Array.fromBase64 === 'function') return Uint8Array.fromBase64(s);
-  const bin = atob(s);
-  const b = new Uint8Array(bin.length);
-  for (let i = 0; i < bin.length; i++) b[i] = bin.charCodeAt(i);
-  return b;
+/** The bytes of a base64 text (Uint8Array.fromBase64 where the browser has it); engine.js
+ *  decodes the inlined modules with it too. */
+export function decodeBase64(b64) {
+  if (typeof Uint8Array.fromBase64 === 'function') return Uint8Array.fromBase64(b64);
+  const bin = atob(b64);
+  const bytes = new Uint8Array(bin.length);
+  for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+  return bytes;
 }
 
 /** The entries of a data block's text. */
 export function decodeSeed(text) {
   return JSON.parse(text, (k, v) => {
     if (v && typeof v === 'object' && !Array.isArray(v)) {
-      if (typeof v.$f64 === 'string') { const b = fromBase64(v.$f64); return new Float64Array(b.buffer, b.byteOffset, b.byteLength / 8); }
+      if (typeof v.$f64 === 'string') { const b = decodeBase64(v.$f64); return new Float64Array(b.buffer, b.byteOffset, b.byteLength / 8); }
       if (typeof v.$num === 'string') return Number(v.$num);
     }
     return v;
