@@ -212,7 +212,9 @@ for (const f of readdirSync(www).filter((x) => x.endsWith('.js'))) {
 // the browser's DecompressionStream('gzip') (on the page's thread: ~6 thread ms for the first
 // module at load 16), then compiled by WebAssembly.compile (off the page's thread; a
 // compileStreaming of the decompressed stream was measured too: it decodes the module on the
-// page's thread, ~3 thread ms more, for no gain in wall time). `--plain-first` / `--plain-full`
+// page's thread, ~3 thread ms more, for no gain in wall time; so was the inflate in a one-shot
+// worker: it starts the compilation no earlier, for ~10 thread ms of worker start-up).
+// `--plain-first` / `--plain-full`
 // carry a module as plain base64 instead (for A/B measurements; engine.js reads both forms).
 const plain = { first: process.argv.includes('--plain-first'), full: process.argv.includes('--plain-full') };
 const gz = (bytes) => {
