@@ -113,7 +113,7 @@ export async function load() {
   // (the single-file page's early script has started compiling it: scripts/inline.mjs)
   const early = globalThis.PIDLAB_WASM_COMPILE;
   if (early) s.module = await early;
-  else if (typeof globalThis.PIDLAB_WASM_GZ === 'string') s.module = await globalThis.PIDLAB_COMPILE_GZ(globalThis.PIDLAB_WASM_GZ);
+  else if (typeof globalThis.PIDLAB_WASM_GZ === 'string') s.module = await globalThis.PIDLAB_COMPILE_GZ(decodeBase64(globalThis.PIDLAB_WASM_GZ));
   else if (typeof globalThis.PIDLAB_WASM_B64 === 'string') s.module = await WebAssembly.compile(decodeBase64(globalThis.PIDLAB_WASM_B64));
   else s.module = await fetchCompile(s.file);
   instantiate(s, s.initial);
@@ -132,7 +132,7 @@ async function compileFull() {
     el.remove();
     if (!gzip) return WebAssembly.compile(decodeBase64(b64));
     if (typeof globalThis.PIDLAB_COMPILE_GZ !== 'function') throw new Error('the page carries the full module gzipped but not the function that unpacks it (PIDLAB_COMPILE_GZ)');
-    return globalThis.PIDLAB_COMPILE_GZ(b64);
+    return globalThis.PIDLAB_COMPILE_GZ(decodeBase64(b64));
   }
   return fetchCompile(eng.full.file);
 }

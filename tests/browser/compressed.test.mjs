@@ -5,7 +5,9 @@
 // here: the blocks are exactly the built modules (www/pkg-first, www/pkg), byte for byte; and a
 // page whose full-module block is damaged says so in the console, keeps working on the first
 // module (its plots, readouts and a λ move), and answers what only the full module serves with
-// an error that says the full module could not be loaded, instead of waiting for ever.
+// an error that says the full module could not be loaded, instead of waiting for ever; and a
+// browser without Uint8Array.fromBase64 (the early script then leaves the decoding to
+// engine.js) starts on the first module and gets the full one all the same.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync, mkdtempSync, rmSync } from 'node:fs';
@@ -78,4 +80,22 @@ test('a damaged full-module block is reported; the page works on the first modul
   } finally {
     rmSync(dir, { recursive: true, force: true });
   }
+});
+
+test('without Uint8Array.fromBase64, engine.js decodes both gzip blocks: the first plots, then the full module live', async () => {
+  const page = await browser.ctx.newPage();
+  const log = H.record(page);
+  await page.route('**/*', (route) => (/^(file|data|blob):/.test(route.request().url()) ? route.continue() : route.abort()));
+  await page.addInitScript(() => { delete Uint8Array.fromBase64; });
+  await page.goto(H.pageUrl);
+  await H.ready(page);
+  assert.equal(await page.evaluate(() => typeof Uint8Array.fromBase64), 'undefined');
+  assert.equal(await page.evaluate(() => globalThis.PIDLAB_WASM_COMPILE), undefined, 'the early script did not compile');
+  const mods = await page.evaluate(() => window.__pidlab.modules());
+  assert.ok(mods.page.first.plot >= 4, 'the first plots drawn by the first module: ' + JSON.stringify(mods.page));
+  assert.equal(mods.full, true, 'the full module is live');
+  const px = await H.colouredPixels(page);
+  for (const id of ['plot-servo', 'plot-load', 'plot-u', 'plot-nyquist']) assert.ok(px[id] > 100, `${id} drawn (${px[id]} coloured pixels)`);
+  assert.deepEqual(log.errors, []);
+  await page.close();
 });
