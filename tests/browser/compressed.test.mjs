@@ -7,7 +7,9 @@
 // module (its plots, readouts and a λ move), and answers what only the full module serves with
 // an error that says the full module could not be loaded, instead of waiting for ever; and a
 // browser without Uint8Array.fromBase64 (the early script then leaves the decoding to
-// engine.js) starts on the first module and gets the full one all the same.
+// engine.js) starts on the first module and gets the full one all the same; a browser without
+// DecompressionStream (Firefox before 113: the single file's floor) is told so on the loading
+// line.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync, mkdtempSync, rmSync } from 'node:fs';
@@ -97,5 +99,17 @@ test('without Uint8Array.fromBase64, engine.js decodes both gzip blocks: the fir
   const px = await H.colouredPixels(page);
   for (const id of ['plot-servo', 'plot-load', 'plot-u', 'plot-nyquist']) assert.ok(px[id] > 100, `${id} drawn (${px[id]} coloured pixels)`);
   assert.deepEqual(log.errors, []);
+  await page.close();
+});
+
+test('a browser without DecompressionStream is told, on the loading line, what it lacks and to update', async () => {
+  const page = await browser.ctx.newPage();
+  await page.route('**/*', (route) => (/^(file|data|blob):/.test(route.request().url()) ? route.continue() : route.abort()));
+  await page.addInitScript(() => { delete globalThis.DecompressionStream; });
+  await page.goto(H.pageUrl);
+  await page.waitForFunction(() => !document.getElementById('loading').textContent.startsWith('Loading'), null, { timeout: 20000 });
+  const text = await page.$eval('#loading', (x) => x.textContent);
+  assert.match(text, /^Could not start the computation module: this browser cannot unpack the module carried by the page \(it lacks DecompressionStream\): update it \(.*Firefox 113\+/);
+  assert.equal(await page.evaluate(() => document.body.getAttribute('data-ready')), null, 'the page must not claim to be ready');
   await page.close();
 });
