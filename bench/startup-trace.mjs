@@ -7,6 +7,8 @@
 //
 //   node bench/startup-trace.mjs [page.html] [loads]      # default dist/pidlab.html, 3 loads
 //   node bench/startup-trace.mjs dist/pidlab.html 5 --events   # also every main-thread event ≥ 1 ms
+//   node bench/startup-trace.mjs a.html b.html 6          # A/B: loads alternate a, b, a, b, …;
+//                                                         # a report per page, then a side-by-side table
 //
 // Per load it prints the timeline of the last load in detail and, over all loads, the median
 // of each mark and of each phase's summed duration. README, "The page's start-up, measured".
@@ -19,8 +21,9 @@ const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const argv = process.argv.slice(2);
 const showEvents = argv.includes('--events');
 const pos = argv.filter((a) => !a.startsWith('--'));
-const dist = resolve(pos[0] || join(root, 'dist', 'pidlab.html'));
-const loads = Number(pos[1] || 3);
+const pages = pos.filter((a) => !/^\d+$/.test(a)).map((a) => resolve(a));
+if (!pages.length) pages.push(resolve(join(root, 'dist', 'pidlab.html')));
+const loads = Number(pos.find((a) => /^\d+$/.test(a)) || 3);
 
 const CATEGORIES = [
   'devtools.timeline', 'disabled-by-default-devtools.timeline', 'blink.user_timing', 'loading', 'v8',
@@ -33,7 +36,7 @@ const med = (a) => {
 };
 const f = (x) => (Number.isFinite(x) ? x.toFixed(1) : '–');
 
-async function oneLoad(ctx) {
+async function oneLoad(ctx, dist) {
   const page = await ctx.newPage();
   await page.route('**/*', (route) => (/^(file|data|blob):/.test(route.request().url()) ? route.continue() : route.abort()));
   const cdp = await page.context().newCDPSession(page);
@@ -67,7 +70,8 @@ const NAMES = [
   'v8.compile', 'v8.compileModule', 'v8.run', 'v8.evaluateModule', 'wasm.AsyncCompile', 'RunMicrotasks',
   'wasm.SyncInstantiate', 'wasm.CompileLazy', 'wasm.CompileWasmImportCallWrapper', 'FunctionCall', 'TimerFire',
   'FireAnimationFrame', 'HandlePostMessage', 'FrameLoader::updateForSameDocumentNavigation', 'UpdateLayoutTree',
-  'Layout', 'PrePaint', 'Paint', 'Layerize', 'Commit', 'MinorGC', 'MajorGC',
+  'Layout', 'PrePaint', 'Paint', 'Layerize', 'Commit', 'MinorGC', 'MajorGC', 'DecompressionStream Inflate',
+  'v8.wasm.compileConsume',
 ];
 
 /** The events of `list` not nested in another of them (each counted once). */
@@ -160,44 +164,61 @@ function analyse(events) {
 }
 
 const b = await launch({ requirePage: false });
-console.log(`# start-up trace: ${dist}, ${loads} loads, load average ${loadavg().map((x) => x.toFixed(1)).join(' ')}`);
-const all = [];
-let last = null;
+console.log(`# start-up trace: ${pages.join(', ')}, ${loads} loads each${pages.length > 1 ? ' (alternating)' : ''}, load average ${loadavg().map((x) => x.toFixed(1)).join(' ')}`);
+const runs = pages.map(() => []);
 for (let i = 0; i < loads; i++) {
-  const { res, events } = await oneLoad(b.ctx);
-  const a = analyse(events);
-  a.res = res;
-  all.push(a);
-  last = a;
-  console.log(`load ${i + 1}: first plots painted ${f(a.marks['first-painted'])} ms after navigation; marks: ` + Object.entries(a.marks).sort((x, y) => x[1] - y[1]).map(([k, v]) => `${k} ${f(v)}`).join(', '));
+  for (let p = 0; p < pages.length; p++) {
+    const { res, events } = await oneLoad(b.ctx, pages[p]);
+    const a = analyse(events);
+    a.res = res;
+    runs[p].push(a);
+    console.log(`${pages.length > 1 ? `[${p + 1}] ` : ''}load ${i + 1}: first plots painted ${f(a.marks['first-painted'])} ms after navigation; marks: ` + Object.entries(a.marks).sort((x, y) => x[1] - y[1]).map(([k, v]) => `${k} ${f(v)}`).join(', '));
+  }
 }
-console.log(`\n## median over ${loads} loads (ms after navigation start, wall time)`);
-const keys = [...new Set(all.flatMap((a) => Object.keys(a.marks)))];
-const mk = keys.map((k) => [k, med(all.map((a) => a.marks[k]))]).sort((x, y) => x[1] - y[1]);
-for (const [k, v] of mk) console.log(`  ${k.padEnd(28)} ${f(v)}`);
-console.log('\n## the page\'s own marks (perf.startup, median ms after navigation) and the first render\'s phases (perf.firstPhases, median ms)');
-const su = [...new Set(all.flatMap((a) => Object.keys(a.res.startup || {})))];
-console.log('  ' + su.map((k) => [k, med(all.map((a) => a.res.startup[k]))]).sort((x, y) => x[1] - y[1]).map(([k, v]) => `${k} ${f(v)}`).join(', '));
-const ph = [...new Set(all.flatMap((a) => Object.keys(a.res.phases || {})))];
-console.log('  ' + ph.map((k) => `${k} ${f(med(all.map((a) => (a.res.phases || {})[k])))}`).join(', '));
-console.log('\n## main thread up to the first paint: summed durations (median; wall ms, thread ms where the trace has it)');
-for (const k of Object.keys(last.phases)) console.log(`  ${k.padEnd(78)} ${f(med(all.map((a) => a.phases[k][0])))}` + (last.phases[k][1] ? ` (thread ${f(med(all.map((a) => a.phases[k][1])))})` : ''));
-console.log('\n## task time per thread before the first paint (median; wall ms / thread ms)');
-const thr = [...new Set(all.flatMap((a) => Object.keys(a.perThread)))];
-for (const k of thr) console.log(`  ${k.padEnd(40)} ${f(med(all.map((a) => (a.perThread[k] || [0])[0])))} / ${f(med(all.map((a) => (a.perThread[k] || [0, 0])[1])))}`);
-console.log('\n## the page main thread up to the first paint, by event (median; wall ms / thread ms / count; names may nest)');
-for (const n of NAMES) console.log(`  ${n.padEnd(48)} ${f(med(all.map((a) => a.names[n][0])))} / ${f(med(all.map((a) => a.names[n][1])))} / ${med(all.map((a) => a.names[n][2]))}`);
-console.log('\n## wasm events before the first paint (last load): name @thread: count, summed ms, first start, last end');
-for (const [k, w] of Object.entries(last.wasmBy).sort((x, y) => x[1].first - y[1].first)) console.log(`  ${k.padEnd(60)} ${w.n} × ${f(w.ms)} ms, ${f(w.first)} → ${f(w.last)}`);
-console.log('\n## computation workers before the first paint (last load): tasks ≥ 2 ms [start, wall ms, thread ms]');
-for (const [tid, w] of Object.entries(last.workers)) {
-  const t = w.tasks.filter((e) => e.dur >= 2000).map((e) => `[${f(last.rel(e.ts))}, ${f(e.dur / 1000)}, ${f((e.tdur || 0) / 1000)}]`);
-  console.log(`  ${w.name} ${tid}: ${t.join(' ')}`);
-}
-console.log('\n## main-thread tasks ≥ 2 ms before the first paint (last load): [start, wall ms, thread ms]');
-console.log('  ' + last.tasks.filter((t) => t[1] >= 2).map((t) => `[${f(t[0])}, ${f(t[1])}, ${f(t[2])}]`).join(' '));
-if (showEvents) {
-  console.log('\n## main-thread events ≥ 1 ms before the first paint (last load): start, ms, name, data');
-  for (const d of last.detail) console.log(`  ${f(d[0]).padStart(7)} ${f(d[1]).padStart(7)} ${d[2]} ${d[3]}`);
+for (let p = 0; p < pages.length; p++) report(pages[p], runs[p]);
+if (pages.length > 1) {
+  console.log('\n## side by side (medians; thread ms = CPU time)');
+  const row = (label, get) => console.log(`  ${label.padEnd(44)} ${runs.map((all) => f(med(all.map(get))).padStart(9)).join(' ')}`);
+  console.log(`  ${''.padEnd(44)} ${pages.map((_, p) => `[${p + 1}]`.padStart(9)).join(' ')}`);
+  row('first plots painted (wall, after navigation)', (a) => a.marks['first-painted']);
+  row('page script starts (wall)', (a) => a.res.startup.script);
+  row('main thread tasks (thread ms)', (a) => a.phases['main thread busy (top-level tasks)'][1]);
+  const thr = [...new Set(runs.flatMap((all) => all.flatMap((a) => Object.keys(a.perThread))))].filter((k) => /Worker|main/i.test(k));
+  for (const k of thr) row(k.slice(0, 30) + ' (thread ms)', (a) => (a.perThread[k] || [0, 0])[1]);
+  for (const n of ['TextResourceDecoder::Decode', 'ParseHTML', 'RunMicrotasks', 'UpdateLayoutTree', 'Layout', 'Paint', 'DecompressionStream Inflate', 'v8.wasm.compileConsume']) row(n + ' (thread ms)', (a) => a.names[n][1]);
 }
 await b.close();
+
+function report(dist, all) {
+  const last = all[all.length - 1];
+  if (pages.length > 1) console.log(`\n# ${dist}`);
+  console.log(`\n## median over ${loads} loads (ms after navigation start, wall time)`);
+  const keys = [...new Set(all.flatMap((a) => Object.keys(a.marks)))];
+  const mk = keys.map((k) => [k, med(all.map((a) => a.marks[k]))]).sort((x, y) => x[1] - y[1]);
+  for (const [k, v] of mk) console.log(`  ${k.padEnd(28)} ${f(v)}`);
+  console.log('\n## the page\'s own marks (perf.startup, median ms after navigation) and the first render\'s phases (perf.firstPhases, median ms)');
+  const su = [...new Set(all.flatMap((a) => Object.keys(a.res.startup || {})))];
+  console.log('  ' + su.map((k) => [k, med(all.map((a) => a.res.startup[k]))]).sort((x, y) => x[1] - y[1]).map(([k, v]) => `${k} ${f(v)}`).join(', '));
+  const ph = [...new Set(all.flatMap((a) => Object.keys(a.res.phases || {})))];
+  console.log('  ' + ph.map((k) => `${k} ${f(med(all.map((a) => (a.res.phases || {})[k])))}`).join(', '));
+  console.log('\n## main thread up to the first paint: summed durations (median; wall ms, thread ms where the trace has it)');
+  for (const k of Object.keys(last.phases)) console.log(`  ${k.padEnd(78)} ${f(med(all.map((a) => a.phases[k][0])))}` + (last.phases[k][1] ? ` (thread ${f(med(all.map((a) => a.phases[k][1])))})` : ''));
+  console.log('\n## task time per thread before the first paint (median; wall ms / thread ms)');
+  const thr = [...new Set(all.flatMap((a) => Object.keys(a.perThread)))];
+  for (const k of thr) console.log(`  ${k.padEnd(40)} ${f(med(all.map((a) => (a.perThread[k] || [0])[0])))} / ${f(med(all.map((a) => (a.perThread[k] || [0, 0])[1])))}`);
+  console.log('\n## the page main thread up to the first paint, by event (median; wall ms / thread ms / count; names may nest)');
+  for (const n of NAMES) console.log(`  ${n.padEnd(48)} ${f(med(all.map((a) => a.names[n][0])))} / ${f(med(all.map((a) => a.names[n][1])))} / ${med(all.map((a) => a.names[n][2]))}`);
+  console.log('\n## wasm events before the first paint (last load): name @thread: count, summed ms, first start, last end');
+  for (const [k, w] of Object.entries(last.wasmBy).sort((x, y) => x[1].first - y[1].first)) console.log(`  ${k.padEnd(60)} ${w.n} × ${f(w.ms)} ms, ${f(w.first)} → ${f(w.last)}`);
+  console.log('\n## computation workers before the first paint (last load): tasks ≥ 2 ms [start, wall ms, thread ms]');
+  for (const [tid, w] of Object.entries(last.workers)) {
+    const t = w.tasks.filter((e) => e.dur >= 2000).map((e) => `[${f(last.rel(e.ts))}, ${f(e.dur / 1000)}, ${f((e.tdur || 0) / 1000)}]`);
+    console.log(`  ${w.name} ${tid}: ${t.join(' ')}`);
+  }
+  console.log('\n## main-thread tasks ≥ 2 ms before the first paint (last load): [start, wall ms, thread ms]');
+  console.log('  ' + last.tasks.filter((t) => t[1] >= 2).map((t) => `[${f(t[0])}, ${f(t[1])}, ${f(t[2])}]`).join(' '));
+  if (showEvents) {
+    console.log('\n## main-thread events ≥ 1 ms before the first paint (last load): start, ms, name, data');
+    for (const d of last.detail) console.log(`  ${f(d[0]).padStart(7)} ${f(d[1]).padStart(7)} ${d[2]} ${d[3]}`);
+  }
+}

@@ -107,28 +107,32 @@ async function fetchCompile(file) {
 }
 
 /** Loads the first module: the compilation the single-file page's early script started, else
- *  from the base64 text that page carries, else from pkg-first/. */
+ *  from the text that page carries (gzip's base64, or plain base64), else from pkg-first/. */
 export async function load() {
   const s = eng.first;
-  const b64 = globalThis.PIDLAB_WASM_B64;
   // (the single-file page's early script has started compiling it: scripts/inline.mjs)
   const early = globalThis.PIDLAB_WASM_COMPILE;
   if (early) s.module = await early;
-  else if (typeof b64 === 'string') s.module = await WebAssembly.compile(decodeBase64(b64));
+  else if (typeof globalThis.PIDLAB_WASM_GZ === 'string') s.module = await globalThis.PIDLAB_COMPILE_GZ(decodeBase64(globalThis.PIDLAB_WASM_GZ));
+  else if (typeof globalThis.PIDLAB_WASM_B64 === 'string') s.module = await WebAssembly.compile(decodeBase64(globalThis.PIDLAB_WASM_B64));
   else s.module = await fetchCompile(s.file);
   instantiate(s, s.initial);
   prepareSpare(s);
 }
 
-/** The full module's wasm: the single-file page carries it as base64 in a non-executed
- *  `<script type="application/octet-stream" id="pidlab-wasm-full">` (scripts/inline.mjs), read
- *  only now; served, pkg/pidlab_bg.wasm. */
+/** The full module's wasm: the single-file page carries it in a non-executed
+ *  `<script type="application/octet-stream" id="pidlab-wasm-full">` (scripts/inline.mjs), as
+ *  the base64 of its gzip (`data-encoding="gzip"`: unpacked and compiled by the early script's
+ *  PIDLAB_COMPILE_GZ) or of the module itself, read only now; served, pkg/pidlab_bg.wasm. */
 async function compileFull() {
   const el = typeof document !== 'undefined' ? document.getElementById('pidlab-wasm-full') : null;
   if (el) {
     const b64 = el.textContent.trim();
+    const gzip = el.getAttribute('data-encoding') === 'gzip';
     el.remove();
-    return WebAssembly.compile(decodeBase64(b64));
+    if (!gzip) return WebAssembly.compile(decodeBase64(b64));
+    if (typeof globalThis.PIDLAB_COMPILE_GZ !== 'function') throw new Error('the page carries the full module gzipped but not the function that unpacks it (PIDLAB_COMPILE_GZ)');
+    return globalThis.PIDLAB_COMPILE_GZ(decodeBase64(b64));
   }
   return fetchCompile(eng.full.file);
 }
