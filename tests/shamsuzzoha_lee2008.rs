@@ -942,3 +942,111 @@ fn ideal_derivative_jumps_every_theta_on_example5() {
         assert!(rel(v, 4.52) < 0.02, "load TV {v} vs printed 4.52");
     }
 }
+
+/// The study option `integrators_as_lags`: the plant as the design model sees it. The paper
+/// prints two such models: Example 1 "designed by considering the above process as
+/// 100e^(-0.2s)/((100s + 1)(s + 1))" and Example 2 "as 10000e^(-0.8s)/((100s + 1)(100s + 1))";
+/// both are reproduced coefficient by coefficient (exact arithmetic on small integers: 1e-12
+/// relative). A plant without an integrator and φ ≤ 0 are errors naming the field.
+#[wasm_bindgen_test(unsupported = test)]
+fn integrators_as_lags_reproduce_the_printed_design_models() {
+    use pidlab::rules::shamsuzzoha_lee2008::studies::integrators_as_lags;
+    let close = |a: &[f64], b: &[f64]| {
+        a.len() == b.len()
+            && a.iter()
+                .zip(b)
+                .all(|(x, y)| (x - y).abs() <= 1e-12 * y.abs().max(1.0))
+    };
+    let st = studies();
+    let ex1 = integrators_as_lags(&st[0].plant.plant(), 100.0).unwrap();
+    let (n, d) = ex1.tf.to_desc();
+    // 100/((100s + 1)(s + 1)) = 100/(100s² + 101s + 1).
+    assert!(
+        close(&n, &[100.0]) && close(&d, &[100.0, 101.0, 1.0]),
+        "{n:?}/{d:?}"
+    );
+    assert_eq!(ex1.delay, 0.2);
+    let ex2 = integrators_as_lags(&st[1].plant.plant(), 100.0).unwrap();
+    let (n, d) = ex2.tf.to_desc();
+    // 10000/(100s + 1)² = 10000/(10000s² + 200s + 1).
+    assert!(
+        close(&n, &[10000.0]) && close(&d, &[10000.0, 200.0, 1.0]),
+        "{n:?}/{d:?}"
+    );
+    assert_eq!(ex2.delay, 0.8);
+    let stable = Plant::from_desc(&[1.0], &[1.0, 1.0], 1.0).unwrap();
+    assert_eq!(
+        integrators_as_lags(&stable, 100.0).unwrap_err().path,
+        "plant"
+    );
+    let e = integrators_as_lags(&st[0].plant.plant(), 0.0).unwrap_err();
+    assert_eq!(e.path, "phi");
+    assert!(e.message.contains("> 0"), "{}", e.message);
+}
+
+/// The study option `row_controller_with_derivative_lag` (derivative K_d s/(t_f s + 1)): its
+/// feedback path is K_c(1 + 1/(τ_I s) + τ_D s/(t_f s + 1)) built by hand from the printed
+/// settings of Table 2's Skogestad row (series form: K_c' = K_c(1 + τ_D/τ_I), τ_D' =
+/// τ_D/(1 + τ_D/τ_I)), at five frequencies to 1e-12 relative. With t_f = 0.01 s (N = 100 s⁻¹)
+/// Table 2's proposed mismatch set-point and load IAE reproduce: measured 4.0383 and 1.8220
+/// (printed 4.07, 1.83; −0.78 %, −0.44 %), asserted within 1 %, a bound the ideal derivative
+/// misses (3.9641, −2.6 %; 1.7869, −2.4 %, checked too, so the test separates the two).
+/// Errors: t_f ≤ 0, an unknown row, Liu et al.'s row (no PID).
+#[wasm_bindgen_test(unsupported = test)]
+fn table2_proposed_mismatch_with_a_derivative_lag() {
+    use pidlab::rules::shamsuzzoha_lee2008::studies::{perf, row_controller_with_derivative_lag};
+    let st = studies().into_iter().find(|s| s.id == "ex2").unwrap();
+    let t_f = 0.01;
+    let sk = row_controller_with_derivative_lag(&st, "skogestad", t_f).unwrap();
+    let (kc, ti, td) = (0.0977, 6.40, 6.40);
+    let (kp, kd) = (kc * (1.0 + td / ti), kc * td);
+    for w in [1e-3, 1e-2, 0.1, 1.0, 10.0] {
+        let s = pidlab::model::poly::C64::new(0.0, w);
+        let want = s.inv() * (kc / ti) + kp + s * kd / (s * t_f + 1.0);
+        let got = sk.cy.eval_jw(w);
+        assert!((got - want).norm() <= 1e-12 * want.norm(), "Cy at ω = {w}");
+    }
+    let row = st.rows.iter().find(|r| r.key == "proposed").unwrap();
+    let ideal = perf(&st.mismatch, row.controller.as_ref().unwrap(), &st.scenario).unwrap();
+    let c = row_controller_with_derivative_lag(&st, "proposed", t_f).unwrap();
+    let lagged = perf(&st.mismatch, &c, &st.scenario).unwrap();
+    assert_rel(
+        &[
+            ("SP IAE mism.", lagged.sp_iae, 4.07),
+            ("LD IAE mism.", lagged.ld_iae, 1.83),
+        ],
+        0.01,
+    );
+    assert!(rel(ideal.sp_iae, 4.07) > 0.02 && rel(ideal.ld_iae, 1.83) > 0.02);
+    for (key, tf, path) in [
+        ("proposed", 0.0, "t_f"),
+        ("proposed", f64::NAN, "t_f"),
+        ("nobody", 0.01, "key"),
+        ("liu", 0.01, "key"),
+    ] {
+        let e = row_controller_with_derivative_lag(&st, key, tf).unwrap_err();
+        assert_eq!(e.path, path, "{key} {tf}: {}", e.message);
+    }
+}
+
+/// Table 5, Luyben (1996): the printed load IAE 21.0 (nominal and 10 % mismatch) is the load
+/// response followed for 150 s (responses simulated apart, `perf_separate`): within the
+/// printed digits (±0.05). Complete, ∫e = −τ_I/K_c = −21.97 bounds the IAE from below; over
+/// our 200 s it is 21.7. A window fitted on this one row (see docs/reproduction.md).
+#[wasm_bindgen_test(unsupported = test)]
+fn table5_luyben_load_iae_over_150s() {
+    use pidlab::rules::shamsuzzoha_lee2008::studies::perf_separate;
+    let st = studies().into_iter().find(|s| s.id == "ex5").unwrap();
+    let row = st.rows.iter().find(|r| r.key == "luyben1996").unwrap();
+    let c = row.controller.as_ref().unwrap();
+    let n = perf_separate(&st.plant.plant(), c, &st.scenario, 150.0).unwrap();
+    let m = perf_separate(&st.mismatch, c, &st.scenario, 150.0).unwrap();
+    check_printed("LD IAE", n.ld_iae, "21.0");
+    check_printed("LD IAE mism.", m.ld_iae, "21.0");
+    let long = perf_separate(&st.plant.plant(), c, &st.scenario, 1500.0).unwrap();
+    assert!(
+        long.ld_iae >= 56.32 / 2.564 * (1.0 - 1e-3),
+        "complete load IAE {} below τ_I/K_c",
+        long.ld_iae
+    );
+}

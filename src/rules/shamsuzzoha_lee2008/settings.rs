@@ -90,6 +90,33 @@ impl LiteratureSetting {
         self.controller_with(true)
     }
 
+    /// A study option (the default is [`LiteratureSetting::controller`]): the row's controller
+    /// with its derivative term through a lag of `t_f` seconds, `K_d s/(t_f s + 1)`
+    /// (`studies::row_controller_with_derivative_lag`).
+    pub fn controller_with_derivative_lag(&self, t_f: f64) -> Result<Controller> {
+        let m = self.mapping()?;
+        let p = self.pid()?;
+        lit_pid_filtered(
+            p.kc,
+            p.ti,
+            p.td,
+            m.series,
+            m.d_on_y,
+            self.row.setpoint_filter.map(|f| tf_desc(f.num, f.den)),
+            self.row.series_lag,
+            Some(t_f),
+        )
+    }
+
+    fn pid(&self) -> Result<PrintedPid> {
+        self.row.pid.ok_or_else(|| {
+            Error::new(
+                format!("{}.pid", self.row.key),
+                "not printed (the table prints \"-\"): no PID to simulate",
+            )
+        })
+    }
+
     fn mapping(&self) -> Result<Mapping> {
         self.mapping.ok_or_else(|| {
             Error::new(
@@ -101,12 +128,7 @@ impl LiteratureSetting {
 
     fn controller_with(&self, d_on_y: bool) -> Result<Controller> {
         let m = self.mapping()?;
-        let p = self.row.pid.ok_or_else(|| {
-            Error::new(
-                format!("{}.pid", self.row.key),
-                "not printed (the table prints \"-\"): no PID to simulate",
-            )
-        })?;
+        let p = self.pid()?;
         lit_pid(
             p.kc,
             p.ti,
@@ -280,11 +302,34 @@ pub(super) fn lit_pid(
     fr: Option<Tf>,
     ft: Option<f64>,
 ) -> Result<Controller> {
+    lit_pid_filtered(kc, ti, td, series, d_on_y, fr, ft, None)
+}
+
+/// [`lit_pid`] with the derivative through a lag of `t_f` seconds when given.
+#[allow(clippy::too_many_arguments)]
+fn lit_pid_filtered(
+    kc: f64,
+    ti: f64,
+    td: f64,
+    series: bool,
+    d_on_y: bool,
+    fr: Option<Tf>,
+    ft: Option<f64>,
+    t_f: Option<f64>,
+) -> Result<Controller> {
     let mut p = if series {
         Pid::series_form(kc, ti, td)
     } else {
         Pid::ideal(kc, ti, td)
     };
+    if let Some(t) = t_f {
+        crate::error::finite("t_f", t)?;
+        if t <= 0.0 {
+            return Err(Error::new("t_f", format!("must be > 0 (got {t})")));
+        }
+        let n = p.kd / p.kp / t;
+        p = p.filter_n(n);
+    }
     if d_on_y {
         p = p.weights(1.0, 0.0);
     }

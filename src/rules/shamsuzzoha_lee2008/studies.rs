@@ -8,7 +8,7 @@ use super::{design, imc_pid, lambda_for_ms, ImcModel, CITATION};
 use crate::analysis::freq::{analyze, solve_for_ms};
 use crate::analysis::simulate;
 use crate::error::{Error, Result};
-use crate::model::controller::Controller;
+use crate::model::controller::{lag, Controller, Pid};
 use crate::model::plant::{Family, Plant};
 use crate::rules::Params;
 use crate::sim::Scenario;
@@ -309,6 +309,103 @@ pub fn perf_separate(plant: &Plant, c: &Controller, sc: &Scenario, window: f64) 
         )
     })?;
     Ok(Perf::of(&s, &g))
+}
+
+/// A study option (the default is the row's ideal derivative): the row's controller with its
+/// derivative term through a first-order lag of `t_f` seconds, `K_d s/(t_f s + 1)`, everything
+/// else as in the row (form, set-point filter, series lag). `t_f = 0.01` is the filter
+/// coefficient N = 100 s⁻¹ of a parallel PID `P + I/s + D·N/(1 + N/s)` (the default of
+/// Simulink's PID Controller block); the paper states no filter. Errors: `t_f` not finite or
+/// not > 0; `key` not a simulated row of the study (Liu et al.'s row has no PID).
+pub fn row_controller_with_derivative_lag(
+    study: &Study,
+    key: &str,
+    t_f: f64,
+) -> Result<Controller> {
+    crate::error::finite("t_f", t_f)?;
+    if t_f <= 0.0 {
+        return Err(Error::new("t_f", format!("must be > 0 (got {t_f})")));
+    }
+    let row = study
+        .rows
+        .iter()
+        .find(|r| r.key == key && r.controller.is_some())
+        .ok_or_else(|| {
+            let keys: Vec<&str> = study
+                .rows
+                .iter()
+                .filter(|r| r.controller.is_some())
+                .map(|r| r.key)
+                .collect();
+            Error::new(
+                "key",
+                format!(
+                    "not a simulated row of {} (got {key:?}; allowed: {})",
+                    study.id,
+                    keys.join(", ")
+                ),
+            )
+        })?;
+    if let Some(t) = &row.tune {
+        let get = |name: &str| -> Result<f64> {
+            t.opt_f64(name)?
+                .ok_or_else(|| Error::new(name, "missing from the row's tuning"))
+        };
+        let d = design(
+            &study.plant,
+            get("lambda")?,
+            get("zeta")?,
+            get("gamma")?,
+            get("phi")?,
+        )?;
+        let q = Pid::ideal(d.pid.kc, d.pid.ti, d.pid.td);
+        let mut p = q
+            .clone()
+            .filter_n(q.kd / q.kp / t_f)
+            .setpoint_filter(d.setpoint_filter);
+        if let Some(z) = d.model.series_lag {
+            p = p.series_filter(lag(z));
+        }
+        return p.to_controller();
+    }
+    literature_settings()
+        .into_iter()
+        .find(|l| l.row.key == key)
+        .ok_or_else(|| Error::new("key", format!("no literature setting {key:?}")))?
+        .controller_with_derivative_lag(t_f)
+}
+
+/// A study option (the default is the plant as printed): the plant with each integrator 1/s
+/// replaced by φ/(φs + 1), as the design model of the paper sees it ("designed by considering
+/// the above process as 100e^{-0.2s}/((100s + 1)(s + 1))", Example 1). Errors: `phi` not finite
+/// or not > 0; a plant without an integrator.
+pub fn integrators_as_lags(plant: &Plant, phi: f64) -> Result<Plant> {
+    crate::error::finite("phi", phi)?;
+    if phi <= 0.0 {
+        return Err(Error::new("phi", format!("must be > 0 (got {phi})")));
+    }
+    let (mut num, mut den) = plant.tf.to_desc();
+    let mut m = 0;
+    while den.len() > 1 && den.last() == Some(&0.0) {
+        den.pop();
+        m += 1;
+    }
+    if m == 0 {
+        return Err(Error::new(
+            "plant",
+            "has no integrator (no factor s in the denominator) to replace",
+        ));
+    }
+    for _ in 0..m {
+        let mut d = vec![0.0; den.len() + 1];
+        for (i, c) in den.iter().enumerate() {
+            d[i] += c * phi;
+            d[i + 1] += c;
+        }
+        den = d;
+        num.iter_mut().for_each(|c| *c *= phi);
+    }
+    Plant::from_desc(&num, &den, plant.delay)
 }
 
 /// A row of a study simulated: Ms on the nominal plant, and the performance on the nominal and
