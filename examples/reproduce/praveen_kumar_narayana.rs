@@ -718,6 +718,7 @@ fn tables_2_to_5(s: &mut String) {
     let _ = writeln!(s);
     simulink_filter_rows(s);
     derivative_lag_scan(s);
+    one_setting_for_example1(s);
     integral_identity(s);
     let _ = writeln!(
         s,
@@ -769,6 +770,7 @@ fn tables_2_to_5(s: &mut String) {
     }
     pai_servo_setpoint_paths(s);
     pai_near_boundary(s);
+    pai_ideal_derivative_on_y(s);
     step_size_check(s);
     log_integrals_note(s);
 }
@@ -1339,4 +1341,230 @@ fn figure_data() {
             );
         }
     }
+}
+
+/// Example 1's proposed TV and ITAE cells under one simulation setting at a time (the setting
+/// applied to all of Tables 2-5's proposed runs), with each example's count of cells within 2 %:
+/// a setting counts only if it reproduces Example 1's TV or ITAE without losing Example 2.
+fn one_setting_for_example1(s: &mut String) {
+    use studies::ProposedSetting as S;
+    let settings: [(String, S, bool); 13] = [
+        ("ideal derivative (default)".into(), S::Ideal, false),
+        (
+            "ideal derivative, TV without the set-point kick u(0⁺)".into(),
+            S::Ideal,
+            true,
+        ),
+        (
+            "derivative lag 0.01 (Simulink's N = 100)".into(),
+            S::DerivativeLag(0.01),
+            false,
+        ),
+        (
+            format!("derivative lag {FITTED_LAG} (fitted to Example 2)"),
+            S::DerivativeLag(FITTED_LAG),
+            false,
+        ),
+        (
+            format!("derivative lag {FITTED_LAG}, TV without the set-point kick"),
+            S::DerivativeLag(FITTED_LAG),
+            true,
+        ),
+        ("derivative lag 0.03".into(), S::DerivativeLag(0.03), false),
+        ("derivative lag 0.05".into(), S::DerivativeLag(0.05), false),
+        ("derivative lag 0.1".into(), S::DerivativeLag(0.1), false),
+        (
+            format!("derivative lag {FITTED_LAG}, ε = 0.2 on the derivative too"),
+            S::DerivativeWeight(FITTED_LAG, 0.2),
+            false,
+        ),
+        (
+            "lag 0.01 on the controller output".into(),
+            S::OutputLag(0.01),
+            false,
+        ),
+        (
+            "lag 0.03 on the controller output".into(),
+            S::OutputLag(0.03),
+            false,
+        ),
+        (
+            "lag 0.03 on the measurement".into(),
+            S::MeasurementLag(0.03),
+            false,
+        ),
+        (
+            "1st-order Padé delay in the plant".into(),
+            S::PadePlant,
+            false,
+        ),
+    ];
+    let _ = writeln!(
+        s,
+        "#### Example 1's TV and ITAE under one setting\n\n\
+         Example 1's proposed TV is about three times print and its ITAE 15-32 % low, while \
+         Example 2's agree. The loops differ in one respect: Example 1's plant has relative \
+         degree 1, so with the ideal derivative the loop is neutral (abs L(j∞) = 0.82) and every \
+         jump of u returns through the dead time as a jump of 0.82 times its size, each then \
+         overshooting by the lead-lag (α/β = 1.5): u is a decaying sawtooth of period θ. Example \
+         2's simulated process (Eq. 21) has relative degree 3: L(j∞) = 0, no echo. A setting \
+         that explains Example 1 must smooth that echo and leave the other cells. Each setting \
+         below is applied to all the proposed runs (ours / printed: TV and ITAE of Example 1; \
+         cells within 2 % of print out of each example's 24, TV of u on the 0.01 samples):\n\n\
+         | setting | TV servo | TV reg. | TV +40 % servo | TV +40 % reg. | ITAE servo | ITAE reg. | ITAE +40 % servo | ITAE +40 % reg. | Ex. 1 | Ex. 2 |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|"
+    );
+    let printed = |plus: bool| {
+        tables::TABLES_2_TO_5
+            .iter()
+            .find(|t| t.example == 1 && t.delay_plus_40 == plus)
+            .map(|t| (t.proposed_servo.values(), t.proposed_regulatory.values()))
+    };
+    for (label, setting, no_kick) in &settings {
+        let mut tv = [f64::NAN; 4];
+        let mut itae = [f64::NAN; 4];
+        let mut count = [0usize; 2];
+        for example in [1usize, 2] {
+            for table in tables::TABLES_2_TO_5
+                .iter()
+                .filter(|t| t.example == example)
+            {
+                let Ok((sv, rg, kick)) =
+                    studies::proposed_setting_runs(example, table.delay_plus_40, *setting)
+                else {
+                    continue;
+                };
+                let sv_tv = if *no_kick { sv.tv - kick.abs() } else { sv.tv };
+                for (m, t, p) in [
+                    (sv, sv_tv, table.proposed_servo.values()),
+                    (rg, rg.tv, table.proposed_regulatory.values()),
+                ] {
+                    let mut r = row(&m);
+                    r[5] = t;
+                    count[example - 1] += (0..6).filter(|&k| ledger::within2(p[k], r[k])).count();
+                }
+                if example == 1 {
+                    let i = usize::from(table.delay_plus_40) * 2;
+                    tv[i] = sv_tv;
+                    tv[i + 1] = rg.tv;
+                    itae[i] = sv.itae;
+                    itae[i + 1] = rg.itae;
+                }
+            }
+        }
+        let mut line = md_row(label, &[tv, itae].concat());
+        let _ = write!(line, " {} | {} |", count[0], count[1]);
+        let _ = writeln!(s, "{line}");
+    }
+    if let (Some((sv0, rg0)), Some((sv4, rg4))) = (printed(false), printed(true)) {
+        let p = [
+            sv0[5], rg0[5], sv4[5], rg4[5], sv0[2], rg0[2], sv4[2], rg4[2],
+        ];
+        let _ = writeln!(s, "{} | |", md_row("printed", &p));
+        // The printed TV over ours (ideal derivative), servo and regulatory.
+        let ours: Vec<f64> = [false, true]
+            .iter()
+            .filter_map(|&plus| studies::proposed_setting_runs(1, plus, S::Ideal).ok())
+            .flat_map(|(sv, rg, _)| [sv.tv, rg.tv])
+            .collect();
+        if ours.len() == 4 {
+            let _ = writeln!(
+                s,
+                "\nThe printed TV over ours (ideal derivative) is {:.3} servo and {:.3} regulatory \
+                 (nominal), {:.3} and {:.3} (+40 % delay): one factor per condition for both \
+                 runs, as if the paper's u had the same echo, measured otherwise. No setting above \
+                 reproduces it: a derivative lag (any size up to 0.1) takes TV no lower than \
+                 about 0.96 servo and 0.83 regulatory (16-18 % above print, near t_f = 0.025-0.03); \
+                 lags up to 0.05 move ITAE by at most 12 % of its gap, and lags of 0.03 and more \
+                 lose Example 2 (14, 13 and 4 of its 24 cells at 0.03, 0.05 and 0.1; 21 at 0.015); a lag of 0.03 on the \
+                 controller output or on the measurement lowers TV further but raises the \
+                 regulatory ISE and M_p by 5-7 % and leaves ITAE; not counting the set-point \
+                 kick (a log whose first sample is already after the step) changes only the \
+                 servo TV (with the lag 0.015: 3.1 % below print nominal, 1.6 % at +40 % delay, \
+                 while the regulatory TV stays 27 % above); the Padé delay meets the nominal \
+                 servo TV but not the regulatory one (+33 %) nor the +40 % pair, and loses \
+                 Example 2 (6 of 24 cells); ε = 0.2 on the derivative too makes the set-point \
+                 kick k_d·ε·0.2·(α/β)/t_f and TV about 40 times print. Example 1's TV and ITAE \
+                 stay unexplained; the single-cell matches in this table (a setting that meets \
+                 one of the eight cells and misses its neighbours) are not taken as causes.\n",
+                sv0[5] / ours[0],
+                rg0[5] / ours[1],
+                sv4[5] / ours[2],
+                rg4[5] / ours[3],
+            );
+        }
+    }
+}
+
+/// Pai et al. 2010's rows with an ideal PID, the derivative on y filtered by a lag a·τ_D, for
+/// several a: cells within 2 % per condition, and the rows of the a that meets the most.
+fn pai_ideal_derivative_on_y(s: &mut String) {
+    const A: [f64; 7] = [0.1, 0.15, 0.17, 0.175, 0.18, 0.185, 0.19];
+    const BEST: f64 = 0.185;
+    let _ = writeln!(
+        s,
+        "#### Pai et al. 2010: an ideal PID with the derivative on y\n\n\
+         The family K_c[(r − y) + (r − y)/(τ_I s) − τ_D s/(a τ_D s + 1)·y] (ε = 1 on P, as the \
+         paper says), scanned in a: cells within 2 % of print out of each row's 12 (servo and \
+         regulatory), TV of u on the 0.01 samples:\n\n\
+         | a | Ex. 1 nominal | Ex. 2 nominal | Ex. 1 +40 % | Ex. 2 +40 % |\n|---|---|---|---|---|"
+    );
+    let runs = |a: f64| -> Vec<Option<(RunMetrics, RunMetrics)>> {
+        tables::TABLES_2_TO_5
+            .iter()
+            .map(|t| {
+                let q = tables::TABLE1_PAI2010[t.example - 1];
+                let plant = studies::simulated_plant(t.example, t.delay_plus_40);
+                let t_end = if t.example == 1 { 100.0 } else { 600.0 };
+                studies::pai2010_ideal_derivative_on_y(q.kc, q.ti, q.td, a)
+                    .ok()
+                    .and_then(|c| studies::servo_and_regulatory(&plant, &c, t_end).ok())
+            })
+            .collect()
+    };
+    for a in A {
+        let mut line = format!("| {a} |");
+        for (t, r) in tables::TABLES_2_TO_5.iter().zip(runs(a)) {
+            let n = r.map_or(0, |(sv, rg)| {
+                [(sv, t.pai_servo.values()), (rg, t.pai_regulatory.values())]
+                    .iter()
+                    .map(|(m, p)| {
+                        let r = row(m);
+                        (0..6).filter(|&k| ledger::within2(p[k], r[k])).count()
+                    })
+                    .sum()
+            });
+            let _ = write!(line, " {n} |");
+        }
+        let _ = writeln!(s, "{line}");
+    }
+    let _ = writeln!(
+        s,
+        "\nWith a = {BEST} (ours / printed):\n\n\
+         | condition | response | IAE | ISE | ITAE | M_p | t_s | TV |\n|---|---|---|---|---|---|---|---|"
+    );
+    for (t, r) in tables::TABLES_2_TO_5.iter().zip(runs(BEST)) {
+        let Some((sv, rg)) = r else { continue };
+        for (name, m, p) in [
+            ("servo", sv, t.pai_servo.values()),
+            ("regulatory", rg, t.pai_regulatory.values()),
+        ] {
+            let r = row(&m);
+            let mut line = format!("| {} | {name} |", t.title);
+            for k in 0..6 {
+                let _ = write!(line, " {} / {} |", g(r[k]), ledger::num(p[k]));
+            }
+            let _ = writeln!(s, "{line}");
+        }
+    }
+    let _ = writeln!(
+        s,
+        "\nNear a = {BEST} Example 2's nominal regulatory row is met (IAE, ISE, ITAE, M_p and t_s \
+         within 1 %) and its servo M_p and t_s, but the same setting misses Example 1's nominal \
+         regulatory row (ISE 9 % high, t_s 24 % short), which our series mapping reproduces, and \
+         both +40 % loops settle 2-2.5 times sooner than printed (Example 2: 109 s and 95 s, \
+         printed 257 s and 234 s). The count moves by two cells for a change of a in the third \
+         digit: a fit of one parameter to one row, not a structure; the report keeps our series \
+         mapping.\n"
+    );
 }

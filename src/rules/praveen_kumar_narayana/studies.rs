@@ -293,3 +293,101 @@ pub fn fig2_grid(z_over_tau: &[f64], theta_over_tau: &[f64]) -> Vec<Vec<Option<f
         })
         .collect()
 }
+
+/// A simulation setting of the proposed loop, tried for Example 1's TV and ITAE (Tables 2-5);
+/// each is a study option, none a default.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ProposedSetting {
+    /// The design as the rule gives it: ideal derivative on y, exact delay.
+    Ideal,
+    /// The derivative of y filtered by a lag `t_f` ([`proposed_controller_filtered`]).
+    DerivativeLag(f64),
+    /// A lag `t_f` on the derivative and the set-point weight `c` on the derivative too
+    /// (`k_d s/(t_f s + 1)·(c r − y)`; `c = 0` is [`ProposedSetting::DerivativeLag`]).
+    DerivativeWeight(f64, f64),
+    /// A first-order lag on the controller output (both paths, as an actuator lag would).
+    OutputLag(f64),
+    /// A first-order lag on the measurement (C_y only).
+    MeasurementLag(f64),
+    /// The dead time as a first-order Padé approximant in the simulated plant.
+    PadePlant,
+}
+
+/// The plant and controller of a condition of Tables 2-5 under a [`ProposedSetting`]. Errors
+/// (paths `example`, `t_f`, `setting`): an example other than 1 or 2, a lag not finite and > 0.
+pub fn proposed_setting(
+    example: usize,
+    delay_plus_40: bool,
+    setting: ProposedSetting,
+) -> Result<(Plant, Controller)> {
+    if !(1..=2).contains(&example) {
+        return Err(crate::error::Error::new(
+            "example",
+            format!("must be 1 or 2 (got {example})"),
+        ));
+    }
+    let mut plant = simulated_plant(example, delay_plus_40);
+    let p = [EX1, EX2_REDUCED][example - 1];
+    let d = design(&p, LAMBDA_PAPER[example - 1])?;
+    let c = match setting {
+        ProposedSetting::Ideal => proposed_controller(example)?,
+        ProposedSetting::DerivativeLag(t_f) => proposed_controller_filtered(example, t_f)?,
+        ProposedSetting::DerivativeWeight(t_f, c) => {
+            crate::error::positive("t_f", t_f)?;
+            crate::error::finite("setting", c)?;
+            Pid::parallel(d.kp, d.ki, d.kd)
+                .weights(EPSILON, c)
+                .filter_n(d.kd / (d.kp * t_f))
+                .series_filter(lead_lag(d.alpha, d.beta))
+                .to_controller()?
+        }
+        ProposedSetting::OutputLag(t) => {
+            crate::error::positive("t_f", t)?;
+            proposed_controller(example)?.with_series_filter(&crate::model::controller::lag(t))
+        }
+        ProposedSetting::MeasurementLag(t) => {
+            crate::error::positive("t_f", t)?;
+            let c = proposed_controller(example)?;
+            Controller::new(c.cr.clone(), c.cy.mul(&crate::model::controller::lag(t)))?
+        }
+        ProposedSetting::PadePlant => {
+            let h = plant.delay / 2.0;
+            plant.tf = plant.tf.mul(&lead_lag(-h, h));
+            plant.delay = 0.0;
+            proposed_controller(example)?
+        }
+    };
+    Ok((plant, c))
+}
+
+/// The servo and regulatory runs of one condition of Tables 2-5 under a [`ProposedSetting`]
+/// (t_end 100 for Example 1, 600 for Example 2), and the set-point kick `u(0⁺) = C_r(∞)·0.2`
+/// (the jump of u at the set-point step; 0 when C_r is strictly proper).
+pub fn proposed_setting_runs(
+    example: usize,
+    delay_plus_40: bool,
+    setting: ProposedSetting,
+) -> std::result::Result<(RunMetrics, RunMetrics, f64), String> {
+    let (plant, c) =
+        proposed_setting(example, delay_plus_40, setting).map_err(|e| e.to_string())?;
+    let t_end = if example == 1 { 100.0 } else { 600.0 };
+    let (sv, rg) = servo_and_regulatory(&plant, &c, t_end)?;
+    let kick = if c.cr.is_proper() && !c.cr.is_strictly_proper() {
+        c.cr.high_frequency_gain().map_err(|e| e.to_string())? * STEP
+    } else {
+        0.0
+    };
+    Ok((sv, rg, kick))
+}
+
+/// Pai et al. 2010's settings as an ideal PID with the derivative on y filtered by a lag
+/// `a·τ_D`: `u = K_c[(r − y) + (r − y)/(τ_I s) − τ_D s/(a τ_D s + 1)·y]` (a structure family
+/// tried for their rows; not our mapping [`super::pai2010_controller`]). Errors (path `a`): `a`
+/// not finite and > 0.
+pub fn pai2010_ideal_derivative_on_y(kc: f64, ti: f64, td: f64, a: f64) -> Result<Controller> {
+    crate::error::positive("a", a)?;
+    Pid::ideal(kc, ti, td)
+        .weights(1.0, 0.0)
+        .filter_n(1.0 / a)
+        .to_controller()
+}
