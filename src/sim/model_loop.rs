@@ -12,7 +12,7 @@
 //! It is integrated like the one-delay loop of [`crate::sim`] (every piece: the delayed inputs
 //! interpolated at degree 5 from their history, the state equation integrated exactly by an
 //! augmented matrix exponential), but on an explicit piece list: a uniform grid of step
-//! `h ≤ min(dt, 0.5/ρ(A), min τ_j)` (and, on a neutral loop, the bound of `internal_step`)
+//! `h ≤ min(dt, 0.25/ρ(A), min τ_j)` (and, on a neutral loop, the bound of `internal_step`)
 //! cut at every point `t_e + Σ k_j τ_j ≤ t_end` that an event `t_e` can reach through the
 //! delays. Every discontinuity of the response (of any order)
 //! therefore sits on a piece boundary, and the history a piece reads back (one delay earlier)
@@ -23,7 +23,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::model::ss::{balance, realize, realize_paths, Ss};
-use crate::sim::single::neutral_bound;
+use crate::sim::single::{neutral_bound, FAST_STEP};
 use crate::sim::{
     interpolation_inverse, lagrange, piece_exponential, sample, Response, Scenario, Trajectory,
     DEG, NODES,
@@ -519,7 +519,7 @@ fn history(
 }
 
 /// Integrates the several-delay loop (see the module docs).
-/// The internal step: at most `dt`, `0.5/ρ(A)`, every nonzero delay and, on a neutral loop, the
+/// The internal step: at most `dt`, `0.25/ρ(A)`, every nonzero delay and, on a neutral loop, the
 /// one-delay loop's neutral bound (`single::neutral_bound`) with `|E|` = ρ(|E|) over the
 /// delayed channels and `θ` the smallest delay.
 fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {
@@ -533,7 +533,7 @@ fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {
     };
     let mut h = sc.dt;
     if rho > 0.0 {
-        h = h.min(0.5 / rho);
+        h = h.min(FAST_STEP / rho);
     }
     for &d in &mm.delays {
         if d > 0.0 {

@@ -12,7 +12,7 @@
 //!
 //! ## Method
 //! With θ > 0 the plant input `w` on a piece is known from the response one dead time
-//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ dt`, `h ≤ 0.5/ρ(A)` and, when
+//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ dt`, `h ≤ 0.25/ρ(A)` and, when
 //! the unsaturated mode is neutral, the bound `h ≤ 0.3·θ·(1 − |e|)` of [`crate::sim`]'s "Near
 //! the neutral limit") and at every non-smooth instant — the set-point and load steps and every limit switch — and at
 //! all their copies `+ kθ`, so the delayed input on each piece is the restriction of one
@@ -70,13 +70,13 @@
 //! nonzero only for a biproper loop: a biproper plant under a controller with direct
 //! feed-through, or an ideal derivative on a plant of relative degree one) is solved,
 //! `v = (g·X + h_r r + e d)/(1 − e)`. `v` is continuous across a switch (at `v = L` both give
-//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.5/ρ` over the modes' matrices, and the
+//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.25/ρ` over the modes' matrices, and the
 //! `w` slot of the augmented state carries the constant `d`. With `1 − e ≤ 0`
 //! (`L(j∞) ≤ −1`) `v − e·sat(v) = …` is not monotone and has no unique solution: refused,
 //! naming `plant.delay`.
 
 use super::scenario::Scenario;
-use super::single::{neutral_bound, LoopModel};
+use super::single::{neutral_bound, LoopModel, FAST_STEP};
 use super::trajectory::{interpolation_inverse, lagrange, Trajectory, DEG, NODES};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
@@ -610,7 +610,7 @@ pub(crate) fn integrate(
     let conditional = m.cond.is_some();
     let n = m.order();
     let sz = n + NODES + 2;
-    // grid h = θ/N (θ = 0: any h), h ≤ dt, h ≤ 0.5/ρ over every mode's matrix, the neutral bound
+    // grid h = θ/N (θ = 0: any h), h ≤ dt, h ≤ 0.25/ρ over every mode's matrix, the neutral bound
     let rho = m.a.iter().fold(0.0f64, |r, a| {
         a.complex_eigenvalues()
             .iter()
@@ -618,7 +618,7 @@ pub(crate) fn integrate(
     });
     let mut hmax = sc.dt;
     if rho > 0.0 {
-        hmax = hmax.min(0.5 / rho);
+        hmax = hmax.min(FAST_STEP / rho);
     }
     // the unsaturated mode is the linear loop, neutral when 0 < |e| < 1 (e = −L(j∞)): the
     // one-delay loop's bound (`single::neutral_bound`; at a limit u is constant, no neutral term)

@@ -1,4 +1,5 @@
-//! Near the neutral limit, the saturating loop and the several-delay (model-based set-point)
+//! The step rule's bounds hold the method's accuracy on every loop method. Near the neutral
+//! limit, the saturating loop and the several-delay (model-based set-point)
 //! loop are as exact as the one-delay loop: each is compared with the one-delay loop where they
 //! are the same loop mathematically, and the model loop with a mismatched model delay with a
 //! much finer step of itself.
@@ -141,4 +142,31 @@ fn model_loop_with_another_model_delay_converges() {
     };
     let (dy, du) = rel_diff(&coarse, &fine10);
     assert!(dy <= 1e-9 && du <= 1e-9, "dy {dy:e}, du {du:e}");
+}
+
+#[wasm_bindgen_test(unsupported = test)]
+fn fast_mode_bound_keeps_a_fast_derivative_filter_exact() {
+    // The boiler under Luyben's PID (k_c 1.61, τ_I 11.5, τ_D 1.15) with a derivative filter
+    // N = 100: no neutral term, the step is set by the filter's pole (h ≤ FAST_STEP/ρ(A), at
+    // dt = θ so h ≤ dt does not bind). With the former 0.5/ρ the rule's θ/18 was ~1e-8 of the
+    // largest |u| off (README "The interpolation degree"); 0.25/ρ gives ~1e-11. Reference: the
+    // same method at θ/1920 (h·ρ ≈ 0.005: O(h⁶) puts its own error ~1e-20 relative to the
+    // rule's). Tolerance 1e-9 as above (the former bound fails it by ten).
+    use pidlab::model::controller::Pid;
+    let c = Pid::ideal(1.61, 11.5, 1.15)
+        .filter_n(100.0)
+        .to_controller()
+        .unwrap();
+    let rule = sim::simulate(
+        &boiler(),
+        &c,
+        &Scenario::steps(30.0, 0.1, 0.0, 1.0, 15.0, -0.5),
+    )
+    .unwrap();
+    let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, -0.5);
+    let n_rule = (0.1 / rule.internal_step()).round() as usize;
+    let at_rule = sim::simulate_at_step(&boiler(), &c, &sc, n_rule).unwrap();
+    let fine = sim::simulate_at_step(&boiler(), &c, &sc, 1920).unwrap();
+    let (dy, du) = rel_diff(&at_rule, &fine);
+    assert!(dy <= 1e-9 && du <= 1e-9, "θ/{n_rule}: dy {dy:e}, du {du:e}");
 }
