@@ -308,13 +308,8 @@ impl MultiModel {
 
     /// The smallest nonzero channel delay (0 without one).
     fn min_delay(&self) -> f64 {
-        self.delays
-            .iter()
-            .copied()
-            .filter(|d| *d > 0.0)
-            .fold(f64::INFINITY, f64::min)
-            .min(f64::MAX)
-            .max(0.0)
+        let positive = self.delays.iter().copied().filter(|d| *d > 0.0);
+        positive.reduce(f64::min).unwrap_or(0.0)
     }
 
     /// The neutral part's gain: the spectral radius of `|E|`, `E` the channel signals'
