@@ -18,7 +18,9 @@
 //! on `v(t − θ)` (a neutral equation, `|E| = |L(j∞)|`).
 //!
 //! The internal step is `h = θ/N` (so the delay maps steps onto steps exactly) with
-//! `h ≤ dt`, `h ≤ 0.5/ρ(A)` and, on a neutral loop (`0 < |E| < 1`), `h ≤ 0.3·θ·(1 − |E|)`
+//! `h ≤ dt`, `h ≤ 0.25/ρ(A)` (the fast mode: `h·ρ ≤ 0.25–0.3` keeps the interpolation at
+//! 1e-10; 0.5, the bound until session 11, gave up to 1e-8 on a loop with a fast derivative
+//! filter) and, on a neutral loop (`0 < |E| < 1`), `h ≤ 0.3·θ·(1 − |E|)`
 //! (below: "Near the neutral limit"). Every step is cut at the offsets of the set-point and load
 //! events, so every discontinuity `t_e + kθ` they cause lies on a piece boundary. On each piece
 //! the delayed input `w` is known at 6 equispaced nodes (they are the nodes of the piece one
@@ -33,8 +35,8 @@
 //! `h = θ/10` with `h > dt` keeps the error at round-off, but the metrics read from the node
 //! samples (peak error, overshoot, rise and settling time, spacing `h/5`) then move at their
 //! resolution; and on the neutral loops of the λ drag the fast mode bounds the step anyway
-//! (`0.5/ρ(A)`: `θ/6` on the boiler at λ = 1.9, where `θ/5` is 70 times less accurate than
-//! `θ/10`). [`simulate_at_step`] runs a chosen `h = θ/n` for such studies.
+//! (`0.5/ρ(A)` allowed `θ/6` on the boiler at λ = 1.9, where `θ/5` is 70 times less accurate
+//! than `θ/10`; the neutral bound's θ/19 binds there now). [`simulate_at_step`] runs a chosen `h = θ/n` for such studies.
 //!
 //! Near the neutral limit (`|E| → 1`, the end of the boiler's λ drag under Praveen Kumar's
 //! rule) the step must shrink with `1 − |E|`. The jumps of `v` lie on piece boundaries and the

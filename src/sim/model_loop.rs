@@ -12,8 +12,9 @@
 //! It is integrated like the one-delay loop of [`crate::sim`] (every piece: the delayed inputs
 //! interpolated at degree 5 from their history, the state equation integrated exactly by an
 //! augmented matrix exponential), but on an explicit piece list: a uniform grid of step
-//! `h ≤ min(dt, 0.5/ρ(A), min τ_j)` cut at every point `t_e + Σ k_j τ_j ≤ t_end` that an event
-//! `t_e` can reach through the delays. Every discontinuity of the response (of any order)
+//! `h ≤ min(dt, 0.25/ρ(A), min τ_j)` (and, on a neutral loop, the bound of `internal_step`)
+//! cut at every point `t_e + Σ k_j τ_j ≤ t_end` that an event `t_e` can reach through the
+//! delays. Every discontinuity of the response (of any order)
 //! therefore sits on a piece boundary, and the history a piece reads back (one delay earlier)
 //! is smooth, so the error stays `O(h⁶)` for any ratio θ/θ_m. A piece of the grid length
 //! reuses one propagator; the cut pieces get their own.
@@ -22,6 +23,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::model::ss::{balance, realize, realize_paths, Ss};
+use crate::sim::single::{neutral_bound, FAST_STEP};
 use crate::sim::{
     interpolation_inverse, lagrange, piece_exponential, sample, Response, Scenario, Trajectory,
     DEG, NODES,
@@ -304,6 +306,31 @@ impl MultiModel {
         }
     }
 
+    /// The smallest nonzero channel delay (0 without one).
+    fn min_delay(&self) -> f64 {
+        let positive = self.delays.iter().copied().filter(|d| *d > 0.0);
+        positive.reduce(f64::min).unwrap_or(0.0)
+    }
+
+    /// The neutral part's gain: the spectral radius of `|E|`, `E` the channel signals'
+    /// coefficients on the delayed channels (`s(t) = … + E·s(t − τ)`). Below 1 the difference
+    /// equation is stable for every set of delays (Hale's strong stability); it plays the role
+    /// of the one-delay loop's `|E|` in the neutral bound on the step (module docs of
+    /// [`crate::sim`], "Near the neutral limit"), with the smallest delay as `θ`.
+    fn neutral_gain(&self) -> f64 {
+        let (n, m) = (self.n, self.m);
+        let e = DMatrix::from_fn(m, m, |i, j| {
+            if self.delays[i] > 0.0 && self.delays[j] > 0.0 {
+                self.s[(i, n + j)].abs()
+            } else {
+                0.0
+            }
+        });
+        e.complex_eigenvalues()
+            .iter()
+            .fold(0.0, |x: f64, z| x.max(z.norm()))
+    }
+
     fn a(&self) -> DMatrix<f64> {
         self.f.view((0, 0), (self.n, self.n)).into_owned()
     }
@@ -487,7 +514,9 @@ fn history(
 }
 
 /// Integrates the several-delay loop (see the module docs).
-/// The internal step: at most `dt`, `0.5/ρ(A)` and every nonzero delay.
+/// The internal step: at most `dt`, `0.25/ρ(A)`, every nonzero delay and, on a neutral loop, the
+/// one-delay loop's neutral bound (`single::neutral_bound`) with `|E|` = ρ(|E|) over the
+/// delayed channels and `θ` the smallest delay.
 fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {
     let a = mm.a();
     let rho = if mm.n == 0 {
@@ -499,12 +528,24 @@ fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {
     };
     let mut h = sc.dt;
     if rho > 0.0 {
-        h = h.min(0.5 / rho);
+        h = h.min(FAST_STEP / rho);
     }
     for &d in &mm.delays {
         if d > 0.0 {
             h = h.min(d);
         }
+    }
+    if let Some(b) = neutral_bound(mm.min_delay(), mm.neutral_gain(), sc.t_end, MAX_PIECES) {
+        h = h.min(b);
+    }
+    // a divisor of the plant's dead time, so that the plant channel's history nodes are nodes
+    // of earlier pieces (copies, as in the one-delay loop) rather than interpolated: on a
+    // neutral loop an interpolated history multiplies the error by the interpolation's
+    // Lebesgue constant (> 1) times |E| every delay, which can grow (the boiler under
+    // `praveen_kumar` at λ = 1.9, |E| = 0.82, with h = θ/18.46 diverged)
+    let theta = mm.delays[0];
+    if theta > 0.0 {
+        h = theta / (theta / h - 1e-9).ceil().max(1.0);
     }
     h
 }

@@ -12,8 +12,9 @@
 //!
 //! ## Method
 //! With θ > 0 the plant input `w` on a piece is known from the response one dead time
-//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ dt`, `h ≤ 0.5/ρ(A)`) and at
-//! every non-smooth instant — the set-point and load steps and every limit switch — and at
+//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ dt`, `h ≤ 0.25/ρ(A)` and, when
+//! the unsaturated mode is neutral, the bound `h ≤ 0.3·θ·(1 − |e|)` of [`crate::sim`]'s "Near
+//! the neutral limit") and at every non-smooth instant — the set-point and load steps and every limit switch — and at
 //! all their copies `+ kθ`, so the delayed input on each piece is the restriction of one
 //! earlier piece's quintic (as in [`super::single`]). On a piece the augmented state
 //! `[x; ξ (monomial coefficients of w); r; L]` is propagated exactly by a matrix exponential.
@@ -69,13 +70,13 @@
 //! nonzero only for a biproper loop: a biproper plant under a controller with direct
 //! feed-through, or an ideal derivative on a plant of relative degree one) is solved,
 //! `v = (g·X + h_r r + e d)/(1 − e)`. `v` is continuous across a switch (at `v = L` both give
-//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.5/ρ` over the modes' matrices, and the
+//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.25/ρ` over the modes' matrices, and the
 //! `w` slot of the augmented state carries the constant `d`. With `1 − e ≤ 0`
 //! (`L(j∞) ≤ −1`) `v − e·sat(v) = …` is not monotone and has no unique solution: refused,
 //! naming `plant.delay`.
 
 use super::scenario::Scenario;
-use super::single::LoopModel;
+use super::single::{neutral_bound, LoopModel, FAST_STEP};
 use super::trajectory::{interpolation_inverse, lagrange, Trajectory, DEG, NODES};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
@@ -609,7 +610,7 @@ pub(crate) fn integrate(
     let conditional = m.cond.is_some();
     let n = m.order();
     let sz = n + NODES + 2;
-    // grid h = θ/N (θ = 0: any h), h ≤ dt, h ≤ 0.5/ρ over every mode's matrix
+    // grid h = θ/N (θ = 0: any h), h ≤ dt, h ≤ 0.25/ρ over every mode's matrix, the neutral bound
     let rho = m.a.iter().fold(0.0f64, |r, a| {
         a.complex_eigenvalues()
             .iter()
@@ -617,7 +618,12 @@ pub(crate) fn integrate(
     });
     let mut hmax = sc.dt;
     if rho > 0.0 {
-        hmax = hmax.min(0.5 / rho);
+        hmax = hmax.min(FAST_STEP / rho);
+    }
+    // the unsaturated mode is the linear loop, neutral when 0 < |e| < 1 (e = −L(j∞)): the
+    // one-delay loop's bound (`single::neutral_bound`; at a limit u is constant, no neutral term)
+    if let Some(b) = neutral_bound(theta, m.e.abs(), sc.t_end, MAX_PIECES) {
+        hmax = hmax.min(b);
     }
     let h = if theta > 0.0 {
         theta / (theta / hmax - 1e-9).ceil().max(1.0)
@@ -754,7 +760,11 @@ pub(crate) fn integrate(
             record.intervals.push((*since, at));
         }
     };
-    while t < t_end - tol {
+    // the pieces run on to the first grid point after t_end (as the one-delay loop's steps
+    // do), so that the sample at t_end is a right-hand limit like every other sample (on a
+    // neutral loop t_end can be a jump t_e + kθ of u)
+    let t_stop = ((t_end + tol) / h).ceil().max(1.0) * h;
+    while t < t_stop - tol {
         if traj.n_pieces >= MAX_PIECES {
             return Err(Error::new(
                 "scenario.t_end",
@@ -762,7 +772,7 @@ pub(crate) fn integrate(
             ));
         }
         let grid = ((t + tol) / h).floor() + 1.0;
-        let mut t1 = (grid * h).min(t_end);
+        let mut t1 = (grid * h).min(t_stop);
         if let Some(cn) = cuts.next_after(t, tol) {
             if cn < t1 - tol {
                 t1 = cn;
@@ -946,6 +956,11 @@ pub(crate) fn integrate(
     }
     if mode != Mode::Free {
         record.intervals.push((sat_since, t));
+    }
+    // the record covers [0, t_end] (the last piece may end after it)
+    record.intervals.retain(|(a, _)| *a < t_end - tol);
+    for iv in record.intervals.iter_mut() {
+        iv.1 = iv.1.min(t_end);
     }
     Ok(SatRun {
         traj,
