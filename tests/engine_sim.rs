@@ -312,17 +312,7 @@ fn near_the_neutral_limit_the_default_step_stays_exact() {
         let rule = sim::simulate(&boiler, &c, &sc).unwrap();
         let n_rule = (0.1 / rule.internal_step()).round() as usize;
         let fine = sim::simulate_at_step(&boiler, &c, &sc, 960.max(4 * n_rule)).unwrap();
-        assert!(rule.diverged_at.is_none() && fine.diverged_at.is_none());
-        let maxabs = |v: &[f64]| v.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
-        let maxdiff = |a: &[f64], b: &[f64]| {
-            a.iter()
-                .zip(b)
-                .map(|(x, y)| (x - y).abs())
-                .fold(0.0, f64::max)
-        };
-        assert_eq!(rule.t.len(), fine.t.len());
-        let dy = maxdiff(&rule.y, &fine.y) / maxabs(&fine.y);
-        let du = maxdiff(&rule.u, &fine.u) / maxabs(&fine.u);
+        let (dy, du) = common::rel_diff(&rule, &fine);
         assert!(
             dy <= 1e-9 && du <= 1e-9,
             "λ = {lambda}: dy {dy:e}, du {du:e}"

@@ -15,21 +15,14 @@
 
 use pidlab::model::controller::{Controller, ModelLoop};
 use pidlab::model::discrete::Limits;
-use pidlab::model::plant::{Family, Plant};
+use pidlab::model::plant::Plant;
 use pidlab::model::tf::Tf;
 use pidlab::rules::{self, Params};
 use pidlab::sim::{self, RealLoop, Response, Scenario};
 use wasm_bindgen_test::wasm_bindgen_test;
 
-fn boiler() -> Plant {
-    Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant()
-}
+mod common;
+use common::{boiler, luyben_pid, rel_diff};
 
 fn praveen_kumar(lambda: f64) -> Controller {
     let p = Params::default()
@@ -38,23 +31,6 @@ fn praveen_kumar(lambda: f64) -> Controller {
     rules::tune("praveen_kumar", &boiler(), &p)
         .unwrap()
         .controller
-}
-
-/// Largest differences of y and u relative to the reference's largest |y|, |u|.
-fn rel_diff(a: &Response, reference: &Response) -> (f64, f64) {
-    assert_eq!(a.t.len(), reference.t.len());
-    assert!(a.diverged_at.is_none() && reference.diverged_at.is_none());
-    let maxabs = |v: &[f64]| v.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
-    let maxdiff = |a: &[f64], b: &[f64]| {
-        a.iter()
-            .zip(b)
-            .map(|(x, y)| (x - y).abs())
-            .fold(0.0, f64::max)
-    };
-    (
-        maxdiff(&a.y, &reference.y) / maxabs(&reference.y),
-        maxdiff(&a.u, &reference.u) / maxabs(&reference.u),
-    )
 }
 
 // Tolerance 1e-9 of the largest |y|, |u| throughout: the step rule aims at 1e-10 (its fit
@@ -152,11 +128,7 @@ fn fast_mode_bound_keeps_a_fast_derivative_filter_exact() {
     // largest |u| off (README "The interpolation degree"); 0.25/ρ gives ~1e-11. Reference: the
     // same method at θ/1920 (h·ρ ≈ 0.005: O(h⁶) puts its own error ~1e-20 relative to the
     // rule's). Tolerance 1e-9 as above (the former bound fails it by ten).
-    use pidlab::model::controller::Pid;
-    let c = Pid::ideal(1.61, 11.5, 1.15)
-        .filter_n(100.0)
-        .to_controller()
-        .unwrap();
+    let c = luyben_pid().filter_n(100.0).to_controller().unwrap();
     let rule = sim::simulate(
         &boiler(),
         &c,

@@ -5,6 +5,7 @@
 use pidlab::model::controller::{Controller, Pid};
 use pidlab::model::discrete::Limits;
 use pidlab::model::plant::{Family, Plant};
+use pidlab::sim::Response;
 use serde_json::{json, Value};
 
 /// Exact solution of y' = a·(1 − y(t − θ)) for t ≥ θ, y = 0 before (integrator k/s with delay θ
@@ -115,4 +116,22 @@ pub fn assert_limits_act(name: &str, u: &[f64], limits: Limits) -> usize {
         .count();
     assert!(hits > 3, "{name}: the limits must act ({hits} samples)");
     hits
+}
+
+/// Largest differences of the samples' y and u relative to the reference's largest |y|, |u|
+/// (the same sample times; neither run diverged).
+pub fn rel_diff(a: &Response, reference: &Response) -> (f64, f64) {
+    assert_eq!(a.t.len(), reference.t.len());
+    assert!(a.diverged_at.is_none() && reference.diverged_at.is_none());
+    let maxabs = |v: &[f64]| v.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+    let maxdiff = |a: &[f64], b: &[f64]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max)
+    };
+    (
+        maxdiff(&a.y, &reference.y) / maxabs(&reference.y),
+        maxdiff(&a.u, &reference.u) / maxabs(&reference.u),
+    )
 }
