@@ -289,11 +289,12 @@ fn a_step_longer_than_dt_samples_inside_its_pieces_exactly() {
 #[wasm_bindgen_test(unsupported = test)]
 fn near_the_neutral_limit_the_default_step_stays_exact() {
     // The boiler under Praveen Kumar's rule at the end of the benchmark's λ drag: |L(j∞)| =
-    // |E| ≈ 0.964 (λ = 1.96) and ≈ 0.98 (λ = 1.97, near the admissible end 1.973). The error of
-    // the method grows like (N·(1 − |E|))^−6 (N = θ/h; sim module docs, "Near the neutral
-    // limit"): with only h ≤ dt, 0.5/ρ(A) (N = 10) it was 5.5e-5 of the largest |u| at λ = 1.96.
-    // Reference: the same method at h = θ/960 or 4 times finer than the rule's step (θ/93 at
-    // λ = 1.96, θ/387 at 1.97), so its own error is below 4^−6 ≈ 2.4e-4 of the default's. Tolerance 1e-9 of the largest
+    // |E| ≈ 0.964 (λ = 1.96) and ≈ 0.991 (λ = 1.97, near the admissible end 1.973). The error
+    // of the method falls like (N·(1 − |E|))^−8 at degree 7 (N = θ/h; sim module docs, "Near
+    // the neutral limit"): with only h ≤ dt (N = 10) it is 1.4e-6 of the largest |u| at
+    // λ = 1.96 (degree 5: 5.5e-5). Reference: the same method at h = θ/960 or 4 times finer
+    // than the rule's step (θ/35 at λ = 1.96, θ/145 at 1.97), so its own error is below
+    // 4^−8 ≈ 1.5e-5 of the default's. Tolerance 1e-9 of the largest
     // |y|, |u|: the rule aims at 1e-10 (its fit to the measured errors scatters by a factor 2–3)
     // and the comparison adds round-off ~1e-12; 5.5e-5 before the rule fails it by far.
     use pidlab::rules::{self, Params};
