@@ -16,6 +16,13 @@
 //!   1e-3 are printed by name on stderr);
 //! - the number of pieces (the stepping's and the metrics' cost is proportional to it) and the
 //!   median CPU time of one `analysis::simulate`-equivalent (response + metrics).
+//!
+//! `cargo run --release --example step_error laws` prints instead the measurements behind the
+//! step rule's two interpolation bounds (`sim/single.rs`: `NEUTRAL_STEP`, `FAST_STEP`): the
+//! error of the samples at `h = θ/N` against `θ/1920` on the neutral loops of the λ drag (with
+//! `N·(1 − |E|)`) and on the boiler under Luyben's PID with fast derivative filters (with
+//! `h·ρ(A)`, `ρ = N_f/τ_D` the filter's pole: the loop matrix opened at the delayed input is
+//! block-triangular, its eigenvalues the plant's 0, −1/1.06 and the controller's 0, −N_f/τ_D).
 
 #[path = "../tests/common/mod.rs"]
 mod common;
@@ -138,7 +145,145 @@ fn cpu_us(case: &Case, n: Option<usize>, runs: usize) -> f64 {
     v[runs / 2]
 }
 
+/// `step_error laws`: the errors behind the step bounds (module docs).
+fn laws() {
+    let boiler = Family::IpdtIr {
+        k: 0.547,
+        tau: 1.06,
+        tau_z: 0.418,
+        theta: 0.1,
+    }
+    .plant();
+    let theta = boiler.delay;
+    let err = |plant: &Plant, c: &Controller, sc: &Scenario, fine: &Response, n: Option<usize>| {
+        let res = match n {
+            Some(n) => sim::simulate_at_step(plant, c, sc, n),
+            None => sim::simulate(plant, c, sc),
+        }
+        .expect("simulate");
+        let dy = maxdiff(&res.y, &fine.y) / maxabs(&fine.y);
+        let du = maxdiff(&res.u, &fine.u) / maxabs(&fine.u);
+        ((theta / res.internal_step()).round() as usize, dy, du)
+    };
+    println!("Neutral loops: boiler, praveen_kumar (ε = 0.2), the benchmark's scenario; errors of y / u at h = θ/N against θ/1920 (largest |Δ| / largest |·|).");
+    println!();
+    println!("| λ | \\|E\\| | N | N·(1 − \\|E\\|) | y | u |");
+    println!("|---|---:|---:|---:|---:|---:|");
+    let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
+    for lambda in [1.9, 1.93, 1.96, 1.97] {
+        let p = Params::default()
+            .with("lambda", lambda)
+            .with("epsilon", 0.2);
+        let c = rules::tune("praveen_kumar", &boiler, &p)
+            .expect("tune")
+            .controller;
+        let ae = boiler
+            .tf
+            .mul(&c.cy)
+            .high_frequency_gain()
+            .expect("proper")
+            .abs();
+        let fine = sim::simulate_at_step(&boiler, &c, &sc, 1920).expect("simulate");
+        for n in [
+            None,
+            Some(5),
+            Some(6),
+            Some(7),
+            Some(8),
+            Some(10),
+            Some(13),
+            Some(19),
+            Some(35),
+            Some(60),
+            Some(120),
+        ] {
+            let (nn, dy, du) = err(&boiler, &c, &sc, &fine, n);
+            let label = if n.is_none() {
+                format!("rule θ/{nn}")
+            } else {
+                format!("{nn}")
+            };
+            println!(
+                "| {lambda} | {ae:.4} | {label} | {:.2} | {dy:.1e} | {du:.1e} |",
+                nn as f64 * (1.0 - ae)
+            );
+        }
+    }
+    // the bound's own step (h ≤ dt left out) across the drag: N = ⌈1/(NEUTRAL·(1 − |E|))⌉
+    println!();
+    println!("| λ | \\|E\\| | N = ⌈1/(0.8·(1 − \\|E\\|))⌉ | N·(1 − \\|E\\|) | y | u |");
+    println!("|---|---:|---:|---:|---:|---:|");
+    for lambda in [1.85, 1.9, 1.91, 1.92, 1.93, 1.94, 1.95, 1.955, 1.965] {
+        let p = Params::default()
+            .with("lambda", lambda)
+            .with("epsilon", 0.2);
+        let c = rules::tune("praveen_kumar", &boiler, &p)
+            .expect("tune")
+            .controller;
+        let ae = boiler
+            .tf
+            .mul(&c.cy)
+            .high_frequency_gain()
+            .expect("proper")
+            .abs();
+        let fine = sim::simulate_at_step(&boiler, &c, &sc, 1920).expect("simulate");
+        let n = (1.0 / (0.8 * (1.0 - ae))).ceil() as usize;
+        let (nn, dy, du) = err(&boiler, &c, &sc, &fine, Some(n));
+        println!(
+            "| {lambda} | {ae:.4} | {nn} | {:.2} | {dy:.1e} | {du:.1e} |",
+            nn as f64 * (1.0 - ae)
+        );
+    }
+    println!();
+    println!("Fast mode: boiler, Luyben's PID (1.61, 11.5, 1.15) with a derivative filter N_f (no neutral term), set point 1 at 0, load −0.5 at 15 s, dt = 0.01; errors at h = θ/N against θ/1920; ρ = N_f/τ_D.");
+    println!();
+    println!("| N_f | N | h·ρ | y | u |");
+    println!("|---|---:|---:|---:|---:|");
+    let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, -0.5);
+    for nf in [10.0, 30.0, 100.0] {
+        let c = Pid::ideal(1.61, 11.5, 1.15)
+            .filter_n(nf)
+            .to_controller()
+            .expect("controller");
+        let rho = nf / 1.15;
+        let fine = sim::simulate_at_step(&boiler, &c, &sc, 1920).expect("simulate");
+        let mut ns: Vec<usize> = [0.25, 0.5, 0.6, 0.75, 0.9, 1.0, 1.2]
+            .iter()
+            .map(|x| (theta * rho / x).ceil().max(1.0) as usize)
+            .collect();
+        ns.dedup();
+        for n in ns {
+            let (nn, dy, du) = err(&boiler, &c, &sc, &fine, Some(n));
+            println!(
+                "| {nf:.3} | {nn} | {:.3} | {dy:.1e} | {du:.1e} |",
+                theta / nn as f64 * rho
+            );
+        }
+    }
+    // h·ρ set exactly: the filter chosen so that θ/N gives it (N_f = h·ρ·N·τ_D/θ)
+    for n in [2usize, 4, 8] {
+        for x in [0.6, 0.65, 0.7, 0.75, 0.8, 0.85] {
+            let nf: f64 = x * n as f64 * 1.15 / theta;
+            let c = Pid::ideal(1.61, 11.5, 1.15)
+                .filter_n(nf)
+                .to_controller()
+                .expect("controller");
+            let rho = nf / 1.15;
+            let fine = sim::simulate_at_step(&boiler, &c, &sc, 1920).expect("simulate");
+            let (nn, dy, du) = err(&boiler, &c, &sc, &fine, Some(n));
+            println!(
+                "| {nf:.3} | {nn} | {:.3} | {dy:.1e} | {du:.1e} |",
+                theta / nn as f64 * rho
+            );
+        }
+    }
+}
+
 fn main() {
+    if std::env::args().nth(1).as_deref() == Some("laws") {
+        laws();
+        return;
+    }
     let runs: usize = std::env::args()
         .nth(1)
         .and_then(|a| a.parse().ok())

@@ -228,25 +228,29 @@ fn boiler_neutral_loop_against_fine_rk4() {
 }
 
 #[wasm_bindgen_test(unsupported = test)]
-fn convergence_order_is_six() {
-    // Error against the method-of-steps solution as the step halves: the degree-5 interpolation
-    // of the delayed input makes the method O(h⁶); assert an observed order above 5.
-    let plant = Family::Piptd { k: 0.8, theta: 0.7 }.plant();
-    let c = Pid::parallel(0.9, 0.0, 0.0).to_controller().unwrap();
-    let err = |dt: f64| {
-        let res = simulate(&plant, &c, &Scenario::steps(14.0, dt, 0.0, 1.0, 0.0, 0.0)).unwrap();
-        assert!((res.internal_step - dt).abs() < 1e-12);
-        res.t
-            .iter()
-            .zip(&res.y)
-            .map(|(t, y)| (y - integrator_p_exact(0.72, 0.7, *t)).abs())
-            .fold(0.0, f64::max)
+fn convergence_order_is_eight() {
+    // Error against a much finer step as the step halves: the degree-7 interpolation of the
+    // delayed input makes the method O(h⁸) (degree 5: O(h⁶)). The loop: 1/(0.2s + 1)·e^{−s}
+    // under PI (0.5, 0.3), a set-point step and a load step: a fast mode (ρ = 5) so that
+    // h = θ/2…θ/8 (h·ρ = 2.5…0.63) stay well above round-off. (The integrator under P control,
+    // this test's loop until degree 7, has pieces of the method of steps that are polynomials
+    // of degree k + 1 on [kθ, (k+1)θ]: degree 7 reproduces them to round-off already at h = θ.)
+    // Reference: θ/256 (its error is ~32⁻⁸ ≈ 1e-12 of θ/8's). Asserted: observed orders above
+    // 7 (degree 5 would give ~6).
+    use pidlab::sim;
+    let plant = Plant::from_desc(&[1.0], &[0.2, 1.0], 1.0).unwrap();
+    let c = Pid::parallel(0.5, 0.3, 0.0).to_controller().unwrap();
+    let sc = Scenario::steps(20.0, 0.05, 0.0, 1.0, 10.0, -0.5);
+    let fine = sim::simulate_at_step(&plant, &c, &sc, 256).unwrap();
+    let err = |n: usize| {
+        let res = sim::simulate_at_step(&plant, &c, &sc, n).unwrap();
+        common::rel_diff(&res, &fine).1
     };
-    let e: Vec<f64> = [0.7, 0.35, 0.175].iter().map(|&dt| err(dt)).collect();
+    let e: Vec<f64> = [2, 4, 8].iter().map(|&n| err(n)).collect();
     let o1 = (e[0] / e[1]).log2();
     let o2 = (e[1] / e[2]).log2();
     eprintln!("errors {e:?}, observed orders {o1:.2} {o2:.2}");
-    assert!(o1 > 5.0 && o2 > 5.0, "errors {e:?}, orders {o1} {o2}");
+    assert!(o1 > 7.0 && o2 > 7.0, "errors {e:?}, orders {o1} {o2}");
 }
 
 #[wasm_bindgen_test(unsupported = test)]
@@ -285,11 +289,12 @@ fn a_step_longer_than_dt_samples_inside_its_pieces_exactly() {
 #[wasm_bindgen_test(unsupported = test)]
 fn near_the_neutral_limit_the_default_step_stays_exact() {
     // The boiler under Praveen Kumar's rule at the end of the benchmark's λ drag: |L(j∞)| =
-    // |E| ≈ 0.964 (λ = 1.96) and ≈ 0.98 (λ = 1.97, near the admissible end 1.973). The error of
-    // the method grows like (N·(1 − |E|))^−6 (N = θ/h; sim module docs, "Near the neutral
-    // limit"): with only h ≤ dt, 0.5/ρ(A) (N = 10) it was 5.5e-5 of the largest |u| at λ = 1.96.
-    // Reference: the same method at h = θ/960 or 4 times finer than the rule's step (θ/93 at
-    // λ = 1.96, θ/387 at 1.97), so its own error is below 4^−6 ≈ 2.4e-4 of the default's. Tolerance 1e-9 of the largest
+    // |E| ≈ 0.964 (λ = 1.96) and ≈ 0.991 (λ = 1.97, near the admissible end 1.973). The error
+    // of the method falls like (N·(1 − |E|))^−8 at degree 7 (N = θ/h; sim module docs, "Near
+    // the neutral limit"): with only h ≤ dt (N = 10) it is 1.4e-6 of the largest |u| at
+    // λ = 1.96 (degree 5: 5.5e-5). Reference: the same method at h = θ/960 or 4 times finer
+    // than the rule's step (θ/35 at λ = 1.96, θ/145 at 1.97), so its own error is below
+    // 4^−8 ≈ 1.5e-5 of the default's. Tolerance 1e-9 of the largest
     // |y|, |u|: the rule aims at 1e-10 (its fit to the measured errors scatters by a factor 2–3)
     // and the comparison adds round-off ~1e-12; 5.5e-5 before the rule fails it by far.
     use pidlab::rules::{self, Params};

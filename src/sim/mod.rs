@@ -18,25 +18,25 @@
 //! on `v(t − θ)` (a neutral equation, `|E| = |L(j∞)|`).
 //!
 //! The internal step is `h = θ/N` (so the delay maps steps onto steps exactly) with
-//! `h ≤ dt`, `h ≤ 0.25/ρ(A)` (the fast mode: `h·ρ ≤ 0.25–0.3` keeps the interpolation at
-//! 1e-10; 0.5, the bound until session 11, gave up to 1e-8 on a loop with a fast derivative
-//! filter) and, on a neutral loop (`0 < |E| < 1`), `h ≤ 0.3·θ·(1 − |E|)`
-//! (below: "Near the neutral limit"). Every step is cut at the offsets of the set-point and load
-//! events, so every discontinuity `t_e + kθ` they cause lies on a piece boundary. On each piece
-//! the delayed input `w` is known at 6 equispaced nodes (they are the nodes of the piece one
-//! delay earlier); it is interpolated by a degree-5 polynomial and the state equation is
-//! integrated **exactly** for that input (matrix exponential of an augmented system, nalgebra).
-//! The only approximation is that interpolation of a smooth function on a short piece, so the
-//! error is `O(h⁶)`. Output samples `t_k = k·dt` are right-hand limits, interpolated within
-//! their piece; the metrics integrate the continuous piecewise-polynomial response.
+//! `h ≤ dt`, `h ≤ 0.65/ρ(A)` (the fast mode: `h·ρ ≤ 0.65` keeps the interpolation at
+//! 1e-10; degree 5 needed 0.25) and, on a neutral loop (`0 < |E| < 1`),
+//! `h ≤ 0.8·θ·(1 − |E|)` (below: "Near the neutral limit"; the measurements behind both factors
+//! are in `single.rs`, `cargo run --release --example step_error laws` prints them). Every step
+//! is cut at the offsets of the set-point and load events, so every discontinuity `t_e + kθ`
+//! they cause lies on a piece boundary. On each piece the delayed input `w` is known at
+//! `DEG + 1 = 8` equispaced nodes (they are the nodes of the piece one delay earlier); it is
+//! interpolated by a polynomial of degree [`DEG`] = 7 and the state equation is integrated
+//! **exactly** for that input (matrix exponential of an augmented system, nalgebra). The only
+//! approximation is that interpolation of a smooth function on a short piece, so the error is
+//! `O(h⁸)` (degree 5, `O(h⁶)`, until issue 15's branch `engine4`: at the same 1e-10 degree 7
+//! takes steps 2.6–2.7× longer, README "The interpolation degree"). Output samples
+//! `t_k = k·dt` are right-hand limits, interpolated within their piece; the metrics integrate
+//! the continuous piecewise-polynomial response.
 //!
 //! Why `h ≤ dt` stays (measured by `examples/step_error.rs`, README "The internal step"):
-//! the samples inside a longer piece are as exact (the piece polynomial), and on smooth loops
-//! `h = θ/10` with `h > dt` keeps the error at round-off, but the metrics read from the node
-//! samples (peak error, overshoot, rise and settling time, spacing `h/5`) then move at their
-//! resolution; and on the neutral loops of the λ drag the fast mode bounds the step anyway
-//! (`0.5/ρ(A)` allowed `θ/6` on the boiler at λ = 1.9, where `θ/5` is 70 times less accurate
-//! than `θ/10`; the neutral bound's θ/19 binds there now). [`simulate_at_step`] runs a chosen `h = θ/n` for such studies.
+//! the samples inside a longer piece are as exact (the piece polynomial), but the metrics read
+//! from the node samples (peak error, overshoot, rise and settling time, spacing `h/DEG`) then
+//! move at their resolution. [`simulate_at_step`] runs a chosen `h = θ/n` for such studies.
 //!
 //! Near the neutral limit (`|E| → 1`, the end of the boiler's λ drag under Praveen Kumar's
 //! rule) the step must shrink with `1 − |E|`. The jumps of `v` lie on piece boundaries and the
@@ -44,13 +44,11 @@
 //! `Re s = ln|E|/θ` is barely damped: the interpolation error injected on every piece returns
 //! every θ multiplied by `E` and accumulates (and the oscillatory roots at `ω ≈ (2k+1)π/θ`
 //! are resolved by `N` steps per delay). `ρ(A)` (the loop opened at `w`) does not see it.
-//! Measured (`simulate_at_step` against `h = θ/960`): with `N = 10` the error of `u`
-//! is 1.6e-9 at `|E| = 0.82` (λ = 1.9), 5.5e-5 at 0.964 (λ = 1.96), 2e-2 at 0.991 (λ = 1.97);
-//! it falls as `N⁻⁶` and is `≈ 1.2e-7·(N·(1 − |E|))⁻⁶` up to 0.964, so
-//! `N ≥ 3.3/(1 − |E|)` keeps it ≤ ~1e-10 (λ = 1.9: θ/19, 2.7e-10; 1.96: θ/93, 4e-11; 1.97:
-//! θ/387, 3e-12, where the law over-refines: θ/120 would give 4e-10). The bound never asks
-//! for more than a quarter of the piece cap (`h ≥ 4·t_end/10⁶`: λ = 1.973, |E| = 0.9998,
-//! θ/834, 1.5e-12 over 30 s).
+//! Measured at degree 7 (`step_error laws`, against `h = θ/1920`): with `N = 10` the error of
+//! `u` is 4.5e-12 at `|E| = 0.82` (λ = 1.9), 1.4e-6 at 0.964 (λ = 1.96), 2.4e-3 at 0.991
+//! (λ = 1.97); `N·(1 − |E|) ≥ 1.25` keeps it ≤ ~1e-10 (λ = 1.9: θ/7, 2.0e-11; 1.96: θ/35,
+//! 2.2e-11; 1.97: θ/145, 4.1e-12). The bound never asks for more than a quarter of the piece
+//! cap (`h ≥ 4·t_end/10⁶`).
 //!
 //! A controller with a model-based set-point path ([`crate::model::controller::ModelLoop`]: an
 //! internal model with its own dead time θ_m) has two delays; [`simulate`] hands it to the

@@ -10,13 +10,13 @@
 //! algebraically.
 //!
 //! It is integrated like the one-delay loop of [`crate::sim`] (every piece: the delayed inputs
-//! interpolated at degree 5 from their history, the state equation integrated exactly by an
+//! interpolated at degree [`DEG`] (7) from their history, the state equation integrated exactly by an
 //! augmented matrix exponential), but on an explicit piece list: a uniform grid of step
-//! `h ≤ min(dt, 0.25/ρ(A), min τ_j)` (and, on a neutral loop, the bound of `internal_step`)
+//! `h ≤ min(dt, 0.65/ρ(A), min τ_j)` (and, on a neutral loop, the bound of `internal_step`)
 //! cut at every point `t_e + Σ k_j τ_j ≤ t_end` that an event `t_e` can reach through the
 //! delays. Every discontinuity of the response (of any order)
 //! therefore sits on a piece boundary, and the history a piece reads back (one delay earlier)
-//! is smooth, so the error stays `O(h⁶)` for any ratio θ/θ_m. A piece of the grid length
+//! is smooth, so the error stays `O(h⁸)` for any ratio θ/θ_m. A piece of the grid length
 //! reuses one propagator; the cut pieces get their own.
 
 use crate::error::{Error, Result};
@@ -514,7 +514,7 @@ fn history(
 }
 
 /// Integrates the several-delay loop (see the module docs).
-/// The internal step: at most `dt`, `0.25/ρ(A)`, every nonzero delay and, on a neutral loop, the
+/// The internal step: at most `dt`, `FAST_STEP/ρ(A)`, every nonzero delay and, on a neutral loop, the
 /// one-delay loop's neutral bound (`single::neutral_bound`) with `|E|` = ρ(|E|) over the
 /// delayed channels and `θ` the smallest delay.
 fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {

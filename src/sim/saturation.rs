@@ -12,13 +12,13 @@
 //!
 //! ## Method
 //! With θ > 0 the plant input `w` on a piece is known from the response one dead time
-//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ dt`, `h ≤ 0.25/ρ(A)` and, when
-//! the unsaturated mode is neutral, the bound `h ≤ 0.3·θ·(1 − |e|)` of [`crate::sim`]'s "Near
+//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ dt`, `h ≤ 0.65/ρ(A)` and, when
+//! the unsaturated mode is neutral, the bound `h ≤ 0.8·θ·(1 − |e|)` of [`crate::sim`]'s "Near
 //! the neutral limit") and at every non-smooth instant — the set-point and load steps and every limit switch — and at
 //! all their copies `+ kθ`, so the delayed input on each piece is the restriction of one
-//! earlier piece's quintic (as in [`super::single`]). On a piece the augmented state
+//! earlier piece's degree-7 polynomial (as in [`super::single`]). On a piece the augmented state
 //! `[x; ξ (monomial coefficients of w); r; L]` is propagated exactly by a matrix exponential.
-//! At the 6 nodes of each piece `v − u_max` and `v − u_min` are checked; a sign change is a
+//! At the `NODES` = 8 nodes of each piece `v − u_max` and `v − u_min` are checked; a sign change is a
 //! limit reached or left, and its time is the root of the smooth function
 //! `τ ↦ v(exp(Mτ)·z)` located with Brent's method to round-off; the piece is cut there, the
 //! mode switched, and `t* + kθ` scheduled as cuts. A jump of `v` across a limit (a set-point
@@ -70,14 +70,14 @@
 //! nonzero only for a biproper loop: a biproper plant under a controller with direct
 //! feed-through, or an ideal derivative on a plant of relative degree one) is solved,
 //! `v = (g·X + h_r r + e d)/(1 − e)`. `v` is continuous across a switch (at `v = L` both give
-//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.25/ρ` over the modes' matrices, and the
+//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.65/ρ` over the modes' matrices, and the
 //! `w` slot of the augmented state carries the constant `d`. With `1 − e ≤ 0`
 //! (`L(j∞) ≤ −1`) `v − e·sat(v) = …` is not monotone and has no unique solution: refused,
 //! naming `plant.delay`.
 
 use super::scenario::Scenario;
 use super::single::{neutral_bound, LoopModel, FAST_STEP};
-use super::trajectory::{interpolation_inverse, lagrange, Trajectory, DEG, NODES};
+use super::trajectory::{lagrange, start_interpolation_inverse, Trajectory, DEG, NODES};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::discrete::{default_tt, AntiWindup, IntegralSplit, Limits, PolyForm};
@@ -610,7 +610,7 @@ pub(crate) fn integrate(
     let conditional = m.cond.is_some();
     let n = m.order();
     let sz = n + NODES + 2;
-    // grid h = θ/N (θ = 0: any h), h ≤ dt, h ≤ 0.25/ρ over every mode's matrix, the neutral bound
+    // grid h = θ/N (θ = 0: any h), h ≤ dt, h ≤ FAST_STEP/ρ over every mode's matrix, the neutral bound
     let rho = m.a.iter().fold(0.0f64, |r, a| {
         a.complex_eigenvalues()
             .iter()
@@ -648,7 +648,7 @@ pub(crate) fn integrate(
             cuts.add(ev.time);
         }
     }
-    let vinv = interpolation_inverse()?;
+    let vinv = start_interpolation_inverse()?;
     let mut cache: HashMap<(usize, u64), DMatrix<f64>> = HashMap::new();
     let mut traj = Trajectory {
         h,

@@ -125,7 +125,7 @@ impl LoopModel {
 }
 
 /// Propagators of one piece length ℓ, flattened for the hot loop. With the stacked input
-/// `z = [x₀ (n); w (6 node values); r; d]` (length `n + 8`), node i = 1..=DEG (τ_i = iℓ/DEG):
+/// `z = [x₀ (n); w (NODES node values); r; d]` (length `n + NODES + 2`), node i = 1..=DEG (τ_i = iℓ/DEG):
 /// `x_i = M_i z`, `v_i = vrow_i·z + E w_i`, `y_i = yrow_i·z + Y_w w_i` (the constant r, d terms
 /// are inside the rows). Only `M_DEG` (the end state) is kept as a matrix.
 ///
@@ -135,25 +135,27 @@ impl LoopModel {
 struct Prop {
     /// Number of rows, `2·DEG + n`.
     rows: usize,
-    /// Column-major, `(n + 8) × rows`: `cols[j·rows + r]` is row r's coefficient of `z_j`.
+    /// Column-major, `(n + NODES + 2) × rows`: `cols[j·rows + r]` is row r's coefficient of `z_j`.
     cols: Vec<f64>,
 }
 
 impl Prop {
     /// `out[r] = row_r · z` for every row (summed in the order of `z`). Loops of order
-    /// n ≤ 8 (rows 11…18) take a copy of the loop with the row count a constant, so the rows'
-    /// sums stay in registers (the same sums in the same order: bit-identical).
+    /// n ≤ 8 (rows `2·DEG + 1 … 2·DEG + 8`, 15…22 at degree 7) take a copy of the loop with
+    /// the row count a constant, so the rows' sums stay in registers (the same sums in the
+    /// same order: bit-identical).
     #[inline]
     fn apply(&self, z: &[f64], out: &mut [f64]) {
-        match self.rows {
-            11 => apply_rows::<11>(&self.cols, z, out),
-            12 => apply_rows::<12>(&self.cols, z, out),
-            13 => apply_rows::<13>(&self.cols, z, out),
-            14 => apply_rows::<14>(&self.cols, z, out),
-            15 => apply_rows::<15>(&self.cols, z, out),
-            16 => apply_rows::<16>(&self.cols, z, out),
-            17 => apply_rows::<17>(&self.cols, z, out),
-            18 => apply_rows::<18>(&self.cols, z, out),
+        const R: usize = 2 * DEG;
+        match self.rows - R {
+            1 => apply_rows::<{ R + 1 }>(&self.cols, z, out),
+            2 => apply_rows::<{ R + 2 }>(&self.cols, z, out),
+            3 => apply_rows::<{ R + 3 }>(&self.cols, z, out),
+            4 => apply_rows::<{ R + 4 }>(&self.cols, z, out),
+            5 => apply_rows::<{ R + 5 }>(&self.cols, z, out),
+            6 => apply_rows::<{ R + 6 }>(&self.cols, z, out),
+            7 => apply_rows::<{ R + 7 }>(&self.cols, z, out),
+            8 => apply_rows::<{ R + 8 }>(&self.cols, z, out),
             _ => {
                 out.fill(0.0);
                 for (col, &zj) in self.cols.chunks_exact(self.rows).zip(z) {
@@ -229,18 +231,23 @@ fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
 }
 
 /// The neutral rule's factor: `h ≤ NEUTRAL_STEP·θ·(1 − |E|)` (module docs, "Near the neutral
-/// limit"). On the boiler's λ drag the error of the samples against `h = θ/480` follows
-/// `≈ 1.2e-7·(N·(1 − |E|))^−6` (N = θ/h; measured at |E| = 0.82 and 0.96, N = 10…60), so
-/// `N·(1 − |E|) ≥ 1/0.3 ≈ 3.3` keeps it below 1e-10 of the largest |u|.
-const NEUTRAL_STEP: f64 = 0.3;
+/// limit"). With the degree-7 interpolation ([`DEG`]) the error of the samples falls as
+/// `(N·(1 − |E|))⁻⁸` (N = θ/h); `N·(1 − |E|) ≥ 1/0.8 = 1.25` keeps it below 1e-10 of the
+/// largest |u|: measured (`cargo run --release --example step_error laws`, against θ/1920) on
+/// the boiler under Praveen Kumar's rule at the bound's own step, λ = 1.85…1.97 (|E| =
+/// 0.72…0.991): 4e-12 to 8.2e-11 (λ = 1.91, θ/8), and at `N·(1 − |E|)` ≈ 0.9–1.1 below it
+/// 1.2e-10 to 1.5e-9 (λ = 1.93, θ/10 and θ/8). Degree 5 needed 0.3 (`N·(1 − |E|) ≥ 3.3`).
+const NEUTRAL_STEP: f64 = 0.8;
 
 /// The fast-mode bound's factor: `h ≤ FAST_STEP/ρ(A)` (`ρ` the spectral radius of the loop's
-/// matrix opened at the delayed input). The degree-5 interpolation of the delayed input needs
-/// `h·ρ ≤ 0.25–0.3` for 1e-10 of the largest |u| on loops whose step this bound sets (measured
-/// on the boiler under Luyben's PID with derivative filters N = 30 and 100, against θ/1920:
-/// 1.2e-11 at h·ρ = 0.24, 4.2e-10 at 0.36, about 1e-8 at the former 0.5; README "The internal
-/// step"). Shared by every loop with interpolated delayed inputs.
-pub(crate) const FAST_STEP: f64 = 0.25;
+/// matrix opened at the delayed input). The degree-7 interpolation of the delayed input
+/// gives an error of u ≈ 2e-10·(h·ρ/0.75)⁸ of the largest |u| on loops whose step this bound
+/// sets: measured on the boiler under Luyben's PID with derivative filters chosen so that θ/2,
+/// θ/4, θ/8 give h·ρ exactly, against θ/1920 (`step_error laws`): 3.1–3.8e-11 at h·ρ = 0.6,
+/// 5.8–6.8e-11 at 0.65, 1.0–1.2e-10 at 0.7, 1.7–2.0e-10 at 0.75. Hence 0.65 (degree 5 needed
+/// 0.25: 1.2e-11 at 0.24, 4.2e-10 at 0.36, about 1e-8 at the former 0.5). Shared by every loop
+/// with interpolated delayed inputs.
+pub(crate) const FAST_STEP: f64 = 0.65;
 
 /// The neutral bound on the internal step (module docs, "Near the neutral limit"), shared by
 /// every loop with dead time (one delay, several delays, actuator limits): on a neutral loop
@@ -252,7 +259,8 @@ pub(crate) fn neutral_bound(theta: f64, ae: f64, t_end: f64, max_pieces: usize) 
 }
 
 /// The internal step h = θ/N (so the delay maps steps onto steps exactly), with h ≤ dt,
-/// h ≤ 0.25/ρ(A) ([`FAST_STEP`]) and, on a neutral loop (0 < |E| < 1), h ≤ 0.3·θ·(1 − |E|) (but never more
+/// h ≤ 0.65/ρ(A) ([`FAST_STEP`]) and, on a neutral loop (0 < |E| < 1), h ≤ 0.8·θ·(1 − |E|)
+/// ([`NEUTRAL_STEP`]; but never more
 /// pieces than a quarter of [`MAX_PIECES`] for that last bound alone).
 fn internal_step(m: &LoopModel, sc: &Scenario) -> f64 {
     let mut hmax = sc.dt;

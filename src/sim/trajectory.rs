@@ -1,13 +1,16 @@
-//! The continuous response as pieces of degree-5 polynomials (node values of the plant input
-//! and the output), the interpolation on a piece, and the piece exponential shared by the
+//! The continuous response as pieces of degree-[`DEG`] (7) polynomials (node values of the
+//! plant input and the output), the interpolation on a piece, and the piece exponential shared by the
 //! one- and the two-delay integrators.
 
 use super::scenario::Step;
 use crate::error::{Error, Result};
 use nalgebra::{DMatrix, DVector};
 
-/// Interpolation degree on each piece (nodes per piece = DEG + 1).
-pub const DEG: usize = 5;
+/// Interpolation degree on each piece (nodes per piece = DEG + 1). Degree 7 (degree 5 until
+/// issue 15's branch `engine4`): at the same 1e-10 it allows steps 2.7–3× longer (the step
+/// bounds in `single.rs`), and the monomial basis of 8 equispaced nodes stays well inside
+/// round-off (degree 9 equispaced stalled at 5e-11; README "The interpolation degree").
+pub const DEG: usize = 7;
 /// Nodes per piece.
 pub const NODES: usize = DEG + 1;
 /// The nodes' local coordinates `σ_j = j/DEG` (each the correctly rounded quotient, as
@@ -23,11 +26,17 @@ pub const SIGMA: [f64; NODES] = {
 };
 
 /// `exp(M·ℓ/DEG)` for one piece of length ℓ of the augmented system over
-/// `[x (n); ξ_j (NODES per delayed channel j); r; d]`: `ẋ = A x + Σ_j b_j ξ_{j,0} + b_r r + b_d d`,
-/// where `ξ_j` are the monomial coefficients of channel j's delayed input on the piece
-/// (`w_j(τ) = Σ_k ξ_{j,k} σ^k`, `σ = τ/ℓ`, so `dξ_{j,k}/dτ = (k+1)/ℓ·ξ_{j,k+1}`). Its powers give
-/// the state at the piece's nodes `iℓ/DEG` (shared by the one- and the several-delay
-/// integrators).
+/// `[x (n); η_j (NODES per delayed channel j); r; d]`: `ẋ = A x + Σ_j b_j w_j(τ) + b_r r + b_d d`,
+/// where `η_j` are the monomial coefficients of channel j's delayed input on the piece in the
+/// centred variable `u = 2τ/ℓ − 1 ∈ [−1, 1]`, carried along the piece (`η_j(τ)` the coefficients
+/// of `P_j(u + 2τ/ℓ)`, so `dη_{j,k}/dτ = 2(k+1)/ℓ·η_{j,k+1}` and `w_j(τ) = Σ_k (−1)^k η_{j,k}(τ)`).
+/// Its powers give the state at the piece's nodes `iℓ/DEG` (shared by the one- and the
+/// several-delay integrators, which fold [`interpolation_inverse`] into their rows and so take
+/// node values). Why centred: the weights `K·V⁻¹` are sums of terms of the size of `V⁻¹`'s
+/// entries, and `V⁻¹` of the 8 nodes `j/7` in powers of `σ = τ/ℓ` has entries up to 2.9e4
+/// (row sums to 1.0e5; degree 5: 6.8e2, 2.1e3), in powers of `u` 76: at degree 7 with `σ` the
+/// integrator under P control (tests/engine_sim.rs) was 2.3e-12 off the method of steps
+/// (7.7e-14 at degree 5).
 pub(crate) fn piece_exponential(
     a: &DMatrix<f64>,
     bw: &[DVector<f64>],
@@ -42,14 +51,17 @@ pub(crate) fn piece_exponential(
     big.view_mut((0, 0), (n, n)).copy_from(a);
     for i in 0..n {
         for (j, b) in bw.iter().enumerate() {
-            big[(i, n + NODES * j)] = b[i];
+            // w_j = Σ_k (−1)^k η_{j,k}: the polynomial at u = −1 (the current time)
+            for k in 0..NODES {
+                big[(i, n + NODES * j + k)] = if k % 2 == 0 { b[i] } else { -b[i] };
+            }
         }
         big[(i, ir)] = br[i];
         big[(i, id)] = bd[i];
     }
     for j in 0..m {
         for k in 0..DEG {
-            big[(n + NODES * j + k, n + NODES * j + k + 1)] = (k + 1) as f64 / len;
+            big[(n + NODES * j + k, n + NODES * j + k + 1)] = 2.0 * (k + 1) as f64 / len;
         }
     }
     let e1 = (big * (len / DEG as f64)).exp();
@@ -62,8 +74,34 @@ pub(crate) fn piece_exponential(
     Ok(e1)
 }
 
-/// `V⁻¹` of the interpolation nodes: `V[j][k] = σ_j^k`, `σ_j = j/DEG`; coefficients `c = V⁻¹ w`.
+/// The barycentric weights of the equispaced nodes `j/DEG`: `(−1)^j·C(DEG, j)` (the common
+/// factor cancels in the barycentric formula; exact small integers).
+const BARY_W: [f64; NODES] = {
+    let mut w = [0.0; NODES];
+    let mut c = 1.0; // C(DEG, j), built as C(DEG, j−1)·(DEG − j + 1)/j: exact integers
+    let mut j = 0;
+    while j < NODES {
+        w[j] = if j % 2 == 0 { c } else { -c };
+        c = c * (DEG - j) as f64 / (j + 1) as f64;
+        j += 1;
+    }
+    w
+};
+
+/// `V⁻¹` of the interpolation nodes in the centred variable of [`piece_exponential`]:
+/// `V[j][k] = u_j^k`, `u_j = 2j/DEG − 1`; coefficients `η = V⁻¹ w`.
 pub(crate) fn interpolation_inverse() -> Result<DMatrix<f64>> {
+    DMatrix::from_fn(NODES, NODES, |j, k| {
+        (2.0 * j as f64 / DEG as f64 - 1.0).powi(k as i32)
+    })
+    .try_inverse()
+    .ok_or_else(|| Error::new("", "internal: interpolation matrix singular"))
+}
+
+/// `V⁻¹` of the interpolation nodes in powers of `σ = τ/ℓ` (from the piece start):
+/// `V[j][k] = σ_j^k`, `σ_j = j/DEG`; coefficients `c = V⁻¹ w`, `c_0 = w(0)` (the saturating
+/// loop's augmented state, which reads `w` and `ẇ` at the start from `c_0`, `c_1`).
+pub(crate) fn start_interpolation_inverse() -> Result<DMatrix<f64>> {
     DMatrix::from_fn(NODES, NODES, |j, k| (j as f64 / DEG as f64).powi(k as i32))
         .try_inverse()
         .ok_or_else(|| Error::new("", "internal: interpolation matrix singular"))
@@ -210,10 +248,9 @@ impl Trajectory {
 
 /// Barycentric Lagrange interpolation on DEG+1 equispaced nodes of [0, 1].
 pub fn lagrange(vals: &[f64], s: f64) -> f64 {
-    const W: [f64; NODES] = [1.0, -5.0, 10.0, -10.0, 5.0, -1.0];
     let mut num = 0.0;
     let mut den = 0.0;
-    for ((&v, &w), &sj) in vals.iter().zip(W.iter()).zip(&SIGMA) {
+    for ((&v, &w), &sj) in vals.iter().zip(BARY_W.iter()).zip(&SIGMA) {
         let d = s - sj;
         if d == 0.0 {
             return v;
@@ -228,9 +265,8 @@ pub fn lagrange(vals: &[f64], s: f64) -> f64 {
 /// [`lagrange`] of two node sets at the same σ, sharing the barycentric weights (each result
 /// is the one `lagrange` gives, bit for bit).
 fn lagrange2(a: &[f64], b: &[f64], s: f64) -> (f64, f64) {
-    const W: [f64; NODES] = [1.0, -5.0, 10.0, -10.0, 5.0, -1.0];
     let (mut na, mut nb, mut den) = (0.0, 0.0, 0.0);
-    for (((&va, &vb), &w), &sj) in a.iter().zip(b).zip(W.iter()).zip(&SIGMA) {
+    for (((&va, &vb), &w), &sj) in a.iter().zip(b).zip(BARY_W.iter()).zip(&SIGMA) {
         let d = s - sj;
         if d == 0.0 {
             return (va, vb);
@@ -254,7 +290,7 @@ pub fn lagrange_deriv(vals: &[f64], s: f64) -> f64 {
     d
 }
 
-/// Monomial coefficients (ascending in σ) of the interpolant through the 6 equispaced nodes.
+/// Monomial coefficients (ascending in σ) of the interpolant through the `NODES` equispaced nodes.
 pub fn monomial_coeffs(vals: &[f64]) -> [f64; NODES] {
     // Newton forward differences → monomial coefficients
     let mut a = [0.0; NODES];
@@ -287,12 +323,16 @@ mod tests {
     use super::*;
 
     #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
-    fn lagrange_is_exact_on_quintics() {
-        let f = |s: f64| 1.0 - 2.0 * s + 3.0 * s.powi(3) - s.powi(5);
+    fn lagrange_is_exact_on_degree_deg() {
+        // a polynomial of degree DEG = 7 (exact up to round-off: values O(1), 1e-13 ≈ 500 ulp
+        // of the barycentric sums; the derivative through the monomial form, 1e-11)
+        let f = |s: f64| 1.0 - 2.0 * s + 3.0 * s.powi(3) - s.powi(5) + 0.5 * s.powi(7);
+        // the weights (−1)^j·C(7, j)
+        assert_eq!(BARY_W, [1.0, -7.0, 21.0, -35.0, 35.0, -21.0, 7.0, -1.0]);
         let vals: Vec<f64> = (0..NODES).map(|j| f(j as f64 / DEG as f64)).collect();
         for s in [0.0, 0.13, 0.5, 0.77, 1.0] {
             assert!((lagrange(&vals, s) - f(s)).abs() < 1e-13);
-            let df = -2.0 + 9.0 * s * s - 5.0 * s.powi(4);
+            let df = -2.0 + 9.0 * s * s - 5.0 * s.powi(4) + 3.5 * s.powi(6);
             assert!((lagrange_deriv(&vals, s) - df).abs() < 1e-11);
         }
     }
@@ -301,19 +341,10 @@ mod tests {
     fn lagrange2_is_lagrange_twice() {
         // the shared weights change nothing: both results equal `lagrange`'s bit for bit, at
         // the nodes (exact node values), next to them and inside
-        let a = [0.3, -1.7, 2.25, 1e-3, -4.5, 0.125];
-        let b = [1.0, 0.5, -0.25, 3.0, 7.5, -2.0];
-        let mut ss = vec![
-            0.0,
-            1.0,
-            0.2,
-            0.4,
-            0.6,
-            0.8,
-            1e-17,
-            1.0 - 1e-16,
-            0.2 + 1e-16,
-        ];
+        let a = [0.3, -1.7, 2.25, 1e-3, -4.5, 0.125, 0.75, -3.0];
+        let b = [1.0, 0.5, -0.25, 3.0, 7.5, -2.0, 0.0, 1.5];
+        let mut ss = SIGMA.to_vec();
+        ss.extend([1e-17, 1.0 - 1e-16, SIGMA[1] + 1e-16]);
         ss.extend((0..50).map(|i| i as f64 / 49.0 + 1e-3));
         for s in ss {
             let (ya, yb) = lagrange2(&a, &b, s);
