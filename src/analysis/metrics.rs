@@ -593,6 +593,13 @@ impl PieceForms {
     /// The interpolant through `yv` at `σ` (barycentric; the node values at the nodes).
     #[inline]
     fn eval(&self, yv: &[f64; NODES], s: f64) -> f64 {
+        // the piece's ends (every whole piece asks for them): no division
+        if s == 0.0 {
+            return yv[0];
+        }
+        if s == 1.0 {
+            return yv[DEG];
+        }
         let (mut num, mut den) = (0.0, 0.0);
         for ((&v, &w), &sj) in yv.iter().zip(&self.bary).zip(&SIGMA) {
             let d = s - sj;
