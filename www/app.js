@@ -170,6 +170,8 @@ function classroomStep() {
 
 // What the results show: their input's render number (perf.shown) and whether newer is coming.
 const view = { busy: null };
+// The first render's tables, drawn after its frame (render()): `due` until then.
+const firstTables = { due: false };
 
 // The frame that shows an input comes first. Until it is painted, a complete result is not
 // applied: an input whose answers are all known already (memoized: undo, redo, reset, a value
@@ -234,6 +236,7 @@ function render(arrival = false) {
     // the frequency response is asked for now (the worker computes it while this frame paints)
     try { currentResponse(r); } catch { /* (drawBode shows the error) */ }
     const t1 = performance.now();
+    const isFirst = !perf.firstPlotsAt;
     drawPlots(r);
     const t2 = lap('plots', t1);
     if (!perf.firstPlotsAt) {
@@ -245,8 +248,26 @@ function render(arrival = false) {
     }
     showEnvelope(r);
     scheduleClassroom(r);
-    showMetrics(r);
-    showController(r);
+    if (isFirst) {
+      // The first render (start-up): the metrics table and the controller's section, below
+      // the fold, in the task after the frame that shows the readouts and the response plots
+      // (their DOM would add ~10 ms of script and a second layout of the page to that frame:
+      // README, "First plots: the document's order and the start-up task"); a newer render
+      // before then shows its own.
+      firstTables.due = true;
+      afterPaint(() => {
+        firstTables.due = false;
+        if (store.last !== r) return;
+        const t3 = performance.now();
+        showMetrics(r);
+        showController(r);
+        perf.firstTablesMs = performance.now() - t3;
+      });
+    } else {
+      firstTables.due = false;
+      showMetrics(r);
+      showController(r);
+    }
     I.afterRender();
     lap('tables', t2);
     const crashed = crashBanners();
@@ -333,7 +354,7 @@ function wire() {
  *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep; `panels` false:
  *  the readouts and response plots only, the classroom panels drawn in later frames aside). */
 function isCurrent(all = false, sweep = true, panels = true) {
-  const waiting = (panels && classroom.scheduled) || later.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  const waiting = (panels && classroom.scheduled) || later.due || firstTables.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 

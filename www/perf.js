@@ -8,9 +8,10 @@
 // (compiled), methods() and presets() read (methods), the controls built (controls: with the
 // method panel's λ for Ms = 1.6, computed on this thread at start-up), everything wired (built);
 // firstPlotsAt: when the first response plots were drawn (bench/page-latency.mjs --first), and
-// firstPhases: that render's phases;
+// firstPhases: that render's phases; firstTablesMs: its metrics table and controller section,
+// drawn in the task after its frame (app.js render());
 // classroom: the time of each later chunk that draws a classroom panel (app.js), the last 1000.
-export const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {}, inputs: 0, shown: 0, startup: {}, firstPlotsAt: 0, firstPhases: null, classroom: [] };
+export const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {}, inputs: 0, shown: 0, startup: {}, firstPlotsAt: 0, firstPhases: null, firstTablesMs: 0, classroom: [] };
 
 /** Adds the time since `t0` to stage `name`; returns now (the next stage's start). */
 export const lap = (name, t0) => {
