@@ -15,7 +15,7 @@ import { $, errText, afterPaint } from './dom.js';
 import { store, connect, changed, isPending, methodParams } from './store.js';
 import { perf, lap } from './perf.js';
 import { compute } from './compute.js';
-import { drawPlots } from './plots.js';
+import { drawPlots, drawNyquist, nyquistView } from './plots.js';
 import { watchSizes } from './drawspec.js';
 import { showBanners, showReadouts } from './readouts.js';
 import { showMetrics } from './table.js';
@@ -168,6 +168,44 @@ function classroomStep() {
   classroom.r = null;
 }
 
+// The second part of a result (drag4): the Nyquist plot with its envelope note and the metrics
+// table (with the plots' text equivalents) are drawn in the task after the frame that shows the
+// readouts, the controller and the three time plots. A result arrives from the worker a few ms
+// into the frame after its input; drawing all four plots and the tables then (6–10 ms) with the
+// frame's own rendering after it did not fit in the frame. The task after the frame runs while
+// the worker computes the next input of a drag, when this thread is idle. Unlike the classroom
+// panels it is not cancelled by a newer input: it draws the newest applied result (with the
+// plant, perturbation and pins that result was computed for, r.view), so during a drag the
+// Nyquist plot and the table follow the time plots one frame later.
+const secondary = { r: null, due: false };
+
+function showSecondary(r) {
+  drawNyquist(r);
+  showEnvelope(r);
+  showMetrics(r);
+  I.afterRender();
+}
+
+function scheduleSecondary(r) {
+  secondary.r = r;
+  if (secondary.due) return;
+  secondary.due = true;
+  afterPaint(() => {
+    const q = secondary.r;
+    secondary.r = null;
+    secondary.due = false;
+    if (!q) return;
+    const t0 = performance.now();
+    try {
+      showSecondary(q);
+    } catch (e) {
+      showBanners([...crashBanners(), { kind: 'error', title: 'Internal error', text: errText(e) }]);
+    }
+    perf.secondary.push(performance.now() - t0);
+    if (perf.secondary.length > 1000) perf.secondary.shift();
+  });
+}
+
 // What the results show: their input's render number (perf.shown) and whether newer is coming.
 const view = { busy: null };
 
@@ -243,11 +281,15 @@ function render(arrival = false) {
       // first plots (drawn by the first module) are on screen
       afterPaint(() => { W.holdSlow(false); warmDesign(); E.loadFull().catch(() => {}); });
     }
-    showEnvelope(r);
-    scheduleClassroom(r);
-    showMetrics(r);
     showController(r);
-    I.afterRender();
+    if (perf.firstPlotsAt === t2) {
+      // (the first plots: all at once, as before; nothing of the page is on screen yet)
+      showSecondary(r);
+    } else {
+      r.view = nyquistView();
+      scheduleSecondary(r);
+    }
+    scheduleClassroom(r);
     lap('tables', t2);
     const crashed = crashBanners();
     if (crashed.length) showBanners([...crashed, ...r.banners]);
@@ -333,7 +375,7 @@ function wire() {
  *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep; `panels` false:
  *  the readouts and response plots only, the classroom panels drawn in later frames aside). */
 function isCurrent(all = false, sweep = true, panels = true) {
-  const waiting = (panels && classroom.scheduled) || later.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  const waiting = (panels && classroom.scheduled) || secondary.due || later.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 
