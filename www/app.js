@@ -239,13 +239,19 @@ function setBusy(b) {
   for (const id of ['live', 'readouts', 'plots']) $(id).setAttribute('aria-busy', String(b));
 }
 
+// The times of the last two inputs' renders: inputs closer than STREAM_MS come in a stream (a
+// slider dragged: one per frame; a held arrow key: one per 30–50 ms).
+const STREAM_MS = 100;
+const inputAt = { last: -Infinity, prev: -Infinity };
+const streaming = () => inputAt.last - inputAt.prev < STREAM_MS;
+
 /** Computes the state and shows the results (`arrival`: an answer of the worker came in). */
 function render(arrival = false) {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
   // the panels of a structural change are built first (rebuildSoon): their build renders
   if (structure.due) { setBusy(true); return; }
-  if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); }
+  if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); inputAt.prev = inputAt.last; inputAt.last = t0; }
   W.begin('render');
   try {
     if (!arrival) C.updateRanges();
@@ -269,8 +275,11 @@ function render(arrival = false) {
     r.banners = Er.route(r.banners);
     showBanners(r.banners);
     showReadouts(r);
-    // the frequency response is asked for now (the worker computes it while this frame paints)
-    try { currentResponse(r); } catch { /* (drawBode shows the error) */ }
+    // the frequency response is asked for now (the worker computes it while this frame paints),
+    // unless the inputs come in a stream (a drag, a held key): then the fast worker is left free
+    // for the next input's design, and the Bode panel's chunk asks for it after the frame (a
+    // newer input cancels that chunk; the drag's last input gets its panel)
+    if (!streaming()) { try { currentResponse(r); } catch { /* (drawBode shows the error) */ } }
     const t1 = performance.now();
     drawPlots(r);
     const t2 = lap('plots', t1);
