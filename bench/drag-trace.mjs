@@ -7,6 +7,8 @@
 //
 //   node bench/drag-trace.mjs [page.html|-] [frames] [control] [--detail]
 //   control: lambda (default), epsilon, target-ms, alg1-zeta, pk-n
+//   --steps: one input at a time instead (the next once the page has settled), as
+//   bench/page-latency.mjs's steps
 //
 // CPU time of the main thread is the figure that holds on a shared machine; compare builds by
 // alternating runs (README, "The page: drag frames").
@@ -42,7 +44,8 @@ await page.goto(pathToFileURL(dist).href + U.encodeHash(c.st));
 await page.waitForSelector('body[data-ready="1"]');
 await page.evaluate(() => window.__pidlab.settled(true));
 const vals = (phase) => Array.from({ length: N }, (_, i) => c.range[0] + (c.range[1] - c.range[0]) * (0.5 + 0.5 * Math.sin(i / 6 + phase)));
-const drag = (v) => page.evaluate(async ([sel, values]) => {
+const steps = argv.includes('--steps');
+const drag = (v) => page.evaluate(async ([sel, values, steps]) => {
   const x = document.querySelector(sel);
   const painted = () => new Promise((res) => requestAnimationFrame(() => { const ch = new MessageChannel(); ch.port1.onmessage = () => res(performance.now()); ch.port2.postMessage(0); }));
   const out = [];
@@ -53,10 +56,12 @@ const drag = (v) => page.evaluate(async ([sel, values]) => {
     x.dispatchEvent(new Event('input', { bubbles: true }));
     out.push((await painted()) - t0);
     performance.mark('drag-painted-' + i);
+    // --steps: one input at a time, the next once its result and panels are on screen
+    if (steps) await window.__pidlab.settled();
   }
   await window.__pidlab.settled();
   return out;
-}, [c.sel, v]);
+}, [c.sel, v, steps]);
 await drag(vals(1.3)); // warm-up (another path over the range)
 const cdp = await page.context().newCDPSession(page);
 const events = [];
