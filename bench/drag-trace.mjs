@@ -91,7 +91,11 @@ const cpu = (a, z) => top.filter((t) => t.ts + t.dur > a && t.ts < z).reduce((s,
 const q = (a, p) => { const s = [...a].sort((x, y) => x - y); return s[Math.min(s.length - 1, Math.floor(p * (s.length - 1) + 0.5))]; };
 const frameCpu = ins.map((a, i) => cpu(a, outs[i]));
 const f1 = (x) => x.toFixed(1);
-console.log(`${dist.split('/').pop()} ${control} drag of ${N} frames: wall input -> painted p50/p95/max ${f1(q(wall, 0.5))}/${f1(q(wall, 0.95))}/${f1(Math.max(...wall))} ms; main-thread CPU per frame p50/p95/max ${f1(q(frameCpu, 0.5))}/${f1(q(frameCpu, 0.95))}/${f1(Math.max(...frameCpu))} ms; frames > 16.7 ms: ${wall.filter((w) => w > 16.7).length}; load ${l0.toFixed(1)} -> ${l1.toFixed(1)}`);
+// the longest task of each frame (thread time; a worker's answer applied is usually it) and the
+// task that applies a result (a message from a worker whose task ran > 2 ms of script)
+const longest = ins.map((a, i) => Math.max(0, ...top.filter((t) => t.ts + t.dur > a && t.ts < outs[i]).map((t) => (t.tdur ?? t.dur) / 1000)));
+const applying = onMain.filter((e) => e.name === 'HandlePostMessage' && (e.tdur ?? e.dur) > 2000).map((e) => (e.tdur ?? e.dur) / 1000);
+console.log(`${dist.split('/').pop()} ${control} ${steps ? 'steps' : 'drag'} of ${N} frames: wall input -> painted p50/p95/max ${f1(q(wall, 0.5))}/${f1(q(wall, 0.95))}/${f1(Math.max(...wall))} ms; main-thread CPU per frame p50/p95/max ${f1(q(frameCpu, 0.5))}/${f1(q(frameCpu, 0.95))}/${f1(Math.max(...frameCpu))} ms; longest task per frame p50/p95 ${f1(q(longest, 0.5))}/${f1(q(longest, 0.95))} ms; worker messages over 2 ms: ${applying.length}, p50/p95 ${applying.length ? f1(q(applying, 0.5)) + '/' + f1(q(applying, 0.95)) : '–'} ms; frames > 16.7 ms: ${wall.filter((w) => w > 16.7).length}; load ${l0.toFixed(1)} -> ${l1.toFixed(1)}`);
 const slow = ins.map((a, i) => i).filter((i) => wall[i] > 16.7);
 const sums = {};
 const win = (ts) => slow.some((i) => ts >= ins[i] && ts < outs[i]);
