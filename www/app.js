@@ -15,7 +15,7 @@ import { $, errText, afterPaint } from './dom.js';
 import { store, connect, changed, isPending, methodParams } from './store.js';
 import { perf, lap } from './perf.js';
 import { compute } from './compute.js';
-import { drawPlots, drawNyquist, nyquistView } from './plots.js';
+import { drawPlots, drawNyquist, drawLater, nyquistView } from './plots.js';
 import { watchSizes } from './drawspec.js';
 import { showBanners, showReadouts } from './readouts.js';
 import { showMetrics } from './table.js';
@@ -168,18 +168,20 @@ function classroomStep() {
   classroom.r = null;
 }
 
-// The second part of a result (drag4): the Nyquist plot with its envelope note and the metrics
-// table (with the plots' text equivalents) are drawn in the task after the frame that shows the
-// readouts, the controller and the three time plots. A result arrives from the worker a few ms
-// into the frame after its input; drawing all four plots and the tables then (6–10 ms) with the
-// frame's own rendering after it did not fit in the frame. The task after the frame runs while
+// The second part of a result (drag4): the control signal plot (its spec built with the
+// others), the Nyquist plot with its envelope note and the metrics table (with the plots' text
+// equivalents) are drawn in the task after the frame that shows the readouts, the controller
+// and the set-point and load responses. A result arrives from the worker a few ms into the
+// frame after its input; drawing all four plots and the tables then (6–10 ms) with the frame's
+// own rendering after it did not fit in the frame. The task after the frame runs while
 // the worker computes the next input of a drag, when this thread is idle. Unlike the classroom
 // panels it is not cancelled by a newer input: it draws the newest applied result (with the
-// plant, perturbation and pins that result was computed for, r.view), so during a drag the
-// Nyquist plot and the table follow the time plots one frame later.
+// plant, perturbation and pins that result was computed for, r.view), so during a drag these
+// follow the set-point and load responses one frame later.
 const secondary = { r: null, due: false };
 
 function showSecondary(r) {
+  drawLater(r);
   drawNyquist(r);
   showEnvelope(r);
   showMetrics(r);
@@ -281,7 +283,9 @@ function render(arrival = false) {
     // newer input cancels that chunk; the drag's last input gets its panel)
     if (!streaming()) { try { currentResponse(r); } catch { /* (drawBode shows the error) */ } }
     const t1 = performance.now();
-    drawPlots(r);
+    // (the first plots: all at once; nothing of the page is on screen yet)
+    const first = !perf.firstPlotsAt;
+    drawPlots(r, !first);
     const t2 = lap('plots', t1);
     if (!perf.firstPlotsAt) {
       perf.firstPlotsAt = t2;
@@ -291,8 +295,7 @@ function render(arrival = false) {
       afterPaint(() => { W.holdSlow(false); warmDesign(); E.loadFull().catch(() => {}); });
     }
     showController(r);
-    if (perf.firstPlotsAt === t2) {
-      // (the first plots: all at once, as before; nothing of the page is on screen yet)
+    if (first) {
       showSecondary(r);
     } else {
       r.view = nyquistView();

@@ -10,8 +10,8 @@
 // firstPlotsAt: when the first response plots were drawn (bench/page-latency.mjs --first), and
 // firstPhases: that render's phases;
 // classroom: the time of each later chunk that draws a classroom panel (app.js), the last 1000;
-// secondary: the same for the task after a result's frame that draws its Nyquist plot and
-// metrics table (app.js scheduleSecondary).
+// secondary: the same for the task after a result's frame that draws its control signal and
+// Nyquist plots and its metrics table (app.js scheduleSecondary).
 export const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {}, inputs: 0, shown: 0, startup: {}, firstPlotsAt: 0, firstPhases: null, classroom: [], secondary: [] };
 
 /** Adds the time since `t0` to stage `name`; returns now (the next stage's start). */

@@ -143,10 +143,12 @@ function plot(spec) {
   }
 }
 
-/** Draws the three time plots of a render's results (with the pins): the set-point and load
- *  responses and the control signal. The Nyquist plot is drawNyquist's (app.js draws it in the
- *  task after the frame that shows these, or at once for the first plots). */
-export function drawPlots(r) {
+/** Draws the time plots of a render's results (with the pins): the set-point and load
+ *  responses and the control signal; `later`: the control signal's spec is built (from the
+ *  state now) but kept as r.laterSpec, for drawLater() in the task after the frame. The Nyquist
+ *  plot is drawNyquist's (app.js draws both in the task after the frame that shows the
+ *  responses, or at once for the first plots). */
+export function drawPlots(r, later = false) {
   P.ensurePins();
   const pins = P.pinned();
   const { state } = store;
@@ -206,7 +208,14 @@ export function drawPlots(r) {
   const tEnd = r.sim && r.sim.t.length ? r.sim.t[r.sim.t.length - 1] : sc.t_end;
   for (const l of limitLines(state)) u.push({ label: l.label, x: [0, tEnd], y: [l.y, l.y], color: '#D55E00', dash: 'dot', width: 1.5 });
   lap('plots: series', t2);
-  plot({ canvas: 'plot-u', kind: 'time', dpr: k, title: 'Control signal', xlabel: 'time', ylabel: 'u', series: u, vlines: divLines });
+  const uSpec = { canvas: 'plot-u', kind: 'time', dpr: k, title: 'Control signal', xlabel: 'time', ylabel: 'u', series: u, vlines: divLines };
+  if (later) r.laterSpec = uSpec;
+  else plot(uSpec);
+}
+
+/** Draws the control signal plot drawPlots(r, true) left for later. */
+export function drawLater(r) {
+  if (r.laterSpec) plot(r.laterSpec);
 }
 
 /** What drawNyquist reads of the page's state, as it is now (app.js keeps it with a result
