@@ -3,8 +3,8 @@
 // drag), and for every render that drew a new result (a plot drawn: the `plots: draw` lap),
 // its stages from window.__pidlab.perf.phases (performance.now() laps in the task that applies
 // the worker's answer: wall time inside one task, so a loaded machine inflates them less than
-// the frame figures); medians. Also the tasks after a result's frame that draw its Nyquist plot
-// and metrics table (perf.secondary, when the build has them).
+// the frame figures); medians. Also the tasks after a result's frame that draw its control
+// signal and Nyquist plots and its metrics table (perf.secondary, when the build has them).
 //
 //   node bench/drag-work.mjs [page.html ...]     (default dist/pidlab.html; several: in turn)
 import { pathToFileURL, fileURLToPath } from 'node:url';
@@ -48,7 +48,7 @@ for (const dist of pages) {
   });
   const keys = ['work', 'plots', 'plots: draw', 'plots: spec', 'plots: series', 'tables'];
   const f = (x) => (Number.isFinite(x) ? x.toFixed(1) : '–');
-  console.log(`${dist.split('/').pop()}: ${out.rec.length} renders drew a new result during 120 drag frames; median ms: ` + keys.map((k) => `${k} ${f(med(out.rec.map((r) => r[k] ?? 0)))}`).join(', ') + `; after the frame (Nyquist plot, table): ${out.secondary.length} tasks, median ${f(med(out.secondary))}; load ${l0.toFixed(1)} -> ${loadavg()[0].toFixed(1)}`);
+  console.log(`${dist.split('/').pop()}: ${out.rec.length} renders drew a new result during 120 drag frames; median ms: ` + keys.map((k) => `${k} ${f(med(out.rec.map((r) => r[k] ?? 0)))}`).join(', ') + `; after the frame (perf.secondary): ${out.secondary.length} tasks, median ${f(med(out.secondary))}; load ${l0.toFixed(1)} -> ${loadavg()[0].toFixed(1)}`);
   await page.close();
 }
 await b.close();
