@@ -15,7 +15,7 @@ import { $, errText, afterPaint } from './dom.js';
 import { store, connect, changed, isPending, methodParams } from './store.js';
 import { perf, lap } from './perf.js';
 import { compute } from './compute.js';
-import { drawPlots } from './plots.js';
+import { drawPlots, drawNyquist, drawLater, nyquistView } from './plots.js';
 import { watchSizes } from './drawspec.js';
 import { showBanners, showReadouts } from './readouts.js';
 import { showMetrics } from './table.js';
@@ -168,6 +168,46 @@ function classroomStep() {
   classroom.r = null;
 }
 
+// The second part of a result (drag4): the control signal plot (its spec built with the
+// others), the Nyquist plot with its envelope note and the metrics table (with the plots' text
+// equivalents) are drawn in the task after the frame that shows the readouts, the controller
+// and the set-point and load responses. A result arrives from the worker a few ms into the
+// frame after its input; drawing all four plots and the tables then (6–10 ms) with the frame's
+// own rendering after it did not fit in the frame. The task after the frame runs while
+// the worker computes the next input of a drag, when this thread is idle. Unlike the classroom
+// panels it is not cancelled by a newer input: it draws the newest applied result (with the
+// plant, perturbation and pins that result was computed for, r.view), so during a drag these
+// follow the set-point and load responses one frame later.
+const secondary = { r: null, due: false };
+
+function showSecondary(r) {
+  drawLater(r);
+  drawNyquist(r);
+  showEnvelope(r);
+  showMetrics(r);
+  I.afterRender();
+}
+
+function scheduleSecondary(r) {
+  secondary.r = r;
+  if (secondary.due) return;
+  secondary.due = true;
+  afterPaint(() => {
+    const q = secondary.r;
+    secondary.r = null;
+    secondary.due = false;
+    if (!q) return;
+    const t0 = performance.now();
+    try {
+      showSecondary(q);
+    } catch (e) {
+      showBanners([...crashBanners(), { kind: 'error', title: 'Internal error', text: errText(e) }]);
+    }
+    perf.secondary.push(performance.now() - t0);
+    if (perf.secondary.length > 1000) perf.secondary.shift();
+  });
+}
+
 // What the results show: their input's render number (perf.shown) and whether newer is coming.
 const view = { busy: null };
 // The first render's tables, drawn after its frame (render()): `due` until then.
@@ -203,13 +243,19 @@ function setBusy(b) {
   for (const id of ['live', 'readouts', 'plots']) $(id).setAttribute('aria-busy', String(b));
 }
 
+// The times of the last two inputs' renders: inputs closer than STREAM_MS come in a stream (a
+// slider dragged: one per frame; a held arrow key: one per 30–50 ms).
+const STREAM_MS = 100;
+const inputAt = { last: -Infinity, prev: -Infinity };
+const streaming = () => inputAt.last - inputAt.prev < STREAM_MS;
+
 /** Computes the state and shows the results (`arrival`: an answer of the worker came in). */
 function render(arrival = false) {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
   // the panels of a structural change are built first (rebuildSoon): their build renders
   if (structure.due) { setBusy(true); return; }
-  if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); }
+  if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); inputAt.prev = inputAt.last; inputAt.last = t0; }
   W.begin('render');
   try {
     if (!arrival) C.updateRanges();
@@ -233,11 +279,15 @@ function render(arrival = false) {
     r.banners = Er.route(r.banners);
     showBanners(r.banners);
     showReadouts(r);
-    // the frequency response is asked for now (the worker computes it while this frame paints)
-    try { currentResponse(r); } catch { /* (drawBode shows the error) */ }
+    // the frequency response is asked for now (the worker computes it while this frame paints),
+    // unless the inputs come in a stream (a drag, a held key): then the fast worker is left free
+    // for the next input's design, and the Bode panel's chunk asks for it after the frame (a
+    // newer input cancels that chunk; the drag's last input gets its panel)
+    if (!streaming()) { try { currentResponse(r); } catch { /* (drawBode shows the error) */ } }
     const t1 = performance.now();
-    const isFirst = !perf.firstPlotsAt;
-    drawPlots(r);
+    // (the first plots: all at once; nothing of the page is on screen yet)
+    const first = !perf.firstPlotsAt;
+    drawPlots(r, !first);
     const t2 = lap('plots', t1);
     if (!perf.firstPlotsAt) {
       perf.firstPlotsAt = t2;
@@ -246,14 +296,15 @@ function render(arrival = false) {
       // first plots (drawn by the first module) are on screen
       afterPaint(() => { W.holdSlow(false); warmDesign(); E.loadFull().catch(() => {}); });
     }
-    showEnvelope(r);
-    scheduleClassroom(r);
-    if (isFirst) {
-      // The first render (start-up): the metrics table and the controller's section, below
-      // the fold, in the task after the frame that shows the readouts and the response plots
-      // (their DOM would add ~10 ms of script and a second layout of the page to that frame:
-      // README, "First plots: the document's order and the start-up task"); a newer render
-      // before then shows its own.
+    if (first) {
+      // The first render (start-up): the Nyquist plot with the others; the metrics table and
+      // the controller's section, below the fold, in the task after the frame that shows the
+      // readouts and the response plots (their DOM would add ~10 ms of script and a second
+      // layout of the page to that frame: README, "First plots: the document's order and the
+      // start-up task"); a newer render before then shows its own.
+      drawNyquist(r);
+      showEnvelope(r);
+      I.afterRender();
       firstTables.due = true;
       afterPaint(() => {
         firstTables.due = false;
@@ -264,11 +315,14 @@ function render(arrival = false) {
         perf.firstTablesMs = performance.now() - t3;
       });
     } else {
+      // later renders: the controller now, the control signal, Nyquist and metrics table in
+      // the task after the frame (scheduleSecondary)
       firstTables.due = false;
-      showMetrics(r);
       showController(r);
+      r.view = nyquistView();
+      scheduleSecondary(r);
     }
-    I.afterRender();
+    scheduleClassroom(r);
     lap('tables', t2);
     const crashed = crashBanners();
     if (crashed.length) showBanners([...crashed, ...r.banners]);
@@ -354,7 +408,7 @@ function wire() {
  *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep; `panels` false:
  *  the readouts and response plots only, the classroom panels drawn in later frames aside). */
 function isCurrent(all = false, sweep = true, panels = true) {
-  const waiting = (panels && classroom.scheduled) || later.due || firstTables.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  const waiting = (panels && classroom.scheduled) || secondary.due || later.due || firstTables.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 

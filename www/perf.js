@@ -10,8 +10,10 @@
 // firstPlotsAt: when the first response plots were drawn (bench/page-latency.mjs --first), and
 // firstPhases: that render's phases; firstTablesMs: its metrics table and controller section,
 // drawn in the task after its frame (app.js render());
-// classroom: the time of each later chunk that draws a classroom panel (app.js), the last 1000.
-export const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {}, inputs: 0, shown: 0, startup: {}, firstPlotsAt: 0, firstPhases: null, firstTablesMs: 0, classroom: [] };
+// classroom: the time of each later chunk that draws a classroom panel (app.js), the last 1000;
+// secondary: the same for the task after a later result's frame that draws its control signal
+// and Nyquist plots and its metrics table (app.js scheduleSecondary).
+export const perf = { renders: 0, lastWorkMs: 0, works: [], phases: {}, inputs: 0, shown: 0, startup: {}, firstPlotsAt: 0, firstPhases: null, firstTablesMs: 0, classroom: [], secondary: [] };
 
 /** Adds the time since `t0` to stage `name`; returns now (the next stage's start). */
 export const lap = (name, t0) => {

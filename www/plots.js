@@ -143,8 +143,12 @@ function plot(spec) {
   }
 }
 
-/** Draws the four plots of a render's results (with the pins). */
-export function drawPlots(r) {
+/** Draws the time plots of a render's results (with the pins): the set-point and load
+ *  responses and the control signal; `later`: the control signal's spec is built (from the
+ *  state now) but kept as r.laterSpec, for drawLater() in the task after the frame. The Nyquist
+ *  plot is drawNyquist's (app.js draws both in the task after the frame that shows the
+ *  responses, or at once for the first plots). */
+export function drawPlots(r, later = false) {
   P.ensurePins();
   const pins = P.pinned();
   const { state } = store;
@@ -158,7 +162,7 @@ export function drawPlots(r) {
   const cur = pins.length ? ' (current design)' : '';
   if (r.sim) runs.push({ sim: r.sim, color: C_CUR, label: (S.isPerturbed(state.pert) ? 'y true plant' : 'y') + cur, faint: false });
   const divLines = r.sim && r.sim.diverged && Number.isFinite(r.sim.diverged_at) ? [{ x: r.sim.diverged_at, label: 'diverged', color: '#D55E00' }] : [];
-  for (const id of ['plot-servo', 'plot-load', 'plot-u', 'plot-nyquist']) sizeCanvas($(id));
+  for (const id of ['plot-servo', 'plot-load', 'plot-u']) sizeCanvas($(id));
 
   const t0 = performance.now();
   const servo = [];
@@ -204,8 +208,33 @@ export function drawPlots(r) {
   const tEnd = r.sim && r.sim.t.length ? r.sim.t[r.sim.t.length - 1] : sc.t_end;
   for (const l of limitLines(state)) u.push({ label: l.label, x: [0, tEnd], y: [l.y, l.y], color: '#D55E00', dash: 'dot', width: 1.5 });
   lap('plots: series', t2);
-  plot({ canvas: 'plot-u', kind: 'time', dpr: k, title: 'Control signal', xlabel: 'time', ylabel: 'u', series: u, vlines: divLines });
+  const uSpec = { canvas: 'plot-u', kind: 'time', dpr: k, title: 'Control signal', xlabel: 'time', ylabel: 'u', series: u, vlines: divLines };
+  if (later) r.laterSpec = uSpec;
+  else plot(uSpec);
+}
 
+/** Draws the control signal plot drawPlots(r, true) left for later. */
+export function drawLater(r) {
+  if (r.laterSpec) plot(r.laterSpec);
+}
+
+/** What drawNyquist reads of the page's state, as it is now (app.js keeps it with a result
+ *  whose Nyquist plot is drawn later, as `r.view`). */
+export function nyquistView() {
+  const { state } = store;
+  return { plant: structuredClone(state.plant), pert: { ...state.pert }, pins: P.pinned() };
+}
+
+/** Draws the Nyquist plot of a render's results (with the pins' curves and the perturbation
+ *  envelope, whose worst Ms it leaves in r.envelope) and shows or hides its model-loop note. */
+export function drawNyquist(r) {
+  const t0 = performance.now();
+  // (the plant, perturbation and pins the result was computed for: the state may have moved on
+  // when this runs after the frame, e.g. during a drag of a plant or perturbation slider)
+  const view = r.view || nyquistView();
+  const pins = view.pins;
+  const state = view;
+  sizeCanvas($('plot-nyquist'));
   const ny = [];
   pins.forEach((p) => { if (p.L) ny.push({ label: p.label, x: p.L.re, y: p.L.im, color: p.color }); });
   let circle = null;
@@ -225,6 +254,7 @@ export function drawPlots(r) {
     r.L = L;
     if (r.an && Number.isFinite(r.an.ms) && r.an.ms > 0) circle = { cx: -1, cy: 0, r: 1 / r.an.ms, label: 'Ms circle, r = 1/Ms', color: '#D55E00' };
   }
-  plot({ canvas: 'plot-nyquist', kind: 'nyquist', dpr: k, title: 'Nyquist plot of L', xlabel: 'Re L', ylabel: 'Im L', series: ny, circle, points: [{ x: -1, y: 0, label: '−1' }] });
+  plot({ canvas: 'plot-nyquist', kind: 'nyquist', dpr: dpr(), title: 'Nyquist plot of L', xlabel: 'Re L', ylabel: 'Im L', series: ny, circle, points: [{ x: -1, y: 0, label: '−1' }] });
   setHidden($('nyquist-note'), !(r.ctl && r.ctl.model_loop));
+  lap('nyquist', t0);
 }

@@ -114,6 +114,78 @@ test('a quick drag of λ: results come in input order, superseded ones are dropp
   await page.close();
 });
 
+test('a quick drag of λ: the Nyquist plot and the metrics table, drawn after each result\'s frame, follow the readouts in order and end at the final λ\'s', async () => {
+  const { page, log } = await H.open(browser.ctx, U.encodeHash(pk(1.0)));
+  await frames(page);
+  const lams = Array.from({ length: 24 }, (_, i) => Number((1.6 - 0.04 * i).toFixed(4)));
+  // Every Ms the readout, the Nyquist plot's text equivalent and the metrics table's current row
+  // show from the first input on (as the page formats it), and an input in every frame.
+  const seen = await page.evaluate((ls) => new Promise((res) => {
+    const fmt = window.__pidlab.fmt;
+    const ro = document.getElementById('ro-ms');
+    const ny = document.getElementById('plot-nyquist');
+    const body = document.getElementById('metrics').tBodies[0];
+    const out = { ro: [], ny: [], table: [], nyBeforeRo: 0 };
+    const push = (a, v) => { if (v && a[a.length - 1] !== v) a.push(v); };
+    const nyMs = () => { const m = /; Ms ([^,;]+)/.exec(ny.getAttribute('aria-label') || ''); return m ? m[1] : ''; };
+    const tableMs = () => { const r = body.rows[body.rows.length - 1]; return r ? r.cells[r.cells.length - 1].textContent : ''; };
+    const mo = new MutationObserver(() => {
+      push(out.ro, ro.getAttribute('data-value') ? fmt(Number(ro.getAttribute('data-value'))) : '');
+      const n = nyMs();
+      // (the Nyquist plot never shows a design before the readouts do)
+      if (n && !out.ro.includes(n)) out.nyBeforeRo++;
+      push(out.ny, n);
+      push(out.table, tableMs());
+    });
+    mo.observe(document.getElementById('live'), { attributes: true, subtree: true, childList: true, characterData: true });
+    mo.observe(ny, { attributes: true, attributeFilter: ['aria-label'] });
+    const x = document.getElementById('mp-lambda');
+    let i = 0;
+    const next = () => requestAnimationFrame(() => {
+      if (i < ls.length) {
+        x.value = String(ls[i++]);
+        x.dispatchEvent(new Event('input', { bubbles: true }));
+        next();
+      } else {
+        window.__pidlab.settled().then(() => { mo.takeRecords(); mo.disconnect(); out.final = { ro: fmt(Number(ro.getAttribute('data-value'))), ny: nyMs(), table: tableMs() }; res(out); });
+      }
+    });
+    next();
+  }), lams);
+  const inputs = await page.evaluate((ls) => {
+    const x = document.getElementById('mp-lambda');
+    return ls.map((l) => { x.value = String(l); return Number(x.value); });
+  }, lams);
+  // Ms of every input, directly, as the page formats it
+  const ms = await page.evaluate((ls) => {
+    const w = window.__pidlab.wasm;
+    const st = window.__pidlab.state();
+    return ls.map((l) => {
+      const t = w.tune({ method: 'praveen_kumar', plant: st.plant, params: { lambda: l } });
+      return window.__pidlab.fmt(w.analyze({ plant: st.plant, controller: { cr: t.controller.cr, cy: t.controller.cy } }).ms);
+    });
+  }, inputs);
+  for (const [what, list] of [['readout', seen.ro], ['Nyquist plot', seen.ny], ['metrics table', seen.table]]) {
+    // (the first is the design before the drag, λ = 1; then each shown Ms is matched to the
+    // first input at or after the previous match with that text: the page's formatted Ms of
+    // neighbouring λ could coincide)
+    let at = 0;
+    for (const v of list.slice(1)) {
+      const k = ms.indexOf(v, at);
+      assert.ok(k >= 0, `every Ms the ${what} shows is the Ms of one of the inputs, in input order: ${list.join(' ')} (inputs: ${ms.join(' ')})`);
+      at = k;
+    }
+  }
+  assert.ok(seen.ny.length >= 2, 'the Nyquist plot changed during the drag or after it: ' + seen.ny.join(' '));
+  assert.equal(seen.nyBeforeRo, 0, 'the Nyquist plot never shows a design the readouts have not shown');
+  assert.equal(seen.final.ro, ms[ms.length - 1], 'the final readout is the final λ\'s');
+  assert.equal(seen.final.ny, ms[ms.length - 1], 'so is the Nyquist plot\'s Ms');
+  assert.equal(seen.final.table, ms[ms.length - 1], 'and the metrics table\'s');
+  console.log(`  ${inputs.length} inputs in consecutive frames: readout ${seen.ro.length}, Nyquist plot ${seen.ny.length}, metrics table ${seen.table.length} distinct Ms shown`);
+  assert.deepEqual(log.errors, []);
+  await page.close();
+});
+
 test('Algorithm III: a newer ζ cancels the running tune; the final readouts are the last ζ\'s', async () => {
   const { page, log } = await H.open(browser.ctx, U.encodeHash(alg3(1.79)));
   await frames(page);
