@@ -68,10 +68,10 @@ fn first_order_step_response_crossings_are_the_closed_forms() {
     for n in [19, 57] {
         let (m, res) = servo_at(&plant, &c, &sc, n);
         // Tolerance: the simulator's y is exact to round-off here (a first-order lag; the
-        // interpolation error of degree-5 pieces of length ≤ 1.234/19 is (h/3)⁶/6! < 1e-13),
+        // interpolation error of degree-7 pieces of length ≤ 1.234/19 is (h/3)⁸/8! < 1e-17),
         // ~1e-13 after ~1000 pieces, over the slope at the crossing (y′ = 0.02/3 at the
-        // band's edge): 1.5e-11 of time. Measured: rise 5.7e-13 / 1.5e-12, settling 3.9e-12
-        // / 9.5e-12 at θ/19 / θ/57; 3e-11.
+        // band's edge): 1.5e-11 of time. Measured (degree 5): rise 5.7e-13 / 1.5e-12, settling
+        // 3.9e-12 / 9.5e-12 at θ/19 / θ/57; 3e-11.
         assert!(
             (m.rise_time.unwrap() - rise).abs() < 3e-11,
             "n = {n}: {m:?}"
