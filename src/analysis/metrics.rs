@@ -31,7 +31,7 @@
 //! - `y_final`, `u_final`: the loop's steady state for the window's r and d (solved
 //!   exactly from the loop equations; the last sample when the loop has no steady state).
 
-use crate::sim::{monomial_coeffs, Response, Scenario, Trajectory, DEG, NODES, SIGMA};
+use crate::sim::{lagrange, monomial_coeffs, Response, Scenario, Trajectory, DEG, NODES, SIGMA};
 
 /// Metrics of one window (see the module docs for definitions).
 #[derive(Debug, Clone, PartialEq)]
@@ -540,14 +540,13 @@ const CUTS: usize = 2 + DEG + ZERO_DEPTH as usize * DEG.div_ceil(2);
 
 /// The piece polynomials' forms the shape metrics need, built once per window: the Bernstein
 /// coefficients on `[0, 1]` of the derivative `dy/dσ` of the interpolant through the node
-/// values (a fixed linear map of the nodes) and the barycentric weights of the nodes.
+/// values (a fixed linear map of the nodes); values come from the simulator's barycentric
+/// interpolation ([`lagrange`]).
 struct PieceForms {
     /// `b′_i = Σ_j dy[i][j]·y_j`, `i = 0..DEG` (degree `DEG − 1`).
     dy: [[f64; NODES]; DEG],
     /// The round-off of `b′_i` relative to `max_j |y_j|`: `8ε·max_i Σ_j |dy[i][j]|`.
     tol: f64,
-    /// Barycentric weights `(−1)^j·C(DEG, j)` of the equispaced nodes.
-    bary: [f64; NODES],
 }
 
 impl PieceForms {
@@ -579,14 +578,9 @@ impl PieceForms {
             .iter()
             .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
             .fold(0.0, f64::max);
-        let mut bary = [0.0; NODES];
-        for (j, w) in bary.iter_mut().enumerate() {
-            *w = if j % 2 == 0 { 1.0 } else { -1.0 } * binom(DEG, j);
-        }
         PieceForms {
             dy,
             tol: 8.0 * f64::EPSILON * rows,
-            bary,
         }
     }
 
@@ -600,17 +594,7 @@ impl PieceForms {
         if s == 1.0 {
             return yv[DEG];
         }
-        let (mut num, mut den) = (0.0, 0.0);
-        for ((&v, &w), &sj) in yv.iter().zip(&self.bary).zip(&SIGMA) {
-            let d = s - sj;
-            if d == 0.0 {
-                return v;
-            }
-            let q = w / d;
-            num += q * v;
-            den += q;
-        }
-        num / den
+        lagrange(yv, s)
     }
 }
 
