@@ -18,6 +18,7 @@ import { loadavg } from 'node:os';
 import * as S from '../www/state.js';
 import * as U from '../www/url.js';
 import { launch } from '../tests/browser/harness.mjs';
+import { profileTree, inclusiveByFunction } from './cpu-profile.mjs';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const argv = process.argv.slice(2);
@@ -107,30 +108,15 @@ const winF = (ts) => fast.some((i) => ts >= ins[i] && ts < outs[i]);
 for (const e of onMain) if (winF(e.ts)) sumsF[e.name] = (sumsF[e.name] || 0) + (e.tdur ?? e.dur) / 1000 / Math.max(1, fast.length);
 console.log('  other frames, per frame: ' + Object.entries(sumsF).sort((x, y) => y[1] - x[1]).slice(0, 12).map(([k, v]) => k + ' ' + v.toFixed(2)).join(', '));
 if (detail) {
-  const byId = new Map(profile.nodes.map((nd) => [nd.id, nd]));
-  const parent = new Map();
-  for (const nd of profile.nodes) for (const ch of nd.children || []) parent.set(ch, nd.id);
-  const incl = new Map();
-  let t = profile.startTime;
-  for (let k = 0; k < profile.samples.length; k++) {
-    t += profile.timeDeltas[k];
-    if (!win(t)) continue;
-    const us = profile.timeDeltas[k + 1] || 0;
-    const seen = new Set();
-    for (let x = profile.samples[k]; x !== undefined; x = parent.get(x)) {
-      const fr = byId.get(x).callFrame;
-      if (!fr.functionName || seen.has(fr.functionName)) continue;
-      seen.add(fr.functionName);
-      incl.set(fr.functionName, (incl.get(fr.functionName) || 0) + us);
-    }
-  }
+  const { byId, parent } = profileTree(profile);
+  const incl = inclusiveByFunction(profile, win);
   console.log('  JS functions in slow frames, per frame (inclusive, wall samples, ms): ' + [...incl].sort((x, y) => y[1] - x[1]).slice(0, 30).map(([k, v]) => k + ' ' + (v / 1000 / Math.max(1, slow.length)).toFixed(2)).join(', '));
   // the tasks that apply a result (a worker's message rendering the design: > 2 ms), self time by function
   const applied = onMain.filter((e) => e.name === 'HandlePostMessage' && e.dur > 2000);
   const inApplied = (ts) => applied.some((e) => ts >= e.ts && ts < e.ts + e.dur);
   const self = new Map();
   const inc2 = new Map();
-  t = profile.startTime;
+  let t = profile.startTime;
   for (let k = 0; k < profile.samples.length; k++) {
     t += profile.timeDeltas[k];
     if (!inApplied(t)) continue;

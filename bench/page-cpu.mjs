@@ -28,6 +28,7 @@ import { loadavg } from 'node:os';
 import * as S from '../www/state.js';
 import * as U from '../www/url.js';
 import { launch } from '../tests/browser/harness.mjs';
+import { inclusiveByFunction } from './cpu-profile.mjs';
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const argv = process.argv.slice(2);
 const detail = argv.includes('--detail');
@@ -133,23 +134,7 @@ if (detail) {
   const sums = {};
   for (const e of onMain) if (win(e.ts)) sums[e.name] = (sums[e.name] || 0) + (e.tdur ?? e.dur) / 1000 / N;
   console.log('  trace, per step up to the painted probe (thread time, ms; nested events counted in each): ' + Object.entries(sums).sort((x, y) => y[1] - x[1]).slice(0, 14).map(([k, v]) => k + ' ' + v.toFixed(1)).join(', '));
-  const byId = new Map(profile.nodes.map((n) => [n.id, n]));
-  const parent = new Map();
-  for (const n of profile.nodes) for (const c of n.children || []) parent.set(c, n.id);
-  const incl = new Map();
-  let t = profile.startTime;
-  for (let k = 0; k < profile.samples.length; k++) {
-    t += profile.timeDeltas[k];
-    if (!win(t)) continue;
-    const us = profile.timeDeltas[k + 1] || 0;
-    const seen = new Set();
-    for (let x = profile.samples[k]; x !== undefined; x = parent.get(x)) {
-      const f = byId.get(x).callFrame;
-      if (!f.functionName || seen.has(f.functionName)) continue;
-      seen.add(f.functionName);
-      incl.set(f.functionName, (incl.get(f.functionName) || 0) + us);
-    }
-  }
+  const incl = inclusiveByFunction(profile, win);
   console.log('  JS functions, per step up to the painted probe (inclusive, wall-clock samples, ms): ' + [...incl].sort((x, y) => y[1] - x[1]).slice(0, 30).map(([k, v]) => k + ' ' + (v / 1000 / N).toFixed(1)).join(', '));
 }
 await b.close();
