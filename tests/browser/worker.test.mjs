@@ -15,6 +15,24 @@ const browser = browserSuite();
 // Issue 15's plant on which Arvanitis Algorithm III took 2.1 s per tune on the page's thread.
 const SLOW = { family: 'ipdt_ir', k: 0.478, tau: 0.536, tau_z: 2.8, theta: 0.521 };
 const alg3 = (zeta) => ({ ...S.defaultState(), plant: { ...SLOW }, method: 'arvanitis_alg3', params: { zeta }, target: null });
+
+/** The λ each slider position gives (the slider rounds a value to its positions). */
+const sliderLambdas = (page, lams) => page.evaluate((ls) => {
+  const x = document.getElementById('mp-lambda');
+  return ls.map((l) => { x.value = String(l); return Number(x.value); });
+}, lams);
+
+/** Ms of `praveen_kumar` at each λ on the page's plant, computed directly with the module
+ *  (as text: `String(ms)`, or as the page formats it when `formatted`). */
+const msOfLambdas = (page, lams, formatted) => page.evaluate(([ls, f]) => {
+  const w = window.__pidlab.wasm;
+  const st = window.__pidlab.state();
+  return ls.map((l) => {
+    const t = w.tune({ method: 'praveen_kumar', plant: st.plant, params: { lambda: l } });
+    const ms = w.analyze({ plant: st.plant, controller: { cr: t.controller.cr, cy: t.controller.cy } }).ms;
+    return f ? window.__pidlab.fmt(ms) : String(ms);
+  });
+}, [lams, formatted]);
 const pk = (lambda) => ({ ...S.defaultState(), method: 'praveen_kumar', params: { lambda, epsilon: 0.2 }, target: null });
 
 /** Ms of a direct tune + analyze on the page's own (main-thread) instance, and the readout. */
@@ -87,20 +105,9 @@ test('a quick drag of λ: results come in input order, superseded ones are dropp
     });
     next();
   }), lams);
-  const inputs = await page.evaluate((ls) => {
-    // the λ each slider position gives (the slider rounds a value to its positions)
-    const x = document.getElementById('mp-lambda');
-    return ls.map((l) => { x.value = String(l); return Number(x.value); });
-  }, lams);
+  const inputs = await sliderLambdas(page, lams);
   // Ms of every input, directly.
-  const ms = await page.evaluate((ls) => {
-    const w = window.__pidlab.wasm;
-    const st = window.__pidlab.state();
-    return ls.map((l) => {
-      const t = w.tune({ method: 'praveen_kumar', plant: st.plant, params: { lambda: l } });
-      return String(w.analyze({ plant: st.plant, controller: { cr: t.controller.cr, cy: t.controller.cy } }).ms);
-    });
-  }, inputs);
+  const ms = await msOfLambdas(page, inputs, false);
   // (ε = 0.2 is the rule's default: the page leaves it out of params, as done here)
   const idx = shown.filter((v) => v !== '').map((v) => ms.indexOf(v));
   assert.ok(idx.length >= 1, 'the readout changed');
@@ -152,19 +159,9 @@ test('a quick drag of λ: the Nyquist plot and the metrics table, drawn after ea
     });
     next();
   }), lams);
-  const inputs = await page.evaluate((ls) => {
-    const x = document.getElementById('mp-lambda');
-    return ls.map((l) => { x.value = String(l); return Number(x.value); });
-  }, lams);
+  const inputs = await sliderLambdas(page, lams);
   // Ms of every input, directly, as the page formats it
-  const ms = await page.evaluate((ls) => {
-    const w = window.__pidlab.wasm;
-    const st = window.__pidlab.state();
-    return ls.map((l) => {
-      const t = w.tune({ method: 'praveen_kumar', plant: st.plant, params: { lambda: l } });
-      return window.__pidlab.fmt(w.analyze({ plant: st.plant, controller: { cr: t.controller.cr, cy: t.controller.cy } }).ms);
-    });
-  }, inputs);
+  const ms = await msOfLambdas(page, inputs, true);
   for (const [what, list] of [['readout', seen.ro], ['Nyquist plot', seen.ny], ['metrics table', seen.table]]) {
     // (the first is the design before the drag, λ = 1; then each shown Ms is matched to the
     // first input at or after the previous match with that text: the page's formatted Ms of
