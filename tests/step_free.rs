@@ -120,7 +120,7 @@ fn check(
 fn benchmark_loop_at_theta_over_7_matches_a_fine_step() {
     // The benchmark's loop and scenario (dt = 0.01 < h = θ/7 = 0.0143; 3001 samples, 4 of 5
     // off node). Measured (θ/200 reference): y 7.2e-13, u 1.8e-11, metrics ≤ 8.9e-12
-    // relative. Tolerance 1e-10 (the project's accuracy) on y, u and every metric: a sample
+    // relative (TV 3.9e-11). Tolerance 1e-10 (the project's accuracy) on y, u and every metric: a sample
     // read at the wrong σ (e.g. the piece's start value) is off by |u′|·h ≈ 1e-2 here.
     let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
     check(
