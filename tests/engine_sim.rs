@@ -256,9 +256,10 @@ fn convergence_order_is_eight() {
 #[wasm_bindgen_test(unsupported = test)]
 fn a_step_longer_than_dt_samples_inside_its_pieces_exactly() {
     // `simulate_at_step` (the step study's entry, examples/step_error.rs): with n = the rule's
-    // N it is `simulate` bit for bit; with h = θ/10 = 0.07 = 7·dt on the integrator under P
-    // control, the samples at k·dt (inside the pieces, from the piece polynomials) still match
-    // the method of steps. Tolerance 1e-12: the reference itself sums an alternating series
+    // N it is `simulate` bit for bit (here θ/3 = 0.2333 = 23.3·dt: ρ(A) = 0, no neutral term,
+    // so the delay bound `DELAY_PIECES` sets it; `dt` does not bound the step); with
+    // h = θ/10 = 0.07 = 7·dt on the integrator under P control, the samples at k·dt (inside
+    // the pieces, from the piece polynomials) still match the method of steps. Tolerance 1e-12: the reference itself sums an alternating series
     // whose terms reach e^{a·t} ≈ 5·10³ at t = 12 (a = 0.72), so its own round-off is ~5e-13;
     // the step study measured 7.7e-14 here.
     use pidlab::sim;
@@ -266,8 +267,8 @@ fn a_step_longer_than_dt_samples_inside_its_pieces_exactly() {
     let c = Pid::parallel(0.9, 0.0, 0.0).to_controller().unwrap();
     let sc = Scenario::steps(12.0, 0.01, 0.0, 1.0, 0.0, 0.0);
     let rule = sim::simulate(&plant, &c, &sc).unwrap();
-    assert!((rule.internal_step() - 0.01).abs() < 1e-15);
-    assert_eq!(sim::simulate_at_step(&plant, &c, &sc, 70).unwrap(), rule);
+    assert!((rule.internal_step() - 0.7 / 3.0).abs() < 1e-15);
+    assert_eq!(sim::simulate_at_step(&plant, &c, &sc, 3).unwrap(), rule);
     let coarse = sim::simulate_at_step(&plant, &c, &sc, 10).unwrap();
     assert!((coarse.internal_step() - 0.07).abs() < 1e-15);
     assert_eq!(coarse.t.len(), 1201);

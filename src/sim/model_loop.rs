@@ -12,7 +12,8 @@
 //! It is integrated like the one-delay loop of [`crate::sim`] (every piece: the delayed inputs
 //! interpolated at degree [`DEG`] (7) from their history, the state equation integrated exactly by an
 //! augmented matrix exponential), but on an explicit piece list: a uniform grid of step
-//! `h ≤ min(dt, 0.65/ρ(A), min τ_j)` (and, on a neutral loop, the bound of `internal_step`)
+//! `h ≤ min(0.65/ρ(A), min τ_j/3, t_end)` (and, on a neutral loop, the bound of `internal_step`;
+//! not `dt`: the samples `k·dt` are read on the piece polynomials)
 //! cut at every point `t_e + Σ k_j τ_j ≤ t_end` that an event `t_e` can reach through the
 //! delays. Every discontinuity of the response (of any order)
 //! therefore sits on a piece boundary, and the history a piece reads back (one delay earlier)
@@ -23,7 +24,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::model::ss::{balance, realize, realize_paths, Ss};
-use crate::sim::single::{neutral_bound, FAST_STEP};
+use crate::sim::single::{divisor_step, neutral_bound, DELAY_PIECES, FAST_STEP};
 use crate::sim::{
     interpolation_inverse, lagrange, piece_exponential, sample, Response, Scenario, Trajectory,
     DEG, NODES,
@@ -514,9 +515,11 @@ fn history(
 }
 
 /// Integrates the several-delay loop (see the module docs).
-/// The internal step: at most `dt`, `FAST_STEP/ρ(A)`, every nonzero delay and, on a neutral loop, the
-/// one-delay loop's neutral bound (`single::neutral_bound`) with `|E|` = ρ(|E|) over the
-/// delayed channels and `θ` the smallest delay.
+/// The internal step: at most `FAST_STEP/ρ(A)`, a third of every nonzero delay
+/// (`single::DELAY_PIECES`), `t_end` and, on a neutral
+/// loop, the one-delay loop's neutral bound (`single::neutral_bound`) with `|E|` = ρ(|E|) over
+/// the delayed channels and `θ` the smallest delay; not `dt` (the samples are read on the piece
+/// polynomials, as in the one-delay loop: `single::internal_step`).
 fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {
     let a = mm.a();
     let rho = if mm.n == 0 {
@@ -526,13 +529,13 @@ fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {
             .iter()
             .fold(0.0, |x: f64, z| x.max(z.norm()))
     };
-    let mut h = sc.dt;
+    let mut h = sc.t_end;
     if rho > 0.0 {
         h = h.min(FAST_STEP / rho);
     }
     for &d in &mm.delays {
         if d > 0.0 {
-            h = h.min(d);
+            h = h.min(d / DELAY_PIECES);
         }
     }
     if let Some(b) = neutral_bound(mm.min_delay(), mm.neutral_gain(), sc.t_end, MAX_PIECES) {
@@ -545,9 +548,11 @@ fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {
     // `praveen_kumar` at λ = 1.9, |E| = 0.82, with h = θ/18.46 diverged)
     let theta = mm.delays[0];
     if theta > 0.0 {
-        h = theta / (theta / h - 1e-9).ceil().max(1.0);
+        divisor_step(theta, h)
+    } else {
+        // no plant delay: pieces that tile [0, t_end] (as `single::internal_step`)
+        divisor_step(sc.t_end, h)
     }
-    h
 }
 
 /// Piece boundaries: the grid `k·h` (k = 0..=n_steps) merged with the breakpoints `brk` (a
@@ -609,8 +614,8 @@ fn fill_histories(
 
 /// Integrates the loop piece by piece (see the module docs): the continuous response and the
 /// time divergence was detected, if it was.
-fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
-    let h = internal_step(mm, sc);
+fn integrate(mm: &MultiModel, sc: &Scenario, h: Option<f64>) -> Result<(Trajectory, Option<f64>)> {
+    let h = h.unwrap_or_else(|| internal_step(mm, sc));
     let tol = 1e-9 * h;
     let events: Vec<f64> = [&sc.setpoint, &sc.disturbance]
         .iter()
@@ -730,11 +735,22 @@ fn integrate(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)
 
 /// Simulates a loop whose controller has a model loop (called by [`crate::sim::simulate`]).
 pub(crate) fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<Response> {
+    simulate_at(plant, c, sc, None)
+}
+
+/// [`simulate`] with the grid step `h` (`None`: the rule's, [`internal_step`]); `h` a divisor
+/// of the plant's dead time (`super::simulate_at_step`).
+pub(crate) fn simulate_at(
+    plant: &Plant,
+    c: &Controller,
+    sc: &Scenario,
+    h: Option<f64>,
+) -> Result<Response> {
     let mm = MultiModel::new(
         plant,
         c,
         sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
     )?;
-    let (traj, diverged_at) = integrate(&mm, sc)?;
+    let (traj, diverged_at) = integrate(&mm, sc, h)?;
     Ok(sample(sc, traj, diverged_at, &|r, d| mm.steady_state(r, d)))
 }

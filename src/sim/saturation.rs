@@ -12,7 +12,7 @@
 //!
 //! ## Method
 //! With θ > 0 the plant input `w` on a piece is known from the response one dead time
-//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ dt`, `h ≤ 0.65/ρ(A)` and, when
+//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ 0.65/ρ(A)`, `N ≥ 3`, `h ≤ t_end` and, when
 //! the unsaturated mode is neutral, the bound `h ≤ 0.8·θ·(1 − |e|)` of [`crate::sim`]'s "Near
 //! the neutral limit") and at every non-smooth instant — the set-point and load steps and every limit switch — and at
 //! all their copies `+ kθ`, so the delayed input on each piece is the restriction of one
@@ -70,13 +70,13 @@
 //! nonzero only for a biproper loop: a biproper plant under a controller with direct
 //! feed-through, or an ideal derivative on a plant of relative degree one) is solved,
 //! `v = (g·X + h_r r + e d)/(1 − e)`. `v` is continuous across a switch (at `v = L` both give
-//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.65/ρ` over the modes' matrices, and the
+//! `w = L + d`). The piece grid is `t_end/N ≤ 0.65/ρ` over the modes' matrices, and the
 //! `w` slot of the augmented state carries the constant `d`. With `1 − e ≤ 0`
 //! (`L(j∞) ≤ −1`) `v − e·sat(v) = …` is not monotone and has no unique solution: refused,
 //! naming `plant.delay`.
 
 use super::scenario::Scenario;
-use super::single::{neutral_bound, LoopModel, FAST_STEP};
+use super::single::{divisor_step, neutral_bound, LoopModel, DELAY_PIECES, FAST_STEP};
 use super::trajectory::{lagrange, start_interpolation_inverse, Trajectory, DEG, NODES};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
@@ -610,26 +610,27 @@ pub(crate) fn integrate(
     let conditional = m.cond.is_some();
     let n = m.order();
     let sz = n + NODES + 2;
-    // grid h = θ/N (θ = 0: any h), h ≤ dt, h ≤ FAST_STEP/ρ over every mode's matrix, the neutral bound
+    // grid h = θ/N (θ = 0: t_end/N), h ≤ FAST_STEP/ρ over every mode's matrix, N ≥ DELAY_PIECES,
+    // h ≤ t_end, the neutral bound; not `dt` (the samples are read on the piece polynomials, as
+    // in the one-delay loop: `single::internal_step`)
     let rho = m.a.iter().fold(0.0f64, |r, a| {
         a.complex_eigenvalues()
             .iter()
             .fold(r, |r, z| r.max(z.norm()))
     });
-    let mut hmax = sc.dt;
+    let mut hmax = sc.t_end;
     if rho > 0.0 {
         hmax = hmax.min(FAST_STEP / rho);
+    }
+    if theta > 0.0 {
+        hmax = hmax.min(theta / DELAY_PIECES);
     }
     // the unsaturated mode is the linear loop, neutral when 0 < |e| < 1 (e = −L(j∞)): the
     // one-delay loop's bound (`single::neutral_bound`; at a limit u is constant, no neutral term)
     if let Some(b) = neutral_bound(theta, m.e.abs(), sc.t_end, MAX_PIECES) {
         hmax = hmax.min(b);
     }
-    let h = if theta > 0.0 {
-        theta / (theta / hmax - 1e-9).ceil().max(1.0)
-    } else {
-        hmax
-    };
+    let h = divisor_step(if theta > 0.0 { theta } else { sc.t_end }, hmax);
     let tol = 1e-9 * h;
     let t_end = sc.t_end;
     if t_end / h > MAX_PIECES as f64 {

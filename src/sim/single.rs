@@ -237,6 +237,10 @@ fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
 /// the boiler under Praveen Kumar's rule at the bound's own step, λ = 1.85…1.97 (|E| =
 /// 0.72…0.991): 4e-12 to 8.2e-11 (λ = 1.91, θ/8), and at `N·(1 − |E|)` ≈ 0.9–1.1 below it
 /// 1.2e-10 to 1.5e-9 (λ = 1.93, θ/10 and θ/8). Degree 5 needed 0.3 (`N·(1 − |E|) ≥ 3.3`).
+/// Those errors are at samples every 0.01; sampled every 0.001 (branch `step5`: the step no
+/// longer follows `dt`, so a sample may fall anywhere in a piece) the same steps give u
+/// 8.5e-11 to 3.4e-10 off (λ = 1.9, θ/7: 2.5e-10); the factor 0.7 gives 4e-11 to 2.1e-10, 0.6
+/// 1.4e-11 to 2.8e-11 (`step_error laws`). Kept at 0.8 (the tests' 1e-9); the lead's choice.
 const NEUTRAL_STEP: f64 = 0.8;
 
 /// The fast-mode bound's factor: `h ≤ FAST_STEP/ρ(A)` (`ρ` the spectral radius of the loop's
@@ -245,9 +249,23 @@ const NEUTRAL_STEP: f64 = 0.8;
 /// sets: measured on the boiler under Luyben's PID with derivative filters chosen so that θ/2,
 /// θ/4, θ/8 give h·ρ exactly, against θ/1920 (`step_error laws`): 3.1–3.8e-11 at h·ρ = 0.6,
 /// 5.8–6.8e-11 at 0.65, 1.0–1.2e-10 at 0.7, 1.7–2.0e-10 at 0.75. Hence 0.65 (degree 5 needed
-/// 0.25: 1.2e-11 at 0.24, 4.2e-10 at 0.36, about 1e-8 at the former 0.5). Shared by every loop
+/// 0.25: 1.2e-11 at 0.24, 4.2e-10 at 0.36, about 1e-8 at the former 0.5). Sampled every 0.001
+/// (anywhere in a piece) u is 1.5–1.8e-10 off at h·ρ = 0.6, 2.7–3.3e-10 at 0.65 (`step_error
+/// laws` on branch `step5`; `(h·ρ)⁸` puts 1e-10 at ≈ 0.55). Shared by every loop
 /// with interpolated delayed inputs.
 pub(crate) const FAST_STEP: f64 = 0.65;
+
+/// The delay bound: `h ≤ θ/DELAY_PIECES` (at least three pieces per dead time). `ρ(A)` is the
+/// loop opened at the delayed input: it does not see the closed loop's oscillation, which on
+/// a loop with little phase lead (P or PI on a lag or an integrator) lies at `ω·θ` up to ~π/2
+/// near the stability limit and is as smooth as the delayed input it feeds back. Measured
+/// (`cargo run --release --example step_error loose`, against θ/240; errors of u relative to
+/// the largest |u|): an integrator `e^{−s}/s` under P with `K·θ = 1.45` (gain margin 1.08),
+/// θ/1 6.0e-8, θ/2 2.7e-10, θ/3 1.1e-11, θ/4 1.1e-12; `e^{−s}/(10s + 1)` under PI (14, 4),
+/// θ/1 7.6e-8, θ/2 3.4e-10, θ/3 1.4e-11 (its floor 8e-13 from θ/5). Where this bound binds
+/// the error falls as `(ωh)⁸` as for [`FAST_STEP`]. Loops with derivative action have a
+/// faster mode (the filter's pole) or a neutral term, whose bounds are tighter.
+pub(crate) const DELAY_PIECES: f64 = 3.0;
 
 /// The neutral bound on the internal step (module docs, "Near the neutral limit"), shared by
 /// every loop with dead time (one delay, several delays, actuator limits): on a neutral loop
@@ -258,25 +276,34 @@ pub(crate) fn neutral_bound(theta: f64, ae: f64, t_end: f64, max_pieces: usize) 
         .then(|| (NEUTRAL_STEP * theta * (1.0 - ae)).max(4.0 * t_end / max_pieces as f64))
 }
 
-/// The internal step h = θ/N (so the delay maps steps onto steps exactly), with h ≤ dt,
-/// h ≤ 0.65/ρ(A) ([`FAST_STEP`]) and, on a neutral loop (0 < |E| < 1), h ≤ 0.8·θ·(1 − |E|)
-/// ([`NEUTRAL_STEP`]; but never more
-/// pieces than a quarter of [`MAX_PIECES`] for that last bound alone).
+/// The internal step h = θ/N (so the delay maps steps onto steps exactly), with
+/// h ≤ 0.65/ρ(A) ([`FAST_STEP`]), N ≥ 3 ([`DELAY_PIECES`]), h ≤ t_end and, on a neutral loop (0 < |E| < 1),
+/// h ≤ 0.8·θ·(1 − |E|) ([`NEUTRAL_STEP`]; but never more pieces than a quarter of
+/// [`MAX_PIECES`] for that last bound alone). Not bounded by `dt`: the samples `k·dt` are read
+/// on the piece polynomials, and the metrics are located on them (module docs of
+/// [`crate::sim`], "The internal step"). Without dead time the loop is an ODE propagated
+/// exactly from node to node; its pieces are `t_end/N`, the longest within `0.65/ρ(A)` (the
+/// samples between nodes are then interpolated to 1e-10 as a delayed input would be; `ρ = 0`:
+/// one piece over `[0, t_end]`, cut at the events).
 fn internal_step(m: &LoopModel, sc: &Scenario) -> f64 {
-    let mut hmax = sc.dt;
+    let mut hmax = sc.t_end;
     let rho = m.rho();
     if rho > 0.0 {
         hmax = hmax.min(FAST_STEP / rho);
     }
+    if m.delay > 0.0 {
+        hmax = hmax.min(m.delay / DELAY_PIECES);
+    }
     if let Some(b) = neutral_bound(m.delay, m.e.abs(), sc.t_end, MAX_PIECES) {
         hmax = hmax.min(b);
     }
-    if m.delay > 0.0 {
-        let n = (m.delay / hmax - 1e-9).ceil().max(1.0);
-        m.delay / n
-    } else {
-        sc.dt / (sc.dt / hmax - 1e-9).ceil().max(1.0)
-    }
+    divisor_step(if m.delay > 0.0 { m.delay } else { sc.t_end }, hmax)
+}
+
+/// `span/N` with the smallest `N ≥ 1` that gives at most `hmax` (a relative 1e-9 of slack, so
+/// that `hmax` itself a divisor is not rounded to the next one).
+pub(crate) fn divisor_step(span: f64, hmax: f64) -> f64 {
+    span / (span / hmax - 1e-9).ceil().max(1.0)
 }
 
 /// The pieces of one step: their offsets within the step (0 and the events' offsets, so every
@@ -313,7 +340,7 @@ pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Opt
     integrate_at(m, sc, internal_step(m, sc))
 }
 
-/// [`integrate`] with the internal step `h` (a divisor of the dead time, or of `dt` without
+/// [`integrate`] with the internal step `h` (a divisor of the dead time, or of `t_end` without
 /// one: the caller's choice, see [`super::simulate_at_step`]).
 pub(crate) fn integrate_at(
     m: &LoopModel,
