@@ -17,7 +17,7 @@ mod common;
 use common::{boiler, luyben_pid, rel_diff};
 
 /// The benchmark's design: the boiler under Praveen Kumar's rule, λ = 1.9, ε = 0.2
-/// (|L(j∞)| = 0.82: a neutral loop, whose step the neutral bound sets to θ/7).
+/// (|L(j∞)| = 0.82: a neutral loop, whose step the neutral bound sets to θ/10).
 fn benchmark_design() -> Controller {
     let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
     rules::tune("praveen_kumar", &boiler(), &p)
@@ -117,19 +117,19 @@ fn check(
 }
 
 #[wasm_bindgen_test(unsupported = test)]
-fn benchmark_loop_at_theta_over_7_matches_a_fine_step() {
-    // The benchmark's loop and scenario (dt = 0.01 < h = θ/7 = 0.0143; 3001 samples, 4 of 5
-    // off node). Measured (θ/200 reference): y 7.2e-13, u 1.8e-11, metrics ≤ 8.9e-12
-    // relative (TV 3.9e-11). Tolerance 1e-10 (the project's accuracy) on y, u and every metric: a sample
-    // read at the wrong σ (e.g. the piece's start value) is off by |u′|·h ≈ 1e-2 here.
+fn benchmark_loop_at_its_rule_step_matches_a_fine_step() {
+    // The benchmark's loop and scenario: the neutral bound sets θ/10 (factor 0.6; dt = 0.01 is
+    // then the step itself, so its 3001 samples are nodes). Measured (θ/200 reference): y 6.5e-13,
+    // u 1.0e-12.
+    // Tolerance 1e-10 (the project's accuracy) on y, u and every metric.
     let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
     check(
         "boiler, λ = 1.9, dt = 0.01",
         &boiler(),
         &benchmark_design(),
         &sc,
-        7,
-        0.7,
+        10,
+        0.0,
         1e-10,
         1e-10,
         1e-10,
@@ -138,30 +138,30 @@ fn benchmark_loop_at_theta_over_7_matches_a_fine_step() {
 
 #[wasm_bindgen_test(unsupported = test)]
 fn benchmark_loop_sampled_densely_inside_its_pieces() {
-    // The same loop sampled every 0.0037 (3.9 samples per piece, at σ spread over [0, 1)):
-    // the error of u anywhere inside the pieces, not only at the benchmark's sample times.
-    // Measured: y 2.0e-12, u 3.0e-10, the metrics as above. u's tolerance is 1e-9, the step
-    // rule's (tests/step_bounds.rs, tests/engine_sim.rs): the neutral bound's factor 0.8 was
-    // fitted on samples at 0.01; anywhere in a piece u is 1.6–3.4e-10 off at that factor across
-    // the λ drag (`cargo run --release --example step_error laws`, dt = 0.001; 0.6 would keep
-    // ≤ 2.8e-11, at θ/10 here). y and every metric at 1e-10.
+    // The same loop sampled every 0.0037 (2.7 samples per piece, at σ spread over [0, 1)):
+    // the error of u anywhere inside the pieces, not only at the nodes. Measured: y 6.5e-13, u 2.0e-11
+    // (3.0e-10 at θ/7, the factor 0.8).
+    // Tolerance 1e-10 on y, u and every metric: the neutral factor 0.6 was chosen for it
+    // (`cargo run --release --example step_error laws`, samples every 0.001; 0.8, fitted on
+    // node samples, left u 1.6–3.4e-10 off inside the pieces). A sample read at the wrong σ
+    // (e.g. the piece's start value) is off by |u′|·h ≈ 1e-2 here.
     let sc = Scenario::steps(30.0, 0.0037, 0.0, 1.0, 15.0, 1.0);
     check(
         "boiler, λ = 1.9, dt = 0.0037",
         &boiler(),
         &benchmark_design(),
         &sc,
-        7,
+        10,
         0.9,
         1e-10,
-        1e-9,
+        1e-10,
         1e-10,
     );
 }
 
 #[wasm_bindgen_test(unsupported = test)]
 fn slow_loop_with_many_samples_per_piece_matches_a_fine_step() {
-    // fopdt_ir (θ = 1.37) under PI, dt = 0.01 ≪ θ/7: no fast mode (ρ(A) = 0.2), no neutral
+    // fopdt_ir (θ = 1.37) under PI, dt = 0.01 ≪ θ/10: no fast mode (ρ(A) = 0.2), no neutral
     // term, so the delay bound sets θ/3 = 0.457 (46 samples per piece). Measured: y 1.9e-13,
     // u 3.4e-13, metrics ≤ 1.6e-12. Tolerance 1e-10 throughout.
     let plant = Family::FopdtIr {
@@ -188,10 +188,10 @@ fn slow_loop_with_many_samples_per_piece_matches_a_fine_step() {
 
 #[wasm_bindgen_test(unsupported = test)]
 fn dt_larger_than_the_delay_changes_nothing() {
-    // dt = 0.2 > θ = 0.1: `h ≤ dt` never bound here, so the rule's step is what it was
-    // (θ/14 = 0.0071, the derivative filter's pole: h·ρ = 0.62); the samples land on
-    // nodes or between them as before. Measured against θ/200: y 2.7e-12, u 1.2e-13, metrics
-    // ≤ 1.4e-11. Tolerance 1e-10 throughout.
+    // dt = 0.2 > θ = 0.1: `h ≤ dt` never bound here, so the rule's step is set by the
+    // derivative filter's pole (θ/16 = 0.00625: h·ρ ≤ 0.55); the samples land on
+    // nodes. Measured against θ/200: y 9.4e-13, u 5.8e-14 (θ/14, factor 0.65: y 2.7e-12,
+    // u 1.2e-13). Tolerance 1e-10 throughout.
     let c = luyben_pid().filter_n(100.0).to_controller().unwrap();
     let sc = Scenario::steps(30.0, 0.2, 0.0, 1.0, 15.0, -0.5);
     check(
@@ -199,7 +199,7 @@ fn dt_larger_than_the_delay_changes_nothing() {
         &boiler(),
         &c,
         &sc,
-        14,
+        16,
         0.0,
         1e-10,
         1e-10,

@@ -18,9 +18,9 @@
 //! on `v(t − θ)` (a neutral equation, `|E| = |L(j∞)|`).
 //!
 //! The internal step is `h = θ/N` (so the delay maps steps onto steps exactly) with
-//! `h ≤ 0.65/ρ(A)` (the fast mode: `h·ρ ≤ 0.65`; degree 5 needed 0.25), `N ≥ 3` (the closed
+//! `h ≤ 0.55/ρ(A)` (the fast mode: `h·ρ ≤ 0.55`; degree 5 needed 0.25), `N ≥ 3` (the closed
 //! loop's own oscillation, which `ρ(A)` does not see), `h ≤ t_end` and, on a neutral loop
-//! (`0 < |E| < 1`), `h ≤ 0.8·θ·(1 − |E|)` (below: "Near the neutral limit"; the measurements
+//! (`0 < |E| < 1`), `h ≤ 0.6·θ·(1 − |E|)` (below: "Near the neutral limit"; the measurements
 //! behind the factors are in `single.rs`, `cargo run --release --example step_error laws|loose`
 //! prints them). Not by `dt` (below: "The step and `dt`"). Every step
 //! is cut at the offsets of the set-point and load events, so every discontinuity `t_e + kθ`
@@ -39,12 +39,16 @@
 //! resolution. They are now located on the piece polynomials, so the bound went: a piece may
 //! hold many samples (each read on its polynomial, a sample on a boundary the right-hand
 //! limit), and the response no longer depends on `dt` (`tests/step_free.rs`). Without dead
-//! time the pieces are `t_end/N ≤ 0.65/ρ(A)` (`ρ = 0`: one piece, cut at the events). The
-//! benchmark's loop (the boiler under Praveen Kumar's rule, λ = 1.9) runs at θ/7 instead of
-//! θ/10. What the bounds hold: at the samples `0.01·k` the 1e-10 their factors were fitted for;
-//! anywhere inside a piece u is up to 1.6–3.4e-10 off at the neutral bound and 2.7–3.3e-10 at
-//! the fast-mode bound (`step_error laws`, samples every 0.001; factors 0.6 and 0.5 would keep
-//! ≤ 1e-10 everywhere). [`simulate_at_step`] runs a chosen `h = θ/n` for such studies.
+//! time the pieces are `t_end/N ≤ 0.55/ρ(A)` (`ρ = 0`: one piece, cut at the events). The
+//! samples `k·dt` may now fall anywhere in a piece, so the factors of the fast-mode and
+//! neutral bounds were refitted on samples every 0.001 (`step_error laws`): 0.65 and 0.8,
+//! fitted on node samples, left u 2.7–3.3e-10 and 0.9–3.4e-10 off inside the pieces; 0.55 and
+//! 0.6 keep 1e-10 anywhere (neutral: ≤ 9.6e-11 across the λ drag; fast mode: 5.2e-11 at
+//! h·ρ = 0.58, 1.5–1.8e-10 at 0.6, falling as (h·ρ)⁸). The saturating loop keeps `h ≤ dt`
+//! (its limit switches are found at the nodes: `saturation.rs`). The benchmark's loop (the
+//! boiler under Praveen Kumar's rule, λ = 1.9) stays at θ/10; loops whose step `dt` bound
+//! run on longer pieces (θ/3 for PI on a lag, the delay bound).
+//! [`simulate_at_step`] runs a chosen `h = θ/n` for such studies.
 //!
 //! Near the neutral limit (`|E| → 1`, the end of the boiler's λ drag under Praveen Kumar's
 //! rule) the step must shrink with `1 − |E|`. The jumps of `v` lie on piece boundaries and the
@@ -55,8 +59,10 @@
 //! Measured at degree 7 (`step_error laws` before branch `step5`, against `h = θ/1920`, samples
 //! every 0.01; every 0.001: above): with `N = 10` the error of
 //! `u` is 4.5e-12 at `|E| = 0.82` (λ = 1.9), 1.4e-6 at 0.964 (λ = 1.96), 2.4e-3 at 0.991
-//! (λ = 1.97); `N·(1 − |E|) ≥ 1.25` keeps it ≤ ~1e-10 (λ = 1.9: θ/7, 2.0e-11; 1.96: θ/35,
-//! 2.2e-11; 1.97: θ/145, 4.1e-12). The bound never asks for more than a quarter of the piece
+//! (λ = 1.97); `N·(1 − |E|) ≥ 1.25` kept it ≤ ~1e-10 at those samples (λ = 1.9: θ/7,
+//! 2.0e-11; 1.96: θ/35, 2.2e-11; 1.97: θ/145, 4.1e-12); anywhere in a piece it takes
+//! `N·(1 − |E|) ≥ 1/0.6 ≈ 1.67` (λ = 1.9: θ/10, 1.8e-11; 1.96: θ/47, 9.6e-11; 1.97: θ/194,
+//! 7.3e-12; samples every 0.001). The bound never asks for more than a quarter of the piece
 //! cap (`h ≥ 4·t_end/10⁶`).
 //!
 //! A controller with a model-based set-point path ([`crate::model::controller::ModelLoop`]: an

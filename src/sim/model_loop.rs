@@ -12,7 +12,7 @@
 //! It is integrated like the one-delay loop of [`crate::sim`] (every piece: the delayed inputs
 //! interpolated at degree [`DEG`] (7) from their history, the state equation integrated exactly by an
 //! augmented matrix exponential), but on an explicit piece list: a uniform grid of step
-//! `h ≤ min(0.65/ρ(A), min τ_j/3, t_end)` (and, on a neutral loop, the bound of `internal_step`;
+//! `h ≤ min(0.55/ρ(A), min τ_j/3, t_end)` (and, on a neutral loop, the bound of `internal_step`;
 //! not `dt`: the samples `k·dt` are read on the piece polynomials)
 //! cut at every point `t_e + Σ k_j τ_j ≤ t_end` that an event `t_e` can reach through the
 //! delays. Every discontinuity of the response (of any order)

@@ -12,8 +12,8 @@
 //!
 //! ## Method
 //! With θ > 0 the plant input `w` on a piece is known from the response one dead time
-//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ 0.65/ρ(A)`, `N ≥ 3`, `h ≤ t_end` and, when
-//! the unsaturated mode is neutral, the bound `h ≤ 0.8·θ·(1 − |e|)` of [`crate::sim`]'s "Near
+//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ dt`, `h ≤ 0.55/ρ(A)`, `N ≥ 3` and, when
+//! the unsaturated mode is neutral, the bound `h ≤ 0.6·θ·(1 − |e|)` of [`crate::sim`]'s "Near
 //! the neutral limit") and at every non-smooth instant — the set-point and load steps and every limit switch — and at
 //! all their copies `+ kθ`, so the delayed input on each piece is the restriction of one
 //! earlier piece's degree-7 polynomial (as in [`super::single`]). On a piece the augmented state
@@ -70,7 +70,7 @@
 //! nonzero only for a biproper loop: a biproper plant under a controller with direct
 //! feed-through, or an ideal derivative on a plant of relative degree one) is solved,
 //! `v = (g·X + h_r r + e d)/(1 − e)`. `v` is continuous across a switch (at `v = L` both give
-//! `w = L + d`). The piece grid is `t_end/N ≤ 0.65/ρ` over the modes' matrices, and the
+//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.55/ρ` over the modes' matrices, and the
 //! `w` slot of the augmented state carries the constant `d`. With `1 − e ≤ 0`
 //! (`L(j∞) ≤ −1`) `v − e·sat(v) = …` is not monotone and has no unique solution: refused,
 //! naming `plant.delay`.
@@ -610,15 +610,19 @@ pub(crate) fn integrate(
     let conditional = m.cond.is_some();
     let n = m.order();
     let sz = n + NODES + 2;
-    // grid h = θ/N (θ = 0: t_end/N), h ≤ FAST_STEP/ρ over every mode's matrix, N ≥ DELAY_PIECES,
-    // h ≤ t_end, the neutral bound; not `dt` (the samples are read on the piece polynomials, as
-    // in the one-delay loop: `single::internal_step`)
+    // grid h = θ/N (θ = 0: t_end/N), h ≤ dt, h ≤ FAST_STEP/ρ over every mode's matrix,
+    // N ≥ DELAY_PIECES, the neutral bound. Unlike the one-delay loop (`single::internal_step`)
+    // the step keeps `h ≤ dt`: a limit switch is found by a sign change of `v − u_max`,
+    // `v − u_min` at the piece's nodes, so an excursion past a limit shorter than the nodes'
+    // spacing h/DEG is missed; `h ≤ dt` keeps that spacing at most dt/DEG, as before branch
+    // step5 (locating every switch on the piece polynomial, as the metrics locate their
+    // turning points, would lift it).
     let rho = m.a.iter().fold(0.0f64, |r, a| {
         a.complex_eigenvalues()
             .iter()
             .fold(r, |r, z| r.max(z.norm()))
     });
-    let mut hmax = sc.t_end;
+    let mut hmax = sc.dt;
     if rho > 0.0 {
         hmax = hmax.min(FAST_STEP / rho);
     }

@@ -240,8 +240,9 @@ fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
 /// Those errors are at samples every 0.01; sampled every 0.001 (branch `step5`: the step no
 /// longer follows `dt`, so a sample may fall anywhere in a piece) the same steps give u
 /// 8.5e-11 to 3.4e-10 off (λ = 1.9, θ/7: 2.5e-10); the factor 0.7 gives 4e-11 to 2.1e-10, 0.6
-/// 1.4e-11 to 2.8e-11 (`step_error laws`). Kept at 0.8 (the tests' 1e-9); the lead's choice.
-const NEUTRAL_STEP: f64 = 0.8;
+/// 1.4e-11 to 2.8e-11 (`step_error laws`). Hence 0.6 (was 0.8 while the step followed `dt`
+/// and the samples were nodes): 1e-10 anywhere in a piece, not only at the nodes.
+const NEUTRAL_STEP: f64 = 0.6;
 
 /// The fast-mode bound's factor: `h ≤ FAST_STEP/ρ(A)` (`ρ` the spectral radius of the loop's
 /// matrix opened at the delayed input). The degree-7 interpolation of the delayed input
@@ -251,9 +252,10 @@ const NEUTRAL_STEP: f64 = 0.8;
 /// 5.8–6.8e-11 at 0.65, 1.0–1.2e-10 at 0.7, 1.7–2.0e-10 at 0.75. Hence 0.65 (degree 5 needed
 /// 0.25: 1.2e-11 at 0.24, 4.2e-10 at 0.36, about 1e-8 at the former 0.5). Sampled every 0.001
 /// (anywhere in a piece) u is 1.5–1.8e-10 off at h·ρ = 0.6, 2.7–3.3e-10 at 0.65 (`step_error
-/// laws` on branch `step5`; `(h·ρ)⁸` puts 1e-10 at ≈ 0.55). Shared by every loop
-/// with interpolated delayed inputs.
-pub(crate) const FAST_STEP: f64 = 0.65;
+/// laws` on branch `step5`; `(h·ρ)⁸` puts 1e-10 at ≈ 0.55). Hence 0.55 (was 0.65 while the
+/// step followed `dt` and the samples were nodes). Shared by every loop with interpolated
+/// delayed inputs.
+pub(crate) const FAST_STEP: f64 = 0.55;
 
 /// The delay bound: `h ≤ θ/DELAY_PIECES` (at least three pieces per dead time). `ρ(A)` is the
 /// loop opened at the delayed input: it does not see the closed loop's oscillation, which on
@@ -277,12 +279,12 @@ pub(crate) fn neutral_bound(theta: f64, ae: f64, t_end: f64, max_pieces: usize) 
 }
 
 /// The internal step h = θ/N (so the delay maps steps onto steps exactly), with
-/// h ≤ 0.65/ρ(A) ([`FAST_STEP`]), N ≥ 3 ([`DELAY_PIECES`]), h ≤ t_end and, on a neutral loop (0 < |E| < 1),
-/// h ≤ 0.8·θ·(1 − |E|) ([`NEUTRAL_STEP`]; but never more pieces than a quarter of
+/// h ≤ 0.55/ρ(A) ([`FAST_STEP`]), N ≥ 3 ([`DELAY_PIECES`]), h ≤ t_end and, on a neutral loop (0 < |E| < 1),
+/// h ≤ 0.6·θ·(1 − |E|) ([`NEUTRAL_STEP`]; but never more pieces than a quarter of
 /// [`MAX_PIECES`] for that last bound alone). Not bounded by `dt`: the samples `k·dt` are read
 /// on the piece polynomials, and the metrics are located on them (module docs of
 /// [`crate::sim`], "The internal step"). Without dead time the loop is an ODE propagated
-/// exactly from node to node; its pieces are `t_end/N`, the longest within `0.65/ρ(A)` (the
+/// exactly from node to node; its pieces are `t_end/N`, the longest within `0.55/ρ(A)` (the
 /// samples between nodes are then interpolated to 1e-10 as a delayed input would be; `ρ = 0`:
 /// one piece over `[0, t_end]`, cut at the events).
 fn internal_step(m: &LoopModel, sc: &Scenario) -> f64 {
