@@ -285,9 +285,12 @@ function render(arrival = false) {
     // newer input cancels that chunk; the drag's last input gets its panel)
     if (!streaming()) { try { currentResponse(r); } catch { /* (drawBode shows the error) */ } }
     const t1 = performance.now();
-    // (the first plots: all at once; nothing of the page is on screen yet)
+    // (the first plots: all at once; nothing of the page is on screen yet. A single input:
+    // all at once too, its result complete in one frame. In a stream of inputs, a drag, the
+    // control signal waits for the task after the frame: scheduleSecondary)
     const first = !perf.firstPlotsAt;
-    drawPlots(r, !first);
+    const defer = !first && streaming();
+    drawPlots(r, defer);
     const t2 = lap('plots', t1);
     if (!perf.firstPlotsAt) {
       perf.firstPlotsAt = t2;
@@ -314,13 +317,22 @@ function render(arrival = false) {
         showController(r);
         perf.firstTablesMs = performance.now() - t3;
       });
-    } else {
-      // later renders: the controller now, the control signal, Nyquist and metrics table in
-      // the task after the frame (scheduleSecondary)
+    } else if (defer) {
+      // later renders in a stream: the controller now, the control signal, Nyquist and metrics
+      // table in the task after the frame (scheduleSecondary)
       firstTables.due = false;
       showController(r);
       r.view = nyquistView();
       scheduleSecondary(r);
+    } else {
+      // a single input (a step of a slider, a typed value, a select): everything in its frame
+      // (deferring it would show the complete result one frame later: input → result painted
+      // p50 48 → 62 ms for λ steps, bench/page-latency.mjs); a stream's pending second part is
+      // superseded
+      firstTables.due = false;
+      secondary.r = null;
+      showController(r);
+      showSecondary(r);
     }
     scheduleClassroom(r);
     lap('tables', t2);
