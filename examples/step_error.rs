@@ -151,13 +151,7 @@ fn cpu_us(case: &Case, n: Option<usize>, runs: usize) -> f64 {
 /// pieces, not only at their nodes, is what is measured: since the step no longer follows
 /// `dt`, a sample may fall anywhere in a piece.
 fn laws() {
-    let boiler = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let boiler = common::boiler();
     let theta = boiler.delay;
     let err = |plant: &Plant, c: &Controller, sc: &Scenario, fine: &Response, n: Option<usize>| {
         let res = match n {
@@ -174,7 +168,8 @@ fn laws() {
     println!("| λ | \\|E\\| | N | N·(1 − \\|E\\|) | y | u |");
     println!("|---|---:|---:|---:|---:|---:|");
     let sc = Scenario::steps(30.0, 0.001, 0.0, 1.0, 15.0, 1.0);
-    for lambda in [1.9, 1.93, 1.96, 1.97] {
+    // the design at λ, its |E| = |L(j∞)| and the reference run at θ/1920
+    let design = |lambda: f64| {
         let p = Params::default()
             .with("lambda", lambda)
             .with("epsilon", 0.2);
@@ -188,6 +183,10 @@ fn laws() {
             .expect("proper")
             .abs();
         let fine = sim::simulate_at_step(&boiler, &c, &sc, 1920).expect("simulate");
+        (c, ae, fine)
+    };
+    for lambda in [1.9, 1.93, 1.96, 1.97] {
+        let (c, ae, fine) = design(lambda);
         for n in [
             None,
             Some(5),
@@ -218,19 +217,7 @@ fn laws() {
     println!("| λ | \\|E\\| | N = ⌈1/(f·(1 − \\|E\\|))⌉ | N·(1 − \\|E\\|) | y | u |");
     println!("|---|---:|---:|---:|---:|---:|");
     for lambda in [1.85, 1.9, 1.91, 1.92, 1.93, 1.94, 1.95, 1.955, 1.965] {
-        let p = Params::default()
-            .with("lambda", lambda)
-            .with("epsilon", 0.2);
-        let c = rules::tune("praveen_kumar", &boiler, &p)
-            .expect("tune")
-            .controller;
-        let ae = boiler
-            .tf
-            .mul(&c.cy)
-            .high_frequency_gain()
-            .expect("proper")
-            .abs();
-        let fine = sim::simulate_at_step(&boiler, &c, &sc, 1920).expect("simulate");
+        let (c, ae, fine) = design(lambda);
         for f in [0.8, 0.7, 0.6] {
             let n = (1.0 / (f * (1.0 - ae))).ceil() as usize;
             let (nn, dy, du) = err(&boiler, &c, &sc, &fine, Some(n));
@@ -268,7 +255,7 @@ fn laws() {
     }
     // h·ρ set exactly: the filter chosen so that θ/N gives it (N_f = h·ρ·N·τ_D/θ)
     for n in [2usize, 4, 8] {
-        for x in [0.6, 0.65, 0.7, 0.75, 0.8, 0.85] {
+        for x in [0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.85] {
             let nf: f64 = x * n as f64 * 1.15 / theta;
             let c = Pid::ideal(1.61, 11.5, 1.15)
                 .filter_n(nf)
@@ -349,13 +336,7 @@ fn main() {
         .unwrap_or(31)
         .max(1);
     let pid = |p: Pid| p.to_controller().expect("controller");
-    let boiler = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let boiler = common::boiler();
     let bench = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
     let mut cases = vec![];
     for lambda in [1.8, 1.9, 1.96, 1.97] {
@@ -376,7 +357,7 @@ fn main() {
     cases.push(Case {
         name: "boiler, Luyben PID, derivative filter N = 10, load −0.5".into(),
         plant: boiler.clone(),
-        c: pid(Pid::ideal(1.61, 11.5, 1.15).filter_n(10.0)),
+        c: pid(common::luyben_pid()),
         sc: Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, -0.5),
         exact_y: None,
     });

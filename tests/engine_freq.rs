@@ -1,5 +1,6 @@
 //! Frequency analysis against analytic margins, a brute-force supremum, and the papers' loops.
 
+mod common;
 use pidlab::analysis::freq::{analyze, open_loop, solve_for_ms};
 use pidlab::model::controller::{lead_lag, Controller, Pid};
 use pidlab::model::plant::{Family, Plant};
@@ -76,13 +77,7 @@ fn praveen_kumar_boiler_ms_is_the_high_frequency_limit() {
     // relative-degree-one plant gives |L(j∞)| = (α/β)·K_d·k·τ_z/τ; the supremum of |S| is the
     // limit 1/(1 − |L∞|) (ERRATA: Ms ≈ 5.5, approached far above crossover).
     let (kp, ki, kd, al, be) = (3.9468, 1.5338, 2.5361, 0.05, 0.0334);
-    let p = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let p = common::boiler();
     let c = Pid::parallel(kp, ki, kd)
         .weights(0.2, 0.0)
         .series_filter(lead_lag(al, be))
@@ -102,13 +97,7 @@ fn praveen_kumar_boiler_ms_is_the_high_frequency_limit() {
 
 #[wasm_bindgen_test(unsupported = test)]
 fn neutral_unstable_and_ill_posed_loops_are_named() {
-    let boiler = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let boiler = common::boiler();
     // K_d large enough that |L(j∞)| = K_d·k·τ_z/τ > 1
     let a = analyze(&boiler, &Pid::ipd(2.0, 0.6, 6.0).to_controller().unwrap()).unwrap();
     assert!(!a.stable && a.verdict.starts_with("neutral-unstable"));

@@ -1,5 +1,6 @@
 //! Paper loops as end-to-end checks of simulate + metrics.
 
+mod common;
 use pidlab::analysis::simulate;
 use pidlab::model::controller::Pid;
 use pidlab::model::plant::{Family, Plant};
@@ -107,13 +108,7 @@ fn divergence_is_flagged_not_nan() {
 
 #[wasm_bindgen_test(unsupported = test)]
 fn impulsive_and_ill_posed_loops_are_refused_with_the_remedy() {
-    let boiler = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let boiler = common::boiler();
     let pid = Pid::parallel(2.0, 0.6, 1.5).to_controller().unwrap();
     let e = simulate(
         &boiler,

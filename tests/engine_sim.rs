@@ -201,13 +201,7 @@ fn boiler_neutral_loop_against_fine_rk4() {
     // Praveen Kumar & Narayana Table 1, λ = 1.9 (ERRATA): ideal derivative on y, lead-lag
     // (α s + 1)/(β s + 1) with α = θ/2, set-point weight ε = 0.2. |L(j∞)| ≈ 0.82: neutral.
     let (kp, ki, kd, al, be, eps) = (3.9468, 1.5338, 2.5361, 0.05, 0.0334, 0.2);
-    let plant = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let plant = common::boiler();
     let c = Pid::parallel(kp, ki, kd)
         .weights(eps, 0.0)
         .series_filter(lead_lag(al, be))
@@ -300,13 +294,7 @@ fn near_the_neutral_limit_the_default_step_stays_exact() {
     // and the comparison adds round-off ~1e-12; 5.5e-5 before the rule fails it by far.
     use pidlab::rules::{self, Params};
     use pidlab::sim;
-    let boiler = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
+    let boiler = common::boiler();
     let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
     for lambda in [1.96, 1.97] {
         let p = Params::default()

@@ -35,6 +35,26 @@ const msOfLambdas = (page, lams, formatted) => page.evaluate(([ls, f]) => {
 }, [lams, formatted]);
 const pk = (lambda) => ({ ...S.defaultState(), method: 'praveen_kumar', params: { lambda, epsilon: 0.2 }, target: null });
 
+/** Installs `window.__lambdaEachFrame(values)` in the page: one input event of the λ slider per
+ *  animation frame, one value each; its promise resolves once the page has settled after the
+ *  last (`__pidlab.settled()`). */
+const installLambdaEachFrame = (page) => page.evaluate(() => {
+  window.__lambdaEachFrame = (ls) => new Promise((res) => {
+    const x = document.getElementById('mp-lambda');
+    let i = 0;
+    const next = () => requestAnimationFrame(() => {
+      if (i < ls.length) {
+        x.value = String(ls[i++]);
+        x.dispatchEvent(new Event('input', { bubbles: true }));
+        next();
+      } else {
+        window.__pidlab.settled().then(res);
+      }
+    });
+    next();
+  });
+});
+
 /** Ms of a direct tune + analyze on the page's own (main-thread) instance, and the readout. */
 async function direct(page, method, params) {
   return page.evaluate(([m, p]) => {
@@ -85,6 +105,7 @@ test('Algorithm III on the slow plant runs in the worker: animation frames keep 
 test('a quick drag of λ: results come in input order, superseded ones are dropped, the final readouts are the final λ\'s', async () => {
   const { page, log } = await H.open(browser.ctx, U.encodeHash(pk(1.0)));
   await frames(page);
+  await installLambdaEachFrame(page);
   const lams = Array.from({ length: 24 }, (_, i) => Number((0.7 + 0.045 * i).toFixed(4)));
   // Every Ms value the readout shows from the first input on, and an input in every frame.
   const shown = await page.evaluate((ls) => new Promise((res) => {
@@ -92,18 +113,7 @@ test('a quick drag of λ: results come in input order, superseded ones are dropp
     const seen = [];
     const mo = new MutationObserver(() => seen.push(o.getAttribute('data-value')));
     mo.observe(o, { attributes: true, attributeFilter: ['data-value'] });
-    const x = document.getElementById('mp-lambda');
-    let i = 0;
-    const next = () => requestAnimationFrame(() => {
-      if (i < ls.length) {
-        x.value = String(ls[i++]);
-        x.dispatchEvent(new Event('input', { bubbles: true }));
-        next();
-      } else {
-        window.__pidlab.settled().then(() => { mo.disconnect(); res(seen); });
-      }
-    });
-    next();
+    window.__lambdaEachFrame(ls).then(() => { mo.disconnect(); res(seen); });
   }), lams);
   const inputs = await sliderLambdas(page, lams);
   // Ms of every input, directly.
@@ -124,6 +134,7 @@ test('a quick drag of λ: results come in input order, superseded ones are dropp
 test('a quick drag of λ: the Nyquist plot and the metrics table, drawn after each result\'s frame, follow the readouts in order and end at the final λ\'s', async () => {
   const { page, log } = await H.open(browser.ctx, U.encodeHash(pk(1.0)));
   await frames(page);
+  await installLambdaEachFrame(page);
   const lams = Array.from({ length: 24 }, (_, i) => Number((1.6 - 0.04 * i).toFixed(4)));
   // Every Ms the readout, the Nyquist plot's text equivalent and the metrics table's current row
   // show from the first input on (as the page formats it), and an input in every frame.
@@ -146,18 +157,7 @@ test('a quick drag of λ: the Nyquist plot and the metrics table, drawn after ea
     });
     mo.observe(document.getElementById('live'), { attributes: true, subtree: true, childList: true, characterData: true });
     mo.observe(ny, { attributes: true, attributeFilter: ['aria-label'] });
-    const x = document.getElementById('mp-lambda');
-    let i = 0;
-    const next = () => requestAnimationFrame(() => {
-      if (i < ls.length) {
-        x.value = String(ls[i++]);
-        x.dispatchEvent(new Event('input', { bubbles: true }));
-        next();
-      } else {
-        window.__pidlab.settled().then(() => { mo.takeRecords(); mo.disconnect(); out.final = { ro: fmt(Number(ro.getAttribute('data-value'))), ny: nyMs(), table: tableMs() }; res(out); });
-      }
-    });
-    next();
+    window.__lambdaEachFrame(ls).then(() => { mo.takeRecords(); mo.disconnect(); out.final = { ro: fmt(Number(ro.getAttribute('data-value'))), ny: nyMs(), table: tableMs() }; res(out); });
   }), lams);
   const inputs = await sliderLambdas(page, lams);
   // Ms of every input, directly, as the page formats it
