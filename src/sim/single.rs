@@ -252,7 +252,8 @@ const NEUTRAL_STEP: f64 = 0.6;
 /// 5.8–6.8e-11 at 0.65, 1.0–1.2e-10 at 0.7, 1.7–2.0e-10 at 0.75. Hence 0.65 (degree 5 needed
 /// 0.25: 1.2e-11 at 0.24, 4.2e-10 at 0.36, about 1e-8 at the former 0.5). Sampled every 0.001
 /// (anywhere in a piece) u is 1.5–1.8e-10 off at h·ρ = 0.6, 2.7–3.3e-10 at 0.65 (`step_error
-/// laws` on branch `step5`; `(h·ρ)⁸` puts 1e-10 at ≈ 0.55). Hence 0.55 (was 0.65 while the
+/// laws` on branch `step5`; `(h·ρ)⁸` puts 1e-10 at ≈ 0.55), and at exactly 0.55 (θ/2, θ/4, θ/8)
+/// 7.7–9.3e-11, at 0.5 3.7–4.5e-11 (measured 2026-11-27). Hence 0.55 (was 0.65 while the
 /// step followed `dt` and the samples were nodes). Shared by every loop with interpolated
 /// delayed inputs.
 pub(crate) const FAST_STEP: f64 = 0.55;
