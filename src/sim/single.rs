@@ -170,6 +170,7 @@ impl Prop {
 
 /// [`Prop::apply`] for `R` rows: the `R` sums accumulate in a local array (registers), each
 /// from 0.0 and in the order of `z`, as the general loop does.
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
 #[inline(always)]
 fn apply_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {
     let mut acc = [0.0; R];
@@ -179,6 +180,39 @@ fn apply_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {
         }
     }
     out[..R].copy_from_slice(&acc);
+}
+
+/// [`Prop::apply`] for `R` rows in wasm with SIMD: the same sums, two rows to a 128-bit vector.
+/// rustc's own vectorization of the loop above kept the sums as scalars and packed two of them
+/// into a vector, multiplied and added, and unpacked them again for every column of the
+/// propagator (`f64x2.replace_lane` / `extract_lane` around each `f64x2.add`): here the sums
+/// stay vectors (`R/2` of them, and one scalar for an odd `R`). Lane by lane `acc + c·z_j` is
+/// the scalar loop's operation (IEEE products and sums, no fused multiply-add, the same order
+/// over `z`): bit-identical (README, "Node's simulate against native").
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+#[inline(always)]
+fn apply_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {
+    use core::arch::wasm32::{f64x2, f64x2_add, f64x2_extract_lane, f64x2_mul, f64x2_splat};
+    // R ≤ 2·DEG + 8 = 22 (Prop::apply): at most 11 pairs
+    const PAIRS: usize = (2 * DEG + 8) / 2;
+    let mut acc = [f64x2_splat(0.0); PAIRS];
+    let mut last = 0.0;
+    for (col, &zj) in cols.chunks_exact(R).zip(z) {
+        let zz = f64x2_splat(zj);
+        for (i, a) in acc.iter_mut().enumerate().take(R / 2) {
+            *a = f64x2_add(*a, f64x2_mul(f64x2(col[2 * i], col[2 * i + 1]), zz));
+        }
+        if R % 2 == 1 {
+            last += col[R - 1] * zj;
+        }
+    }
+    for (i, a) in acc.iter().enumerate().take(R / 2) {
+        out[2 * i] = f64x2_extract_lane::<0>(*a);
+        out[2 * i + 1] = f64x2_extract_lane::<1>(*a);
+    }
+    if R % 2 == 1 {
+        out[R - 1] = last;
+    }
 }
 
 fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {
