@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::model::ss::{balance, realize, Ss};
+use crate::numerics::col_major_rows;
 use nalgebra::{DMatrix, DVector};
 
 /// Hard cap on the number of pieces of one simulation.
@@ -148,14 +149,14 @@ impl Prop {
     fn apply(&self, z: &[f64], out: &mut [f64]) {
         const R: usize = 2 * DEG;
         match self.rows - R {
-            1 => apply_rows::<{ R + 1 }>(&self.cols, z, out),
-            2 => apply_rows::<{ R + 2 }>(&self.cols, z, out),
-            3 => apply_rows::<{ R + 3 }>(&self.cols, z, out),
-            4 => apply_rows::<{ R + 4 }>(&self.cols, z, out),
-            5 => apply_rows::<{ R + 5 }>(&self.cols, z, out),
-            6 => apply_rows::<{ R + 6 }>(&self.cols, z, out),
-            7 => apply_rows::<{ R + 7 }>(&self.cols, z, out),
-            8 => apply_rows::<{ R + 8 }>(&self.cols, z, out),
+            1 => col_major_rows::<{ R + 1 }>(&self.cols, z, out),
+            2 => col_major_rows::<{ R + 2 }>(&self.cols, z, out),
+            3 => col_major_rows::<{ R + 3 }>(&self.cols, z, out),
+            4 => col_major_rows::<{ R + 4 }>(&self.cols, z, out),
+            5 => col_major_rows::<{ R + 5 }>(&self.cols, z, out),
+            6 => col_major_rows::<{ R + 6 }>(&self.cols, z, out),
+            7 => col_major_rows::<{ R + 7 }>(&self.cols, z, out),
+            8 => col_major_rows::<{ R + 8 }>(&self.cols, z, out),
             _ => {
                 out.fill(0.0);
                 for (col, &zj) in self.cols.chunks_exact(self.rows).zip(z) {
@@ -165,53 +166,6 @@ impl Prop {
                 }
             }
         }
-    }
-}
-
-/// [`Prop::apply`] for `R` rows: the `R` sums accumulate in a local array (registers), each
-/// from 0.0 and in the order of `z`, as the general loop does.
-#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
-#[inline(always)]
-fn apply_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {
-    let mut acc = [0.0; R];
-    for (col, &zj) in cols.chunks_exact(R).zip(z) {
-        for (a, &c) in acc.iter_mut().zip(col) {
-            *a += c * zj;
-        }
-    }
-    out[..R].copy_from_slice(&acc);
-}
-
-/// [`Prop::apply`] for `R` rows in wasm with SIMD: the same sums, two rows to a 128-bit vector.
-/// rustc's own vectorization of the loop above kept the sums as scalars and packed two of them
-/// into a vector, multiplied and added, and unpacked them again for every column of the
-/// propagator (`f64x2.replace_lane` / `extract_lane` around each `f64x2.add`): here the sums
-/// stay vectors (`R/2` of them, and one scalar for an odd `R`). Lane by lane `acc + c·z_j` is
-/// the scalar loop's operation (IEEE products and sums, no fused multiply-add, the same order
-/// over `z`): bit-identical (README, "Node's simulate against native").
-#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-#[inline(always)]
-fn apply_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {
-    use core::arch::wasm32::{f64x2, f64x2_add, f64x2_extract_lane, f64x2_mul, f64x2_splat};
-    // R ≤ 2·DEG + 8 = 22 (Prop::apply): at most 11 pairs
-    const PAIRS: usize = (2 * DEG + 8) / 2;
-    let mut acc = [f64x2_splat(0.0); PAIRS];
-    let mut last = 0.0;
-    for (col, &zj) in cols.chunks_exact(R).zip(z) {
-        let zz = f64x2_splat(zj);
-        for (i, a) in acc.iter_mut().enumerate().take(R / 2) {
-            *a = f64x2_add(*a, f64x2_mul(f64x2(col[2 * i], col[2 * i + 1]), zz));
-        }
-        if R % 2 == 1 {
-            last += col[R - 1] * zj;
-        }
-    }
-    for (i, a) in acc.iter().enumerate().take(R / 2) {
-        out[2 * i] = f64x2_extract_lane::<0>(*a);
-        out[2 * i + 1] = f64x2_extract_lane::<1>(*a);
-    }
-    if R % 2 == 1 {
-        out[R - 1] = last;
     }
 }
 
