@@ -429,7 +429,8 @@ pub fn sort_by_f64_key<T>(v: &mut Vec<T>, key: impl Fn(&T) -> f64) {
 }
 
 /// `out[r] = Σ_j cols[j·R + r]·z_j` for the `R` rows of a column-major matrix (the simulator's
-/// propagators, `sim/single.rs` `Prop::apply`): the `R` sums accumulate in a local array
+/// propagators, `sim/single.rs` `Prop::apply`; the metrics' derivative coefficients,
+/// `analysis/metrics.rs` `Monotone::cut`): the `R` sums accumulate in a local array
 /// (registers), each from 0.0 and in the order of `z`, as a row-by-row dot product does.
 #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
 #[inline(always)]
