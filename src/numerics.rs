@@ -427,3 +427,53 @@ pub fn sort_by_f64_key<T>(v: &mut Vec<T>, key: impl Fn(&T) -> f64) {
     let mut slots: Vec<Option<T>> = v.drain(..).map(Some).collect();
     v.extend(order.iter().filter_map(|&i| slots[i].take()));
 }
+
+/// `out[r] = Σ_j cols[j·R + r]·z_j` for the `R` rows of a column-major matrix (the simulator's
+/// propagators, `sim/single.rs` `Prop::apply`; the metrics' derivative coefficients,
+/// `analysis/metrics.rs` `Monotone::cut`): the `R` sums accumulate in a local array
+/// (registers), each from 0.0 and in the order of `z`, as a row-by-row dot product does.
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+#[inline(always)]
+pub(crate) fn col_major_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {
+    let mut acc = [0.0; R];
+    for (col, &zj) in cols.chunks_exact(R).zip(z) {
+        for (a, &c) in acc.iter_mut().zip(col) {
+            *a += c * zj;
+        }
+    }
+    out[..R].copy_from_slice(&acc);
+}
+
+/// [`col_major_rows`] in wasm with SIMD: the same sums, two rows to a 128-bit vector.
+/// rustc's own vectorization of the loop above kept the sums as scalars and packed two of them
+/// into a vector, multiplied and added, and unpacked them again for every column of the
+/// propagator (`f64x2.replace_lane` / `extract_lane` around each `f64x2.add`): here the sums
+/// stay vectors (`R/2` of them, and one scalar for an odd `R`). Lane by lane `acc + c·z_j` is
+/// the scalar loop's operation (IEEE products and sums, no fused multiply-add, the same order
+/// over `z`): bit-identical (README, "Node's simulate against native").
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+#[inline(always)]
+pub(crate) fn col_major_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {
+    use core::arch::wasm32::{f64x2, f64x2_add, f64x2_extract_lane, f64x2_mul, f64x2_splat};
+    // R ≤ 22 (Prop::apply: 2·DEG + 8 rows): at most 11 pairs
+    const PAIRS: usize = 11;
+    const { assert!(R <= 2 * PAIRS) };
+    let mut acc = [f64x2_splat(0.0); PAIRS];
+    let mut last = 0.0;
+    for (col, &zj) in cols.chunks_exact(R).zip(z) {
+        let zz = f64x2_splat(zj);
+        for (i, a) in acc.iter_mut().enumerate().take(R / 2) {
+            *a = f64x2_add(*a, f64x2_mul(f64x2(col[2 * i], col[2 * i + 1]), zz));
+        }
+        if R % 2 == 1 {
+            last += col[R - 1] * zj;
+        }
+    }
+    for (i, a) in acc.iter().enumerate().take(R / 2) {
+        out[2 * i] = f64x2_extract_lane::<0>(*a);
+        out[2 * i + 1] = f64x2_extract_lane::<1>(*a);
+    }
+    if R % 2 == 1 {
+        out[R - 1] = last;
+    }
+}

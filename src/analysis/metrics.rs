@@ -31,6 +31,7 @@
 //! - `y_final`, `u_final`: the loop's steady state for the window's r and d (solved
 //!   exactly from the loop equations; the last sample when the loop has no steady state).
 
+use crate::numerics::col_major_rows;
 use crate::sim::{lagrange, monomial_coeffs, Response, Scenario, Trajectory, DEG, NODES, SIGMA};
 
 /// Metrics of one window (see the module docs for definitions).
@@ -275,17 +276,7 @@ impl Integrals {
     /// calls, bit for bit.
     #[inline]
     fn add8(&mut self, t: &[f64; 8], e: &[f64; 8], w: &[f64; 8]) {
-        let mut terms = [[0.0; 8]; 6];
-        for (i, ((&t, &e), &w)) in t.iter().zip(e).zip(w).enumerate() {
-            let e2 = e * e;
-            let t2 = t * t;
-            terms[0][i] = w * e.abs();
-            terms[1][i] = w * e2;
-            terms[2][i] = w * t * e.abs();
-            terms[3][i] = w * t2 * e2;
-            terms[4][i] = w * t2 * t2 * e2;
-            terms[5][i] = w * t2 * t2 * t2 * e2;
-        }
+        let terms = Self::terms8(t, e, w);
         let sums = [
             &mut self.iae,
             &mut self.ise,
@@ -299,6 +290,59 @@ impl Integrals {
                 *sum += x;
             }
         }
+    }
+}
+
+impl Integrals {
+    /// [`Self::add8`]'s terms point by point: `w|e|, we², wt|e|, wt²e², wt⁴e², wt⁶e²`, each
+    /// product taken left to right as [`Self::add`] does.
+    #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
+    #[inline(always)]
+    fn terms8(t: &[f64; 8], e: &[f64; 8], w: &[f64; 8]) -> [[f64; 8]; 6] {
+        let mut terms = [[0.0; 8]; 6];
+        for (i, ((&t, &e), &w)) in t.iter().zip(e).zip(w).enumerate() {
+            let e2 = e * e;
+            let t2 = t * t;
+            terms[0][i] = w * e.abs();
+            terms[1][i] = w * e2;
+            terms[2][i] = w * t * e.abs();
+            terms[3][i] = w * t2 * e2;
+            terms[4][i] = w * t2 * t2 * e2;
+            terms[5][i] = w * t2 * t2 * t2 * e2;
+        }
+        terms
+    }
+
+    /// [`Self::terms8`] in wasm with SIMD, two points to a vector: rustc left the loop above
+    /// scalar in wasm (it vectorizes it natively). The same products in the same order lane
+    /// by lane (`f64x2_abs` clears the sign bit as `f64::abs` does): bit-identical.
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    #[inline(always)]
+    fn terms8(t: &[f64; 8], e: &[f64; 8], w: &[f64; 8]) -> [[f64; 8]; 6] {
+        use core::arch::wasm32::{f64x2, f64x2_abs, f64x2_extract_lane, f64x2_mul, v128};
+        let mut terms = [[0.0; 8]; 6];
+        let pair = |x: &[f64; 8], i: usize| f64x2(x[2 * i], x[2 * i + 1]);
+        for i in 0..4 {
+            let (t, e, w) = (pair(t, i), pair(e, i), pair(w, i));
+            let e2 = f64x2_mul(e, e);
+            let t2 = f64x2_mul(t, t);
+            let ea = f64x2_abs(e);
+            let wt2 = f64x2_mul(w, t2);
+            let wt4 = f64x2_mul(wt2, t2);
+            let v: [v128; 6] = [
+                f64x2_mul(w, ea),
+                f64x2_mul(w, e2),
+                f64x2_mul(f64x2_mul(w, t), ea),
+                f64x2_mul(wt2, e2),
+                f64x2_mul(wt4, e2),
+                f64x2_mul(f64x2_mul(wt4, t2), e2),
+            ];
+            for (row, x) in terms.iter_mut().zip(v) {
+                row[2 * i] = f64x2_extract_lane::<0>(x);
+                row[2 * i + 1] = f64x2_extract_lane::<1>(x);
+            }
+        }
+        terms
     }
 }
 
@@ -335,11 +379,7 @@ fn window_pass(traj: &Trajectory, a: f64, b: f64, shape: &mut Shape) -> Integral
             // y at the 8 points, point by point Σ_j l_j(σ_i)·y_j summed in j's order
             let half = 0.5 * len;
             let mut y8 = [0.0; 8];
-            for (lj, &yj) in basis.lt.iter().zip(yv) {
-                for (y, &l) in y8.iter_mut().zip(lj) {
-                    *y += l * yj;
-                }
-            }
+            col_major_rows::<8>(basis.lt.as_flattened(), yv, &mut y8);
             let (mut t, mut e, mut w) = ([0.0; 8], [0.0; 8], [0.0; 8]);
             for (i, ((ti, ei), wi)) in t.iter_mut().zip(&mut e).zip(&mut w).enumerate() {
                 *ti = t0 + basis.s[i] * len - a;
@@ -543,8 +583,10 @@ const CUTS: usize = 2 + DEG + ZERO_DEPTH as usize * DEG.div_ceil(2);
 /// values (a fixed linear map of the nodes); values come from the simulator's barycentric
 /// interpolation ([`lagrange`]).
 struct PieceForms {
-    /// `b′_i = Σ_j dy[i][j]·y_j`, `i = 0..DEG` (degree `DEG − 1`).
-    dy: [[f64; NODES]; DEG],
+    /// `b′_i = Σ_j dy[i][j]·y_j`, `i = 0..DEG` (degree `DEG − 1`), stored column by column
+    /// with a zero row `DEG` (so `NODES` rows, two to a wasm SIMD vector):
+    /// `dyt[j·NODES + i] = dy[i][j]`, for [`col_major_rows`].
+    dyt: [f64; NODES * NODES],
     /// The round-off of `b′_i` relative to `max_j |y_j|`: `8ε·max_i Σ_j |dy[i][j]|`.
     tol: f64,
 }
@@ -578,8 +620,14 @@ impl PieceForms {
             .iter()
             .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
             .fold(0.0, f64::max);
+        let mut dyt = [0.0; NODES * NODES];
+        for (i, row) in dy.iter().enumerate() {
+            for (j, x) in row.iter().enumerate() {
+                dyt[j * NODES + i] = *x;
+            }
+        }
         PieceForms {
-            dy,
+            dyt,
             tol: 8.0 * f64::EPSILON * rows,
         }
     }
@@ -718,10 +766,11 @@ impl Monotone {
     fn cut(&mut self, f: &PieceForms, yv: &[f64; NODES], s0: f64, s1: f64) {
         self.yv = *yv;
         self.n = 0;
+        // b′_i = Σ_j dy[i][j]·y_j, each sum from 0.0 in the order of j (the padding row's is 0)
+        let mut d8 = [0.0; NODES];
+        col_major_rows::<NODES>(&f.dyt, yv, &mut d8);
         let mut d = [0.0; DEG];
-        for (di, row) in d.iter_mut().zip(&f.dy) {
-            *di = row.iter().zip(yv).fold(0.0, |acc, (a, y)| acc + a * y);
-        }
+        d.copy_from_slice(&d8[..DEG]);
         let scale = yv.iter().fold(0.0_f64, |m, y| m.max(y.abs()));
         let tol = f.tol * scale;
         self.push(s0, f.eval(yv, s0));

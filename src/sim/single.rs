@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::model::ss::{balance, realize, Ss};
+use crate::numerics::col_major_rows;
 use nalgebra::{DMatrix, DVector};
 
 /// Hard cap on the number of pieces of one simulation.
@@ -148,14 +149,14 @@ impl Prop {
     fn apply(&self, z: &[f64], out: &mut [f64]) {
         const R: usize = 2 * DEG;
         match self.rows - R {
-            1 => apply_rows::<{ R + 1 }>(&self.cols, z, out),
-            2 => apply_rows::<{ R + 2 }>(&self.cols, z, out),
-            3 => apply_rows::<{ R + 3 }>(&self.cols, z, out),
-            4 => apply_rows::<{ R + 4 }>(&self.cols, z, out),
-            5 => apply_rows::<{ R + 5 }>(&self.cols, z, out),
-            6 => apply_rows::<{ R + 6 }>(&self.cols, z, out),
-            7 => apply_rows::<{ R + 7 }>(&self.cols, z, out),
-            8 => apply_rows::<{ R + 8 }>(&self.cols, z, out),
+            1 => col_major_rows::<{ R + 1 }>(&self.cols, z, out),
+            2 => col_major_rows::<{ R + 2 }>(&self.cols, z, out),
+            3 => col_major_rows::<{ R + 3 }>(&self.cols, z, out),
+            4 => col_major_rows::<{ R + 4 }>(&self.cols, z, out),
+            5 => col_major_rows::<{ R + 5 }>(&self.cols, z, out),
+            6 => col_major_rows::<{ R + 6 }>(&self.cols, z, out),
+            7 => col_major_rows::<{ R + 7 }>(&self.cols, z, out),
+            8 => col_major_rows::<{ R + 8 }>(&self.cols, z, out),
             _ => {
                 out.fill(0.0);
                 for (col, &zj) in self.cols.chunks_exact(self.rows).zip(z) {
@@ -166,19 +167,6 @@ impl Prop {
             }
         }
     }
-}
-
-/// [`Prop::apply`] for `R` rows: the `R` sums accumulate in a local array (registers), each
-/// from 0.0 and in the order of `z`, as the general loop does.
-#[inline(always)]
-fn apply_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {
-    let mut acc = [0.0; R];
-    for (col, &zj) in cols.chunks_exact(R).zip(z) {
-        for (a, &c) in acc.iter_mut().zip(col) {
-            *a += c * zj;
-        }
-    }
-    out[..R].copy_from_slice(&acc);
 }
 
 fn propagators(m: &LoopModel, len: f64, vinv: &DMatrix<f64>) -> Result<Prop> {

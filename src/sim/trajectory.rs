@@ -262,9 +262,45 @@ pub fn lagrange(vals: &[f64], s: f64) -> f64 {
     num / den
 }
 
+/// [`lagrange2`]'s quotients `q_j = w_j/(σ − σ_j)` two nodes to a wasm SIMD vector (rustc
+/// leaves the eight divisions scalar in wasm), then the sums in the nodes' order as the scalar
+/// loop takes them: the same values bit for bit. `None` when σ is a node (the scalar loop
+/// returns that node's values).
+#[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+#[inline(always)]
+fn lagrange2_simd(a: &[f64], b: &[f64], s: f64) -> Option<(f64, f64)> {
+    use core::arch::wasm32::{
+        f64x2, f64x2_div, f64x2_eq, f64x2_extract_lane, f64x2_splat, f64x2_sub, v128_any_true,
+    };
+    let ss = f64x2_splat(s);
+    let mut q = [0.0; NODES];
+    let mut hit = false;
+    for i in 0..NODES / 2 {
+        let d = f64x2_sub(ss, f64x2(SIGMA[2 * i], SIGMA[2 * i + 1]));
+        hit |= v128_any_true(f64x2_eq(d, f64x2_splat(0.0)));
+        let qi = f64x2_div(f64x2(BARY_W[2 * i], BARY_W[2 * i + 1]), d);
+        q[2 * i] = f64x2_extract_lane::<0>(qi);
+        q[2 * i + 1] = f64x2_extract_lane::<1>(qi);
+    }
+    if hit {
+        return None;
+    }
+    let (mut na, mut nb, mut den) = (0.0, 0.0, 0.0);
+    for ((&va, &vb), &qj) in a.iter().zip(b).zip(&q) {
+        na += qj * va;
+        nb += qj * vb;
+        den += qj;
+    }
+    Some((na / den, nb / den))
+}
+
 /// [`lagrange`] of two node sets at the same σ, sharing the barycentric weights (each result
 /// is the one `lagrange` gives, bit for bit).
 fn lagrange2(a: &[f64], b: &[f64], s: f64) -> (f64, f64) {
+    #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+    if let Some(r) = lagrange2_simd(a, b, s) {
+        return r;
+    }
     let (mut na, mut nb, mut den) = (0.0, 0.0, 0.0);
     for (((&va, &vb), &w), &sj) in a.iter().zip(b).zip(BARY_W.iter()).zip(&SIGMA) {
         let d = s - sj;
