@@ -70,6 +70,7 @@
 //! two-delay version of this method (`model_loop.rs`: the same pieces, cut at every
 //! `t_e + iθ + jθ_m`).
 
+pub(crate) mod bernstein;
 pub(crate) mod model_loop;
 pub mod noise;
 pub mod sampled;
