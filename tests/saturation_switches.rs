@@ -9,7 +9,9 @@
 //! 2. The benchmark's boiler with limits that are hit, at dt = 0.1, 0.01, 0.001: the same
 //!    pieces, the same trajectory at common sample times and the same limit intervals.
 
-use pidlab::model::controller::{Controller, Pid};
+mod common;
+
+use pidlab::model::controller::Pid;
 use pidlab::model::discrete::{AntiWindup, Limits};
 use pidlab::model::plant::Family;
 use pidlab::rules::{self, Params};
@@ -162,18 +164,6 @@ fn a_short_excursion_between_nodes_is_found_and_located() {
     assert!((eb - t_b).abs() < tol, "end {eb} vs {t_b}");
 }
 
-fn boiler_design() -> Controller {
-    let plant = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
-    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
-    rules::tune("praveen_kumar", &plant, &p).unwrap().controller
-}
-
 /// The boiler under Praveen Kumar's design with limits [−0.6, 1.5] (the set-point kick hits
 /// u_max, the load step u_min), each anti-windup, at dt = 0.1, 0.01, 0.001: the internal step
 /// and the pieces do not depend on dt, so the samples at common times are read on the same
@@ -182,14 +172,9 @@ fn boiler_design() -> Controller {
 /// intervals are the same switches: equal to 1e-12.
 #[wasm_bindgen_test(unsupported = test)]
 fn the_saturating_loop_does_not_follow_dt() {
-    let plant = Family::IpdtIr {
-        k: 0.547,
-        tau: 1.06,
-        tau_z: 0.418,
-        theta: 0.1,
-    }
-    .plant();
-    let c = boiler_design();
+    let plant = common::boiler();
+    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
+    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
     for aw in [
         AntiWindup::None,
         AntiWindup::Tracking { tt: None },
