@@ -44,8 +44,9 @@
 //! neutral bounds were refitted on samples every 0.001 (`step_error laws`): 0.65 and 0.8,
 //! fitted on node samples, left u 2.7–3.3e-10 and 0.9–3.4e-10 off inside the pieces; 0.55 and
 //! 0.6 keep 1e-10 anywhere (neutral: ≤ 9.6e-11 across the λ drag; fast mode: 5.2e-11 at
-//! h·ρ = 0.58, 1.5–1.8e-10 at 0.6, falling as (h·ρ)⁸). The saturating loop keeps `h ≤ dt`
-//! (its limit switches are found at the nodes: `saturation.rs`). The benchmark's loop (the
+//! h·ρ = 0.58, 1.5–1.8e-10 at 0.6, falling as (h·ρ)⁸). The saturating loop's step does not
+//! follow `dt` either since branch satsw (its limit switches are found on the piece
+//! polynomials, Bernstein sign test: `saturation.rs`). The benchmark's loop (the
 //! boiler under Praveen Kumar's rule, λ = 1.9) stays at θ/10; loops whose step `dt` bound
 //! run on longer pieces (θ/3 for PI on a lag, the delay bound).
 //! [`simulate_at_step`] runs a chosen `h = θ/n` for such studies.
@@ -70,6 +71,7 @@
 //! two-delay version of this method (`model_loop.rs`: the same pieces, cut at every
 //! `t_e + iθ + jθ_m`).
 
+pub(crate) mod bernstein;
 pub(crate) mod model_loop;
 pub mod noise;
 pub mod sampled;

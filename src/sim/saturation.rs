@@ -12,16 +12,21 @@
 //!
 //! ## Method
 //! With θ > 0 the plant input `w` on a piece is known from the response one dead time
-//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ dt`, `h ≤ 0.55/ρ(A)`, `N ≥ 3` and, when
+//! earlier. The time axis is cut on the grid `h = θ/N` (`h ≤ 0.55/ρ(A)`, `N ≥ 3` and, when
 //! the unsaturated mode is neutral, the bound `h ≤ 0.6·θ·(1 − |e|)` of [`crate::sim`]'s "Near
 //! the neutral limit") and at every non-smooth instant — the set-point and load steps and every limit switch — and at
 //! all their copies `+ kθ`, so the delayed input on each piece is the restriction of one
 //! earlier piece's degree-7 polynomial (as in [`super::single`]). On a piece the augmented state
 //! `[x; ξ (monomial coefficients of w); r; L]` is propagated exactly by a matrix exponential.
-//! At the `NODES` = 8 nodes of each piece `v − u_max` and `v − u_min` are checked; a sign change is a
-//! limit reached or left, and its time is the root of the smooth function
-//! `τ ↦ v(exp(Mτ)·z)` located with Brent's method to round-off; the piece is cut there, the
-//! mode switched, and `t* + kθ` scheduled as cuts. A jump of `v` across a limit (a set-point
+//! The mode's validity functions (`v − u_max` and `v − u_min` while free; below) are affine
+//! in that state, so on a piece each is the smooth `τ ↦ c·exp(Mτ)·z`; its degree-7 interpolant
+//! through the `NODES` = 8 node values is tested for a turn below zero by the signs of its
+//! Bernstein coefficients ([`super::bernstein`]; beyond the round-off bound derived at
+//! `switch_first`), so an excursion past a limit between two nodes is found too; the first
+//! such place is refined on the exact function with Brent's method to round-off, the piece is
+//! cut there, the mode switched, and `t* + kθ` scheduled as cuts. The step does not depend on
+//! `dt` (until branch satsw, issue 15, the switches were sought at the nodes only and `h ≤ dt`
+//! kept the nodes dense); the output samples are read on the piece polynomials. A jump of `v` across a limit (a set-point
 //! step through a proportional path, a biproper plant's jump) switches the mode at the start
 //! of the piece. No fixed-step integration is used.
 //!
@@ -70,11 +75,12 @@
 //! nonzero only for a biproper loop: a biproper plant under a controller with direct
 //! feed-through, or an ideal derivative on a plant of relative degree one) is solved,
 //! `v = (g·X + h_r r + e d)/(1 − e)`. `v` is continuous across a switch (at `v = L` both give
-//! `w = L + d`). The piece grid is `h ≤ dt`, `h ≤ 0.55/ρ` over the modes' matrices, and the
+//! `w = L + d`). The piece grid is `t_end/N ≤ 0.55/ρ` over the modes' matrices, and the
 //! `w` slot of the augmented state carries the constant `d`. With `1 − e ≤ 0`
 //! (`L(j∞) ≤ −1`) `v − e·sat(v) = …` is not monotone and has no unique solution: refused,
 //! naming `plant.delay`.
 
+use super::bernstein::{casteljau, first_crossing, PieceForms, ZERO_DEPTH};
 use super::scenario::Scenario;
 use super::single::{divisor_step, neutral_bound, LoopModel, DELAY_PIECES, FAST_STEP};
 use super::trajectory::{lagrange, start_interpolation_inverse, Trajectory, DEG, NODES};
@@ -417,7 +423,7 @@ pub(crate) struct SatRun {
 }
 
 /// The switching mode of the loop (module docs). `σ = 1` is the upper limit, `−1` the lower.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 enum Mode {
     /// Unsaturated: `u = v`, the controller's linear law.
     Free,
@@ -610,19 +616,17 @@ pub(crate) fn integrate(
     let conditional = m.cond.is_some();
     let n = m.order();
     let sz = n + NODES + 2;
-    // grid h = θ/N (θ = 0: t_end/N), h ≤ dt, h ≤ FAST_STEP/ρ over every mode's matrix,
-    // N ≥ DELAY_PIECES, the neutral bound. Unlike the one-delay loop (`single::internal_step`)
-    // the step keeps `h ≤ dt`: a limit switch is found by a sign change of `v − u_max`,
-    // `v − u_min` at the piece's nodes, so an excursion past a limit shorter than the nodes'
-    // spacing h/DEG is missed; `h ≤ dt` keeps that spacing at most dt/DEG, as before branch
-    // step5 (locating every switch on the piece polynomial, as the metrics locate their
-    // turning points, would lift it).
+    // grid h = θ/N (θ = 0: t_end/N), h ≤ FAST_STEP/ρ over every mode's matrix,
+    // N ≥ DELAY_PIECES, the neutral bound, as the one-delay loop (`single::internal_step`):
+    // not by dt. Every limit switch on a piece is found on the interpolant of its validity
+    // functions (`switch_first`: Bernstein sign test, not the node values), so an excursion
+    // past a limit between two nodes is seen (until branch satsw the node test kept h ≤ dt).
     let rho = m.a.iter().fold(0.0f64, |r, a| {
         a.complex_eigenvalues()
             .iter()
             .fold(r, |r, z| r.max(z.norm()))
     });
-    let mut hmax = sc.dt;
+    let mut hmax = sc.t_end;
     if rho > 0.0 {
         hmax = hmax.min(FAST_STEP / rho);
     }
@@ -654,6 +658,8 @@ pub(crate) fn integrate(
         }
     }
     let vinv = start_interpolation_inverse()?;
+    let forms = PieceForms::new();
+    let mut row_cache: HashMap<(Mode, u64), ValidityRows> = HashMap::new();
     let mut cache: HashMap<(usize, u64), DMatrix<f64>> = HashMap::new();
     let mut traj = Trajectory {
         h,
@@ -828,87 +834,54 @@ pub(crate) fn integrate(
         let mi = mode.kind();
         let mut len = t1 - t;
         propagate(&mut cache, &mut zs, mi, len);
-        // the first node at which a validity function is negative
-        let mut hit = None;
-        for (i, zi) in zs.iter().enumerate().skip(1) {
-            let f = validity(mode, m.point(zi, len, mode), lim);
-            if f[0] < 0.0 || f[1] < 0.0 {
-                hit = Some(i);
-                break;
-            }
-        }
+        // the first place on the piece where a validity function turns negative (on its
+        // interpolant: `switch_first`), refined on the exact function
+        let vrows = row_cache
+            .entry((mode, len.to_bits()))
+            .or_insert_with(|| validity_rows(&m, mode, len, lim, sz));
+        let first = switch_first(&SwitchScan {
+            m: &m,
+            forms: &forms,
+            zs: &zs,
+            kind: mi,
+            mode,
+            len,
+            lim,
+            xtol: 1e-15 * (t + len).max(1.0),
+            vrows,
+        });
         let mut switch_to = None;
-        if let Some(i) = hit {
-            let big = m.augmented(mi, len);
-            let z0 = zs[0].clone();
-            let f_at = |tau: f64, k: usize| -> f64 {
-                let zt = (&big * tau).exp() * &z0;
-                validity(mode, m.point(&zt, len, mode), lim)[k]
-            };
-            let (ta, tb) = (
-                (i - 1) as f64 * len / DEG as f64,
-                i as f64 * len / DEG as f64,
-            );
-            let fa = validity(mode, m.point(&zs[i - 1], len, mode), lim);
-            let fb = validity(mode, m.point(&zs[i], len, mode), lim);
-            // the earliest root among the functions that turned negative
-            let mut first: Option<(f64, usize)> = None;
-            for k in 0..2 {
-                if fb[k] >= 0.0 {
-                    continue;
+        if let Some((tau, k)) = first {
+            let zt = (m.augmented(mi, len) * tau).exp() * &zs[0];
+            let to = transition(mode, k, m.point(&zt, len, mode), conditional);
+            switch_to = Some(to);
+            if tau <= tol {
+                // at the piece start: switch now and redo the piece
+                zero_switches += 1;
+                if zero_switches > 16 {
+                    return Err(Error::new(
+                        "actuator",
+                        format!(
+                            "internal: the limit modes chatter at t = {t} (mode {mode:?}); \
+                             please report this loop"
+                        ),
+                    ));
                 }
-                let root = if fa[k] <= 0.0 {
-                    Some(ta)
-                } else {
-                    brent(
-                        |q| f_at(q, k),
-                        ta,
-                        tb,
-                        fa[k],
-                        fb[k],
-                        1e-15 * (t + len).max(1.0),
-                        200,
-                    )
-                    .map(|(q, _)| q)
-                };
-                if let Some(tau) = root {
-                    if first.is_none_or(|(t0, _)| tau < t0) {
-                        first = Some((tau, k));
-                    }
+                switch_at(&mut record, &mut sat_since, mode, to, t);
+                if (mode == Mode::Free) != (to == Mode::Free) {
+                    cuts.add(t + theta);
                 }
+                mode = to;
+                just_switched = true;
+                continue;
             }
-            if let Some((tau, k)) = first {
-                let zt = (&big * tau).exp() * &z0;
-                let to = transition(mode, k, m.point(&zt, len, mode), conditional);
-                switch_to = Some(to);
-                if tau <= tol {
-                    // at the piece start: switch now and redo the piece
-                    zero_switches += 1;
-                    if zero_switches > 16 {
-                        return Err(Error::new(
-                            "actuator",
-                            format!(
-                                "internal: the limit modes chatter at t = {t} (mode {mode:?}); \
-                                 please report this loop"
-                            ),
-                        ));
-                    }
-                    switch_at(&mut record, &mut sat_since, mode, to, t);
-                    if (mode == Mode::Free) != (to == Mode::Free) {
-                        cuts.add(t + theta);
-                    }
-                    mode = to;
-                    just_switched = true;
-                    continue;
-                }
-                t1 = t + tau;
-                let z = &mut zs[0];
-                wv(&mut wn, t, t1, &traj);
-                vinv.mul_to(&wn, &mut xi);
-                z.rows_mut(n, NODES).copy_from(&xi);
-                len = t1 - t;
-                propagate(&mut cache, &mut zs, mi, len);
-            }
+            t1 = t + tau;
+            let z = &mut zs[0];
+            wv(&mut wn, t, t1, &traj);
+            vinv.mul_to(&wn, &mut xi);
+            z.rows_mut(n, NODES).copy_from(&xi);
+            len = t1 - t;
+            propagate(&mut cache, &mut zs, mi, len);
         }
         zero_switches = 0;
         // store the piece: applied u + d at the nodes, y, v
@@ -973,4 +946,186 @@ pub(crate) fn integrate(
         diverged_at,
         record,
     })
+}
+
+/// What [`switch_first`] scans: the piece's node states `zs` (mode `mode`, its matrices
+/// `kind`, length `len`) and Brent's tolerance.
+struct SwitchScan<'a> {
+    m: &'a SatLoop,
+    forms: &'a PieceForms,
+    zs: &'a [DVector<f64>],
+    kind: usize,
+    mode: Mode,
+    len: f64,
+    lim: Limits,
+    xtol: f64,
+    vrows: &'a ValidityRows,
+}
+
+/// The validity functions of a mode on a piece of length `len` as affine functions of the
+/// augmented state, `f_k(z) = c₀[k] + c[k]·z` (their rows, for [`switch_first`]'s round-off
+/// bound; `len` enters through `ẇ`).
+type ValidityRows = ([f64; 2], [Vec<f64>; 2]);
+
+fn validity_rows(m: &SatLoop, mode: Mode, len: f64, lim: Limits, sz: usize) -> ValidityRows {
+    let val = |z: &DVector<f64>| validity(mode, m.point(z, len, mode), lim);
+    let mut unit = DVector::<f64>::zeros(sz);
+    let c0 = val(&unit);
+    let mut rows = [vec![0.0; sz], vec![0.0; sz]];
+    for i in 0..sz {
+        unit[i] = 1.0;
+        let f = val(&unit);
+        unit[i] = 0.0;
+        for (row, (fk, ck)) in rows.iter_mut().zip(f.iter().zip(&c0)) {
+            row[i] = fk - ck;
+        }
+    }
+    (c0, rows)
+}
+
+/// The first limit switch on a piece: `(τ, k)`, the earliest time at which validity function
+/// `k` of the mode turns negative, or `None`.
+///
+/// Each validity function is affine in the augmented state, `f(τ) = c₀ + c·exp(Mτ)·z₀`, so
+/// along the piece it is smooth and its degree-`DEG` interpolant `p` through the node values
+/// agrees with it to the interpolation accuracy the step rules hold (README "The step no
+/// longer follows dt"). `p`'s Bernstein coefficients on the piece bound it (convex hull): all
+/// above `−δ` (below), `p` stays above `−δ` and the mode holds on the whole piece, the usual
+/// case, decided by 8 sums. Otherwise the first place `σ₁` where `p` reaches `−δ` is isolated
+/// by halving and bisection ([`first_crossing`]), and the exact `f` is bracketed around
+/// `σ₁·len` (probes at distances doubling from `2⁻²⁰·len`, bounded by the piece's start and
+/// by the end of `p`'s dip below `−δ`: the interpolation error, ~1e-10 of `f`'s range, shifts
+/// a zero by about that fraction of the piece, so the first probe usually brackets it; each
+/// probe costs an exponential) and its zero located by Brent's method to round-off. A dip of
+/// `p` that the exact `f` does not share (a graze within the interpolation error) is no switch.
+///
+/// The threshold `δ` is the round-off of `p`, so that only a turn to negative beyond
+/// round-off counts (after a located switch the function starts at 0 to round-off, and
+/// the mode just entered must not be left again at once). With `S_j = |c₀| + Σ_i |c_i|·|z_{j,i}|`
+/// the size of the terms that cancel in `f` at node j: the node state `z_j` is `j ≤ DEG`
+/// products by the cached exponential (each with a componentwise error ≤ `sz·ε` times the
+/// terms it sums, which on a short piece are of the node states' size) and `f_j` one more sum
+/// of `sz + 1` terms, so `|δf_j| ≤ ((DEG + 1)·sz + 1)·ε·S_j`; the Bernstein coefficients are
+/// fixed combinations of the `f_j` (row sums of magnitudes ≤ `val_norm`, plus the `NODES`-term
+/// sum's own `NODES·ε·val_norm·max|f_j|`, `|f_j| ≤ S_j`), and `p` is a convex combination of
+/// them: `δ = val_norm·((DEG + 1)·sz + 1 + NODES)·ε·S` with `S = |c₀| + Σ_i |c_i|·max_j |z_{j,i}|
+/// ≥ max_j S_j`.
+fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
+    let SwitchScan {
+        m,
+        forms,
+        zs,
+        kind,
+        mode,
+        len,
+        lim,
+        xtol,
+        vrows,
+    } = *sw;
+    let sz = zs[0].len();
+    let val = |z: &DVector<f64>| validity(mode, m.point(z, len, mode), lim);
+    let (c0, rows) = (&vrows.0, &vrows.1);
+    let gamma = ((DEG + 1) * sz + 1 + NODES) as f64 * f64::EPSILON * forms.val_norm;
+    let mut first: Option<(f64, usize)> = None;
+    let mut big: Option<DMatrix<f64>> = None;
+    // |z| componentwise over the nodes, and both functions at the nodes
+    let mut zmax = vec![0.0f64; sz];
+    let mut fboth = [[0.0; 2]; NODES];
+    for (z, fj) in zs.iter().zip(fboth.iter_mut()) {
+        for (m, x) in zmax.iter_mut().zip(z.iter()) {
+            *m = m.max(x.abs());
+        }
+        *fj = val(z);
+    }
+    for k in 0..2 {
+        if !c0[k].is_finite() {
+            // an absent limit (or the sat mode's second function): never reached
+            continue;
+        }
+        let mut fv = [0.0; NODES];
+        for (f, fj) in fv.iter_mut().zip(&fboth) {
+            *f = fj[k];
+        }
+        // S = |c₀| + Σ_i |c_i|·max_j |z_{j,i}| ≥ max_j S_j
+        let s_max = c0[k].abs()
+            + rows[k]
+                .iter()
+                .zip(zmax.iter())
+                .map(|(c, x)| c.abs() * x)
+                .sum::<f64>();
+        let thr = gamma * s_max;
+        // Bernstein coefficients of p + δ (p's shifted by the constant δ: a partition of unity)
+        let mut q = [0.0; NODES];
+        for (qi, row) in q.iter_mut().zip(&forms.val) {
+            *qi = row.iter().zip(&fv).map(|(a, f)| a * f).sum::<f64>() + thr;
+        }
+        if q.iter().all(|x| *x > 0.0) {
+            continue;
+        }
+        let s1 = if q[0] <= 0.0 {
+            0.0
+        } else {
+            match first_crossing(&q, 0.0, 1.0, ZERO_DEPTH, &q) {
+                Some(s) => s,
+                None => continue,
+            }
+        };
+        let p_at = |s: f64| casteljau(&q, s) - thr;
+        let big = &*big.get_or_insert_with(|| m.augmented(kind, len));
+        let f_at = |tau: f64| -> f64 {
+            if tau <= 0.0 {
+                return fv[0];
+            }
+            let zt = (big * tau).exp() * &zs[0];
+            val(&zt)[k]
+        };
+        let tau1 = s1 * len;
+        let f1 = f_at(tau1);
+        let d0 = len * (-20.0f64).exp2();
+        // a bracket [a, b] of the exact f's zero: f(a) > 0 ≥ f(b) (a = 0 with f(0) ≤ 0: at
+        // the start)
+        let bracket = if f1 <= 0.0 {
+            let (mut b, mut fb, mut d) = (tau1, f1, d0);
+            loop {
+                let a = (tau1 - d).max(0.0);
+                let fa = f_at(a);
+                if fa > 0.0 {
+                    break Some((a, b, fa, fb));
+                }
+                if a <= 0.0 {
+                    break Some((0.0, 0.0, fa, fa));
+                }
+                (b, fb, d) = (a, fa, 2.0 * d);
+            }
+        } else {
+            let (mut a, mut fa, mut d) = (tau1, f1, d0);
+            loop {
+                let b = (tau1 + d).min(len);
+                let fb = f_at(b);
+                if fb <= 0.0 {
+                    break Some((a, b, fa, fb));
+                }
+                // past p's dip (or the piece's end) with f still positive: a graze
+                if b >= len || p_at(b / len) > 0.0 {
+                    break None;
+                }
+                (a, fa, d) = (b, fb, 2.0 * d);
+            }
+        };
+        let Some((a, b, fa, fb)) = bracket else {
+            continue;
+        };
+        let tau = if b <= 0.0 || fb == 0.0 {
+            b
+        } else {
+            match brent(f_at, a, b, fa, fb, xtol, 200) {
+                Some((x, _)) => x,
+                None => continue,
+            }
+        };
+        if first.is_none_or(|(t0, _)| tau < t0) {
+            first = Some((tau, k));
+        }
+    }
+    first
 }
