@@ -11,7 +11,7 @@
 //   bench/page-latency.mjs's steps
 //
 // CPU time of the main thread is the figure that holds on a shared machine; compare builds by
-// alternating runs (README, "The page: drag frames").
+// alternating runs (docs/PERFORMANCE.md, "The page: drag frames").
 import { pathToFileURL, fileURLToPath } from 'node:url';
 import { resolve, dirname, join } from 'node:path';
 import { loadavg } from 'node:os';

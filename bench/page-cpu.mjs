@@ -3,7 +3,7 @@
 // the animation-frame callbacks of the first frame after the input, or for undo/redo of the
 // first frame after the `popstate` that restores the state), the whole input until settled
 // (+300 ms: the history entry, the announcement), the longest task. CPU time, not wall time:
-// the figure that holds on a shared, loaded machine (README, "The page: a result applied inside
+// the figure that holds on a shared, loaded machine (docs/PERFORMANCE.md, "The page: a result applied inside
 // a frame").
 //
 // Controls (the third argument):

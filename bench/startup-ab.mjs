@@ -7,7 +7,7 @@
 //
 //   node bench/startup-ab.mjs [rounds] a.html b.html …      # default 8 rounds
 //
-// README, "First plots: the document's order and the start-up task".
+// docs/PERFORMANCE.md, "First plots: the document's order and the start-up task".
 import { resolve } from 'node:path';
 import { loadavg } from 'node:os';
 import { pathToFileURL } from 'node:url';

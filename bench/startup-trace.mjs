@@ -11,7 +11,7 @@
 //                                                         # a report per page, then a side-by-side table
 //
 // Per load it prints the timeline of the last load in detail and, over all loads, the median
-// of each mark and of each phase's summed duration. README, "The page's start-up, measured".
+// of each mark and of each phase's summed duration. docs/PERFORMANCE.md, "The page's start-up, measured".
 import { pathToFileURL, fileURLToPath } from 'node:url';
 import { resolve, dirname, join } from 'node:path';
 import { loadavg } from 'node:os';

@@ -1,5 +1,5 @@
 //! `cargo run --release --example bench_rules` — how long the slow rules take to tune (thread
-//! CPU time, unaffected by other processes; wall time beside it), for the README's "Slow rules"
+//! CPU time, unaffected by other processes; wall time beside it), for the "Slow rules" of docs/PERFORMANCE.md
 //! table:
 //!
 //! - Arvanitis 2012 Algorithm III, cold: the paper's outer iteration

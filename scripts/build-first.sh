@@ -11,7 +11,7 @@
 #                                             # an optimized module does not work)
 #
 # The page starts on it and compiles the full module (www/pkg) after its first plots:
-# README, "A first module".
+# docs/PERFORMANCE.md, "A first module".
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export PATH="$HOME/.cargo/bin:$PATH"

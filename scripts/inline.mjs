@@ -6,7 +6,7 @@
 // fetch do not work from file://). The first module (www/pkg-first, scripts/build-first.sh) is
 // compiled by the early script; the full one (www/pkg) is carried in a non-executed
 // `<script type="application/octet-stream" id="pidlab-wasm-full">` that engine.js reads and
-// compiles after the first plots (README, "A first module").
+// compiles after the first plots (docs/PERFORMANCE.md, "A first module").
 //
 // How the modules are combined: each module `M` becomes a scope
 //   const __m_M = (() => { <source without `export` keywords>; return Object.freeze({ ...exports }); })();
@@ -205,7 +205,7 @@ for (const f of readdirSync(www).filter((x) => x.endsWith('.js'))) {
   if (!modules.has(join(www, f)) && !worker.reached.includes(join(www, f))) fail(`www/${f} is not imported by app.js or worker.js (directly or through another module)`);
 }
 
-// The two modules are carried gzipped (zlib level 9; README, "The page's start-up, measured",
+// The two modules are carried gzipped (zlib level 9; docs/PERFORMANCE.md, "The page's start-up, measured",
 // branch startup3): the file is ~1.2 MB smaller, so there is that much less UTF-8 to decode and
 // HTML to tokenize before the page's script runs. The early script defines
 // PIDLAB_COMPILE_GZ(gzip bytes) -> Promise<WebAssembly.Module>: decompressed by
@@ -261,7 +261,7 @@ let script = [
 for (const s of [early, script]) if (/<\/script/i.test(s) || /<!--/.test(s)) fail('a script contains "</script" or "<!--"; cannot inline safely');
 if (/<\/style/i.test(css)) fail('style.css contains "</style"');
 
-// The document in ASCII only (README, "First plots: the document's order and the start-up
+// The document in ASCII only (docs/PERFORMANCE.md, "First plots: the document's order and the start-up
 // task"): a character beyond U+007F anywhere (a "λ" in a comment) makes Chromium decode its
 // chunk of the file into a 16-bit string, so that the tokenizer and V8's scanner then read
 // two bytes per character of the 1.8 MB. Every such character is written as an escape of the

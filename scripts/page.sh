@@ -8,7 +8,7 @@
 #   PORT=8080 bash scripts/page.sh     # another port
 #
 # Installs what is missing first (scripts/ensure-tools.sh). Builds the two modules of the page
-# (README, "A first module"): www/pkg/ (the full module: wasm-pack, target web) and
+# (docs/PERFORMANCE.md, "A first module"): www/pkg/ (the full module: wasm-pack, target web) and
 # www/pkg-first/ (the first module: scripts/build-first.sh), both through wasm-opt, and, once
 # the page has its bundler (scripts/build-page.sh), dist/pidlab.html: the whole page in one file
 # that works offline (open it straight from disk).

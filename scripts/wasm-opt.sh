@@ -11,7 +11,7 @@
 # download one on this network. npm's binaryen (version 132, pinned) works.
 #
 # -O3, not -Oz: on the boiler update both give the same size within 1 % (963 / 954 kB) and -O3
-# keeps the speed (README, "Module size"). The name section (107 kB of function names) goes too:
+# keeps the speed (docs/PERFORMANCE.md, "Module size"). The name section (107 kB of function names) goes too:
 # wasm-opt drops it without -g. The features rustc enabled (reference types, …) are read from the
 # module's target_features section.
 set -euo pipefail

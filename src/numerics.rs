@@ -450,7 +450,7 @@ pub(crate) fn col_major_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut 
 /// propagator (`f64x2.replace_lane` / `extract_lane` around each `f64x2.add`): here the sums
 /// stay vectors (`R/2` of them, and one scalar for an odd `R`). Lane by lane `acc + c·z_j` is
 /// the scalar loop's operation (IEEE products and sums, no fused multiply-add, the same order
-/// over `z`): bit-identical (README, "Node's simulate against native").
+/// over `z`): bit-identical (docs/PERFORMANCE.md, "Node's simulate against native").
 #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
 #[inline(always)]
 pub(crate) fn col_major_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut [f64]) {

@@ -127,7 +127,7 @@ fn a_short_excursion_between_nodes_is_found_and_located() {
     let (ea, eb) = rec.intervals[0];
     // y at every sample against the piecewise closed form (free, line, free from X(t_b)):
     // the samples are read on the pieces' degree-7 interpolants, which the step rules keep
-    // within 1e-10 anywhere in a piece (README "The step no longer follows dt"; here
+    // within 1e-10 anywhere in a piece (docs/PERFORMANCE.md "The step no longer follows dt"; here
     // h·ρ = 0.537); a switch time's error moves y only to second order (ẏ is continuous
     // there: v = L on both sides): 1e-10
     let xb = [

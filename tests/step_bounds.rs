@@ -112,7 +112,7 @@ fn fast_mode_bound_keeps_a_fast_derivative_filter_exact() {
     // The boiler under Luyben's PID (k_c 1.61, τ_I 11.5, τ_D 1.15) with a derivative filter
     // N = 100: no neutral term, the step is set by the filter's pole (h ≤ FAST_STEP/ρ(A), at
     // dt = θ so h ≤ dt does not bind). With degree 5 and the former 0.5/ρ the rule's θ/18 was
-    // ~1e-8 of the largest |u| off (README "The interpolation degree"); degree 7 at 0.65/ρ
+    // ~1e-8 of the largest |u| off (docs/PERFORMANCE.md "The interpolation degree"); degree 7 at 0.65/ρ
     // (θ/14, h·ρ = 0.62) gives ~4e-11 (`step_error laws`), where degree 5 was ~1e-8 as well.
     // Reference: the same method at θ/1920 (h·ρ ≈ 0.005: O(h⁸) puts its own error far below
     // the rule's). Tolerance 1e-9 as above (degree 5 at this step fails it by ten).

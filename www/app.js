@@ -303,7 +303,7 @@ function render(arrival = false) {
       // The first render (start-up): the Nyquist plot with the others; the metrics table and
       // the controller's section, below the fold, in the task after the frame that shows the
       // readouts and the response plots (their DOM would add ~10 ms of script and a second
-      // layout of the page to that frame: README, "First plots: the document's order and the
+      // layout of the page to that frame: docs/PERFORMANCE.md, "First plots: the document's order and the
       // start-up task"); a newer render before then shows its own.
       drawNyquist(r);
       showEnvelope(r);
@@ -557,7 +557,7 @@ async function main() {
   // the first design (the method panel's λ for Ms = 1.6, then tune, simulate, analyze), unless
   // carried by the page, is computed on this thread with the first module, in this task, and
   // its plots drawn at once: no worker round trip before the first plots (worker-client.js
-  // inlineStartup; README, "The page's start-up, measured"); every later call goes to the
+  // inlineStartup; docs/PERFORMANCE.md, "The page's start-up, measured"); every later call goes to the
   // workers (off after render() below, and after this task whatever happens in it)
   W.inlineStartup(true);
   setTimeout(() => W.inlineStartup(false), 0);

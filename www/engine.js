@@ -3,7 +3,7 @@
 // presets, export_code), and recovers from a trap. Every call that can take longer than a frame
 // runs in a computation worker instead (worker-client.js), on the same compiled modules.
 //
-// Two modules (README, "A first module"): the page starts on the small *first module*
+// Two modules (docs/PERFORMANCE.md, "A first module"): the page starts on the small *first module*
 // (pkg-first/pidlab_first: methods, presets, the default method's tune, continuous simulate,
 // analyze, freqresp, plot), and the *full module* (pkg/pidlab) is compiled lazily, after the
 // first plots are drawn (loadFull(): app.js; or as soon as a call needs it). Until it is ready,

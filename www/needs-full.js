@@ -1,4 +1,4 @@
-// The first module's refusal of a call only the full module serves (README, "A first module"):
+// The first module's refusal of a call only the full module serves (docs/PERFORMANCE.md, "A first module"):
 // its message ends with the crate's stable code `api::NEEDS_FULL_CODE` (src/api/mod.rs), after
 // the usual `<path>: ` prefix and wording; the page routes on this code, never on the wording.
 // Shared by the page (engine.js) and the computation worker (worker.js);

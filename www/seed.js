@@ -1,4 +1,4 @@
-// The first design of the default page, computed when dist/pidlab.html is built (README, "The
+// The first design of the default page, computed when dist/pidlab.html is built (docs/PERFORMANCE.md, "The
 // page's start-up, measured"): scripts/inline.mjs runs firstDesign() with the first module's own
 // wasm (instantiated in Node) and writes its answers into the single file as a data block,
 // `<script type="application/json" id="pidlab-first-design">`; at start-up the page puts them

@@ -25,7 +25,7 @@
 // when the full module is handed to the workers (upgrade()); a parked request is still dropped
 // when no pass wants it any more. From then on every call goes to the full module.
 //
-// Start-up (README, "The page's start-up, measured"): until the first plots are drawn, need()
+// Start-up (docs/PERFORMANCE.md, "The page's start-up, measured"): until the first plots are drawn, need()
 // of the design's own consumers (render, standin) computes tune, simulate and analyze on the
 // page's thread with its instance of the same first module (engine.js call()), memoized as a
 // worker's answer would be: the first design then waits for no worker (their start, their

@@ -238,7 +238,7 @@ pub const NEEDS_FULL_CODE: &str = "[needs_full]";
 
 /// The error of a call the first module cannot serve (built without the `full` feature): a
 /// caller that sees it (its message ends with [`NEEDS_FULL_CODE`]) is to call the full module
-/// instead, as the page does (README, "A first module").
+/// instead, as the page does (docs/PERFORMANCE.md, "A first module").
 pub fn needs_full(path: &str, what: &str) -> Error {
     Error::new(
         path,

@@ -30,7 +30,7 @@
 //! **exactly** for that input (matrix exponential of an augmented system, nalgebra). The only
 //! approximation is that interpolation of a smooth function on a short piece, so the error is
 //! `O(h⁸)` (degree 5, `O(h⁶)`, until issue 15's branch `engine4`: at the same 1e-10 degree 7
-//! takes steps 2.6–2.7× longer, README "The interpolation degree"). Output samples
+//! takes steps 2.6–2.7× longer, docs/PERFORMANCE.md "The interpolation degree"). Output samples
 //! `t_k = k·dt` are right-hand limits, interpolated within their piece; the metrics integrate
 //! the continuous piecewise-polynomial response.
 //!
@@ -172,7 +172,7 @@ pub fn simulate(plant: &Plant, c: &Controller, sc: &Scenario) -> Result<Response
 
 /// [`simulate`] with the internal step `h = θ/n` instead of the rule's (see the module docs),
 /// for measuring the method's error against the step (`examples/step_error.rs`); not for
-/// applications: a larger step than the rule's is less accurate (README, "The internal step").
+/// applications: a larger step than the rule's is less accurate (docs/PERFORMANCE.md, "The internal step").
 ///
 /// A controller with a model-based set-point loop runs its two-delay loop on the grid `θ/n`
 /// (cut at the events' reachable points as [`simulate`] does).

@@ -988,7 +988,7 @@ fn validity_rows(m: &SatLoop, mode: Mode, len: f64, lim: Limits, sz: usize) -> V
 ///
 /// Each validity function is affine in the augmented state, `f(τ) = c₀ + c·exp(Mτ)·z₀`, so
 /// along the piece it is smooth and its degree-`DEG` interpolant `p` through the node values
-/// agrees with it to the interpolation accuracy the step rules hold (README "The step no
+/// agrees with it to the interpolation accuracy the step rules hold (docs/PERFORMANCE.md "The step no
 /// longer follows dt"). `p`'s Bernstein coefficients on the piece bound it (convex hull): all
 /// above `−δ` (below), `p` stays above `−δ` and the mode holds on the whole piece, the usual
 /// case, decided by 8 sums. Otherwise the first place `σ₁` where `p` reaches `−δ` is isolated

@@ -9,7 +9,7 @@ use nalgebra::{DMatrix, DVector};
 /// Interpolation degree on each piece (nodes per piece = DEG + 1). Degree 7 (degree 5 until
 /// issue 15's branch `engine4`): at the same 1e-10 it allows steps 2.7–3× longer (the step
 /// bounds in `single.rs`), and the monomial basis of 8 equispaced nodes stays well inside
-/// round-off (degree 9 equispaced stalled at 5e-11; README "The interpolation degree").
+/// round-off (degree 9 equispaced stalled at 5e-11; docs/PERFORMANCE.md "The interpolation degree").
 pub const DEG: usize = 7;
 /// Nodes per piece.
 pub const NODES: usize = DEG + 1;

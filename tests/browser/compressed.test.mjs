@@ -1,4 +1,4 @@
-// The single file carries both modules gzipped (scripts/inline.mjs; README, "The page's
+// The single file carries both modules gzipped (scripts/inline.mjs; docs/PERFORMANCE.md, "The page's
 // start-up, measured", branch startup3): the first one in the early script
 // (globalThis.PIDLAB_WASM_GZ), the full one in its data block (`data-encoding="gzip"`), each the
 // base64 of a gzip that the page unpacks with DecompressionStream (PIDLAB_COMPILE_GZ). Checked

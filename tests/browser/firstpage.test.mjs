@@ -1,4 +1,4 @@
-// The page's two modules (issue 15, README "A first module"): the page starts on the small first
+// The page's two modules (issue 15, docs/PERFORMANCE.md "A first module"): the page starts on the small first
 // module (www/pkg-first) and compiles the full one (www/pkg) after its first plots; a call the
 // first module refuses waits for the full one and is answered by it, the user never seeing the
 // refusal. The full module's load is held by a test hook (globalThis.PIDLAB_TEST_HOLD_FULL, a
