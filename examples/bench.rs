@@ -87,11 +87,7 @@ fn row(name: &str, s: &Stats) {
 }
 
 fn main() {
-    let runs: usize = std::env::args()
-        .nth(1)
-        .and_then(|a| a.parse().ok())
-        .unwrap_or(1000)
-        .max(200);
+    let runs = cpu::runs_arg(1000, 200);
     let plant = boiler();
     let scenario = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, 1.0);
     let ipd = Controller::from_desc(

@@ -24,11 +24,7 @@ mod cpu;
 use cpu::{boiler, cpu_now};
 
 fn main() {
-    let runs: usize = std::env::args()
-        .nth(1)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(200)
-        .max(1);
+    let runs = cpu::runs_arg(200, 1);
     let plant = boiler();
     let kc = 1.61;
     let c = Pid::parallel(kc, kc / 11.5, kc * 1.15)

@@ -16,11 +16,7 @@ mod cpu;
 use cpu::{boiler, time_runs};
 
 fn main() {
-    let runs: usize = std::env::args()
-        .nth(1)
-        .and_then(|a| a.parse().ok())
-        .unwrap_or(200)
-        .max(1);
+    let runs = cpu::runs_arg(200, 1);
     let plant = boiler();
     let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
     let c = rules::tune("praveen_kumar", &plant, &p)

@@ -65,3 +65,12 @@ pub fn boiler() -> Plant {
     }
     .plant()
 }
+
+/// The run count from the first command-line argument (`default` without one), at least `min`.
+pub fn runs_arg(default: usize, min: usize) -> usize {
+    std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(default)
+        .max(min)
+}
