@@ -224,3 +224,49 @@ fn the_saturating_loop_does_not_follow_dt() {
         }
     }
 }
+
+/// 3. A held limit samples as the limit itself: the samples `k·dt` now fall inside the pieces
+///    (the step does not follow `dt`), where the interpolant of a saturated piece's constant
+///    node values is that constant exactly (`sim::lagrange`'s constant case), not the
+///    barycentric quotient's round-off of it (`0.2500000000000002` for `u_max = 0.25` on the
+///    page before the fix). Before the load step `u` is the applied input itself (`d = 0`), so
+///    equality is exact, with no tolerance.
+#[wasm_bindgen_test(unsupported = test)]
+fn a_held_limit_samples_as_the_limit_itself() {
+    let plant = common::boiler();
+    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
+    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
+    let (lo, hi) = (-0.6, 1.5);
+    for aw in [AntiWindup::None, AntiWindup::Tracking { tt: None }] {
+        let rl = RealLoop {
+            limits: Limits::new(Some(lo), Some(hi)).unwrap(),
+            anti_windup: aw,
+            ..RealLoop::default()
+        };
+        let sc = Scenario::steps(30.0, 0.001, 0.0, 1.0, 15.0, 1.0);
+        let res = simulate_real(&plant, &c, &sc, &rl).unwrap();
+        let rec = res.limit_record.as_ref().unwrap();
+        let mut held = [0usize; 2];
+        for (t, u) in res.t.iter().zip(&res.u) {
+            if *t >= 15.0 {
+                break;
+            }
+            assert!(
+                *u >= lo && *u <= hi,
+                "{aw:?}: u({t}) = {u} beyond the limits"
+            );
+            // strictly inside a limit interval (a sample at a switch may be either side)
+            if rec.intervals.iter().any(|(a, b)| t > a && t < b) {
+                let at = if *u > 0.0 { hi } else { lo };
+                assert_eq!(
+                    u.to_bits(),
+                    at.to_bits(),
+                    "{aw:?}: u({t}) = {u} at the limit {at}"
+                );
+                held[usize::from(*u > 0.0)] += 1;
+            }
+        }
+        // (before the load step the set-point kick holds u_max: 803 samples at dt = 0.001)
+        assert!(held[1] > 100, "{aw:?}: the upper limit held: {held:?}");
+    }
+}

@@ -246,8 +246,24 @@ impl Trajectory {
     }
 }
 
-/// Barycentric Lagrange interpolation on DEG+1 equispaced nodes of [0, 1].
+/// The common value of node values that are all the same nonzero number (bit for bit): the
+/// interpolant is that constant, which the barycentric quotient `Σ q_j·v / Σ q_j` returns only
+/// to round-off. A held limit (`u = u_max` on a saturated piece) must sample as the limit
+/// itself wherever the sample falls in the piece (the step no longer follows `dt`, so samples
+/// are not nodes). Zero is left to the quotient (exactly ±0 there), so no other result changes
+/// a bit.
+#[inline]
+fn constant_nodes(vals: &[f64]) -> Option<f64> {
+    let v0 = vals[0];
+    (v0 != 0.0 && vals[1..].iter().all(|v| v.to_bits() == v0.to_bits())).then_some(v0)
+}
+
+/// Barycentric Lagrange interpolation on DEG+1 equispaced nodes of [0, 1] (constant node
+/// values: that constant exactly, [`constant_nodes`]).
 pub fn lagrange(vals: &[f64], s: f64) -> f64 {
+    if let Some(c) = constant_nodes(vals) {
+        return c;
+    }
     let mut num = 0.0;
     let mut den = 0.0;
     for ((&v, &w), &sj) in vals.iter().zip(BARY_W.iter()).zip(&SIGMA) {
@@ -295,8 +311,18 @@ fn lagrange2_simd(a: &[f64], b: &[f64], s: f64) -> Option<(f64, f64)> {
 }
 
 /// [`lagrange`] of two node sets at the same σ, sharing the barycentric weights (each result
-/// is the one `lagrange` gives, bit for bit).
+/// is the one `lagrange` gives, bit for bit, constant node values included).
 fn lagrange2(a: &[f64], b: &[f64], s: f64) -> (f64, f64) {
+    let (ra, rb) = lagrange2_quotients(a, b, s);
+    (
+        constant_nodes(a).unwrap_or(ra),
+        constant_nodes(b).unwrap_or(rb),
+    )
+}
+
+/// [`lagrange2`] without the constant case: the barycentric quotients.
+#[inline(always)]
+fn lagrange2_quotients(a: &[f64], b: &[f64], s: f64) -> (f64, f64) {
     #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
     if let Some(r) = lagrange2_simd(a, b, s) {
         return r;
@@ -382,10 +408,36 @@ mod tests {
         let mut ss = SIGMA.to_vec();
         ss.extend([1e-17, 1.0 - 1e-16, SIGMA[1] + 1e-16]);
         ss.extend((0..50).map(|i| i as f64 / 49.0 + 1e-3));
+        // (a constant node set too: lagrange's constant case)
+        let c = [0.25 + 1e-3; NODES];
         for s in ss {
             let (ya, yb) = lagrange2(&a, &b, s);
             assert_eq!(ya.to_bits(), lagrange(&a, s).to_bits(), "σ = {s}");
             assert_eq!(yb.to_bits(), lagrange(&b, s).to_bits(), "σ = {s}");
+            let (yc, ya2) = lagrange2(&c, &a, s);
+            assert_eq!(yc.to_bits(), lagrange(&c, s).to_bits(), "σ = {s}");
+            assert_eq!(ya2.to_bits(), ya.to_bits(), "σ = {s}");
         }
+    }
+
+    #[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+    fn constant_nodes_interpolate_to_the_constant_exactly() {
+        // a held limit sampled inside its piece is the limit itself, not the barycentric
+        // quotient's round-off of it (which this test shows differs for these values)
+        let mut quotient_differs = false;
+        for l in [0.25, -1.2, 1.5, -0.6, 0.1, 17.7] {
+            let c = [l; NODES];
+            for i in 0..200 {
+                let s = (i as f64 + 0.37) / 200.0;
+                assert_eq!(lagrange(&c, s).to_bits(), l.to_bits(), "L = {l}, σ = {s}");
+                let (y, v) = lagrange2(&c, &c, s);
+                assert_eq!((y.to_bits(), v.to_bits()), (l.to_bits(), l.to_bits()));
+                quotient_differs |= lagrange2_quotients(&c, &c, s).0 != l;
+            }
+        }
+        assert!(
+            quotient_differs,
+            "the quotient alone rounds some of these constants"
+        );
     }
 }
