@@ -124,16 +124,7 @@ pub(crate) fn bern_zeros<const N: usize>(
     full: &[f64; N],
     out: &mut impl FnMut(f64),
 ) {
-    let mut changes = 0;
-    let mut last = 0.0;
-    for &x in c {
-        if x.abs() > tol {
-            if last != 0.0 && (x > 0.0) != (last > 0.0) {
-                changes += 1;
-            }
-            last = x;
-        }
-    }
+    let changes = sign_changes(c, tol);
     if changes == 0 {
         return;
     }
@@ -172,6 +163,22 @@ pub(crate) fn bern_zeros<const N: usize>(
     bern_zeros(&right, mid, hi, tol, depth - 1, full, out);
 }
 
+/// The sign changes of the coefficients `c`, those within `tol` of 0 skipped (Descartes'
+/// rule: a bound on the zeros, of the same parity).
+fn sign_changes<const N: usize>(c: &[f64; N], tol: f64) -> usize {
+    let mut changes = 0;
+    let mut last = 0.0;
+    for &x in c {
+        if x.abs() > tol {
+            if last != 0.0 && (x > 0.0) != (last > 0.0) {
+                changes += 1;
+            }
+            last = x;
+        }
+    }
+    changes
+}
+
 /// The Bernstein coefficients of the halves `[lo, mid]` and `[mid, hi]` of the polynomial with
 /// coefficients `c` on `[lo, hi]` (de Casteljau at ½).
 fn halve<const N: usize>(c: &[f64; N]) -> ([f64; N], [f64; N]) {
@@ -201,16 +208,8 @@ pub(crate) fn first_crossing<const N: usize>(
     depth: u32,
     full: &[f64; N],
 ) -> Option<f64> {
-    let mut changes = 0;
-    let mut last = c[0];
-    for &x in &c[1..] {
-        if x != 0.0 {
-            if (x > 0.0) != (last > 0.0) {
-                changes += 1;
-            }
-            last = x;
-        }
-    }
+    // (c[0] > 0: the count from it, zeros skipped)
+    let changes = sign_changes(c, 0.0);
     if changes == 0 {
         return None;
     }
