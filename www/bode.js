@@ -80,8 +80,11 @@ export function drawBode(r, part = null) {
   const pins = store.state.pins.map((pin, i) => [pinResponse(pin), P.pinned()[i]]);
   const sig = [fr, ...pins.flatMap(([pr, run]) => [pr, run ? run.label + ' ' + run.color : ''])];
   const sizes = ['plot-bode-gang', 'plot-bode-mag', 'plot-bode-phase'].map((id) => { const z = cssSize.get(id); return z ? z.width + 'x' + z.height : ''; }).join() + ' ' + dpr();
-  if (last.sizes === sizes && last.sig.length === sig.length && last.sig.every((v, i) => v === sig[i])) return;
-  last.sig = [];
+  // (per part: a part drawn while the response was pending and drawn again in the next round
+  // of the panels must not be skipped because the other parts show the newest response)
+  const same = (k) => { const d = last[k]; return !!d && d.sizes === sizes && d.sig.length === sig.length && d.sig.every((v, i) => v === sig[i]); };
+  const draw = (k) => has(k) && !same(k);
+  if (![0, 1, 2].some(draw)) return;
   const x = fr.w.map(log10);
   const m = fr.marks;
   const pt = (w, v, label, color) => (Number.isFinite(w) && Number.isFinite(v) && v > 0 ? [{ x: Math.log10(w), y: 20 * Math.log10(v), label, color }] : []);
@@ -95,7 +98,7 @@ export function drawBode(r, part = null) {
   pins.forEach(([pr, run]) => {
     if (pr && run) gang.push({ label: '|S| ' + run.label, x: pr.w.map(log10), y: pr.s.map(db), color: run.color, faint: true, width: 1.5 });
   });
-  if (has(0)) {
+  if (draw(0)) {
     drawSpec({
       canvas: 'plot-bode-gang', kind: 'time', title: 'Gang of four (dB)', xlabel: 'log10 ω', ylabel: 'dB',
       series: gang,
@@ -103,9 +106,10 @@ export function drawBode(r, part = null) {
       yrange: gangRange(gang),
       vlines: Number.isFinite(m.bandwidth) ? [{ x: Math.log10(m.bandwidth), label: 'ω_bw', color: '#999999' }] : [],
     });
+    last[0] = { sig, sizes };
   }
   const lmag = fr.l_mag.map(db);
-  if (has(1)) {
+  if (draw(1)) {
     drawSpec({
       canvas: 'plot-bode-mag', kind: 'time', title: '|L(jω)| (dB)', xlabel: 'log10 ω', ylabel: 'dB',
       series: [
@@ -115,12 +119,13 @@ export function drawBode(r, part = null) {
       points: Number.isFinite(m.gm) && Number.isFinite(m.w_pc) ? [{ x: Math.log10(m.w_pc), y: -20 * Math.log10(m.gm), label: 'GM ' + fmt(20 * Math.log10(m.gm)) + ' dB', color: C.mark }] : [],
       vlines: Number.isFinite(m.w_gc) ? [{ x: Math.log10(m.w_gc), label: 'ω_gc', color: '#999999' }] : [],
     });
+    last[1] = { sig, sizes };
   }
   // the phase: clipped below −720° (a dead time keeps turning it) so the margins stay readable
   const lo = -720;
   const ph = fr.l_phase.map((v) => (v >= lo ? v : null));
   const pmPt = Number.isFinite(m.pm) && Number.isFinite(m.w_gc) ? [{ x: Math.log10(m.w_gc), y: -180 + m.pm, label: 'PM ' + fmt(m.pm) + '°', color: C.mark }] : [];
-  if (has(2)) {
+  if (draw(2)) {
     drawSpec({
       canvas: 'plot-bode-phase', kind: 'time', title: 'Phase of L(jω) (degrees, exact delay)', xlabel: 'log10 ω', ylabel: 'degrees',
       series: [
@@ -130,14 +135,14 @@ export function drawBode(r, part = null) {
       points: pmPt,
       vlines: Number.isFinite(m.w_pc) ? [{ x: Math.log10(m.w_pc), label: 'ω_pc', color: '#999999' }] : [],
     });
+    last[2] = { sig, sizes };
   }
   if (!lastPart) return;
   const text = summary(m);
   setText($('bode-summary'), text);
   for (const [id, v] of [['bode-ms', m.ms], ['bode-mt', m.mt], ['bode-bw', m.bandwidth]]) setText($(id), fmt(v));
-  last.sig = sig;
-  last.sizes = sizes;
 }
 
-// What drawBode drew last: the responses and pins (by identity) and the canvases' sizes.
-const last = { sig: [], sizes: '' };
+// What drawBode drew last in each part (canvas): the responses and pins (by identity) and the
+// canvases' sizes.
+const last = [null, null, null];
