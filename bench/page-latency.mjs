@@ -22,7 +22,9 @@
 //   drag: sliders only: an input in every animation frame (a drag; 60 frames), results
 //         computed in the worker meanwhile and superseded ones dropped:
 //           frame   = input -> the next painted frame, for every input of the drag;
-//           final   = the last input -> its result painted (what a user sees when the drag stops).
+//           final   = the last input -> its result painted (what a user sees when the drag stops);
+//           missed  = inputs whose next painted frame was not the next vsync's (input -> painted
+//                     over 25 ms, 1.5 frame intervals), beside those over 16.7 ms.
 // "painted" is the first task after the frame's animation-frame callbacks (its pixels are
 // committed). Times are the page's performance.now(). Needs dist/pidlab.html (bash
 // scripts/page.sh --no-serve) and Debian's /usr/bin/chromium (PIDLAB_CHROMIUM overrides).
@@ -320,20 +322,24 @@ for (const c of CONTROLS) {
     result: [q(s.result, 0.5), q(s.result, 0.95), Math.max(...s.result)],
     settled: [q(s.settled, 0.5), q(s.settled, 0.95), Math.max(...s.settled)],
   };
-  if (r.drag) row.drag = { frame: [q(r.drag.frames, 0.5), q(r.drag.frames, 0.95), Math.max(...r.drag.frames)], final: r.drag.final, cancelled: r.drag.stats.cancelled, dropped: r.drag.stats.dropped };
+  // frames missed during the drag: an input whose next painted frame came later than the next
+  // vsync's (input -> painted over 1.5 frame intervals of 60 Hz, 25 ms: latencies come in whole
+  // intervals, the input being posted right after the previous frame); `over` counts those over
+  // one interval, 16.7 ms, which includes the jitter of a frame painted on time
+  if (r.drag) row.drag = { frame: [q(r.drag.frames, 0.5), q(r.drag.frames, 0.95), Math.max(...r.drag.frames)], final: r.drag.final, cancelled: r.drag.stats.cancelled, dropped: r.drag.stats.dropped, n: r.drag.frames.length, missed: r.drag.frames.filter((x) => x > 1.5 * 1000 / 60).length, over: r.drag.frames.filter((x) => x > 1000 / 60).length };
   if (r.errors.length) row.errors = r.errors;
   rows.push(row);
   results[c.name] = row;
   const t = (a) => a.map(f).join(' / ');
-  console.log(`${c.name.padEnd(15)} frame ${t(row.frame).padEnd(18)} result ${t(row.result).padEnd(20)} settled ${t(row.settled).padEnd(20)}` + (row.drag ? ` drag frame ${t(row.drag.frame)}, final ${f(row.drag.final)}` : '') + (r.errors.length ? '  ERRORS: ' + r.errors.slice(0, 2).join(' | ') : ''));
+  console.log(`${c.name.padEnd(15)} frame ${t(row.frame).padEnd(18)} result ${t(row.result).padEnd(20)} settled ${t(row.settled).padEnd(20)}` + (row.drag ? ` drag frame ${t(row.drag.frame)}, final ${f(row.drag.final)}, missed ${row.drag.missed}/${row.drag.n} (over 16.7 ms ${row.drag.over})` : '') + (r.errors.length ? '  ERRORS: ' + r.errors.slice(0, 2).join(' | ') : ''));
 }
 
 console.log('\n## per control: p50 / p95 / max in ms (step: one input at a time; drag: an input every frame)');
-console.log('| control | n | input → next painted frame | input → result painted | input → settled | drag: input → next frame | drag: last input → result |');
-console.log('|---|---|---|---|---|---|---|');
+console.log('| control | n | input → next painted frame | input → result painted | input → settled | drag: input → next frame | drag: last input → result | drag: frames missed (> 25 ms) / over 16.7 ms |');
+console.log('|---|---|---|---|---|---|---|---|');
 for (const r of rows) {
   const t = (a) => a.map(f).join(' / ');
-  console.log(`| ${r.what} | ${r.n} | ${t(r.frame)} | ${t(r.result)} | ${t(r.settled)} | ${r.drag ? t(r.drag.frame) : ''} | ${r.drag ? f(r.drag.final) : ''} |`);
+  console.log(`| ${r.what} | ${r.n} | ${t(r.frame)} | ${t(r.result)} | ${t(r.settled)} | ${r.drag ? t(r.drag.frame) : ''} | ${r.drag ? f(r.drag.final) : ''} | ${r.drag ? `${r.drag.missed} / ${r.drag.over} of ${r.drag.n}` : ''} |`);
 }
 if (rows.length) {
   const all = rows.flatMap((r) => [r.frame[1]]);
