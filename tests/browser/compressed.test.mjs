@@ -134,6 +134,9 @@ test('the single file is ASCII only, and it shows exactly the text of www/ serve
       await page.goto(url);
       await H.ready(page);
       await page.evaluate(() => window.__pidlab.settled(true));
+      // the screen-reader summary (#announce) is written 700 ms after the readouts
+      // (readouts.js), later than settled(): wait for it, or the two texts differ by it
+      await page.waitForFunction(() => document.getElementById('announce').textContent !== '');
       seen.push(await page.evaluate(() => ({
         title: document.title,
         text: document.body.innerText,
