@@ -374,7 +374,7 @@ fn window_pass(traj: &Trajectory, a: f64, b: f64, shape: &mut Shape) -> Integral
         let s0 = (c0 - t0) / len;
         let s1 = (c1 - t0) / len;
         let whole = s0 == 0.0 && (1.0 - s1).abs() <= 1e-12;
-        parts.cut(&shape.forms, yv, s0, if whole { 1.0 } else { s1 });
+        parts.cut(shape.forms, yv, s0, if whole { 1.0 } else { s1 });
         shape.piece(t0, len, r, &parts);
         if whole && !node_sign_change(r, yv) {
             // y at the 8 points, point by point Σ_j l_j(σ_i)·y_j summed in j's order
@@ -705,7 +705,7 @@ fn bisect(mut lo: f64, mut hi: f64, inside: impl Fn(f64) -> bool) -> f64 {
 /// jump, the 10–90 % rise time and the settling time (the last exit from the band
 /// `|y − r_final| ≤ band`).
 struct Shape {
-    forms: PieceForms,
+    forms: &'static PieceForms,
     servo: bool,
     r_w: f64,
     sgn: f64,
@@ -731,7 +731,7 @@ struct Shape {
 impl Shape {
     fn new(servo: bool, r_w: f64, step: f64, band: f64) -> Shape {
         Shape {
-            forms: PieceForms::new(),
+            forms: PieceForms::shared(),
             servo,
             r_w,
             sgn: step.signum(),
@@ -769,11 +769,11 @@ impl Shape {
         for (c, &target) in self.cross.iter_mut().zip(&self.targets) {
             if c.is_none() {
                 *c = m
-                    .first_reach(&self.forms, |y| sgn * (y - target))
+                    .first_reach(self.forms, |y| sgn * (y - target))
                     .map(|s| t0 + s * len);
             }
         }
-        match m.last_exit(&self.forms, self.r_w, self.band) {
+        match m.last_exit(self.forms, self.r_w, self.band) {
             Exit::OutAtEnd => {
                 self.out_end = true;
                 self.ever_out = true;
@@ -852,7 +852,7 @@ fn window(res: &Response, sc: &Scenario, a: f64, b: f64, step: f64, servo: bool)
     let settling_time = if servo {
         shape.settling(a)
     } else {
-        settling_backwards(traj, &shape.forms, a, b, sc.settling_band * peak_error)
+        settling_backwards(traj, shape.forms, a, b, sc.settling_band * peak_error)
     };
     let (y_final, u_final) = ss.unwrap_or((
         res.y.last().copied().unwrap_or(0.0),

@@ -6,6 +6,7 @@
 
 use super::{lagrange, monomial_coeffs, DEG, NODES};
 use crate::numerics::bisect_predicate;
+use std::sync::OnceLock;
 
 /// Depth of the subdivision that isolates the zeros of `y′` on a piece (a cluster of zeros
 /// closer than `2⁻⁴⁰` of the piece is cut at the cluster's middle: `y` moves there by
@@ -32,6 +33,14 @@ pub(crate) struct PieceForms {
 }
 
 impl PieceForms {
+    /// The forms (they depend on [`DEG`] only), built on the first call and shared: every
+    /// simulation's metrics built them twice (one per window), ~1,300 operations with 64
+    /// divisions each time.
+    pub(crate) fn shared() -> &'static PieceForms {
+        static FORMS: OnceLock<PieceForms> = OnceLock::new();
+        FORMS.get_or_init(PieceForms::new)
+    }
+
     pub(crate) fn new() -> PieceForms {
         let binom = |n: usize, k: usize| -> f64 {
             (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)

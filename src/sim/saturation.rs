@@ -658,7 +658,7 @@ pub(crate) fn integrate(
         }
     }
     let vinv = start_interpolation_inverse()?;
-    let forms = PieceForms::new();
+    let forms = PieceForms::shared();
     let mut row_cache: HashMap<(Mode, u64), ValidityRows> = HashMap::new();
     let mut cache: HashMap<(usize, u64), DMatrix<f64>> = HashMap::new();
     let mut traj = Trajectory {
@@ -841,7 +841,7 @@ pub(crate) fn integrate(
             .or_insert_with(|| validity_rows(&m, mode, len, lim, sz));
         let first = switch_first(&SwitchScan {
             m: &m,
-            forms: &forms,
+            forms,
             zs: &zs,
             kind: mi,
             mode,
