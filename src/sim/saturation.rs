@@ -91,8 +91,8 @@ use crate::model::plant::Plant;
 use crate::model::poly::Poly;
 use crate::model::ss::{balance, realize_paths, Ss};
 use crate::model::tf::Tf;
-use crate::numerics::brent;
-use nalgebra::{DMatrix, DVector};
+use crate::numerics::{brent, col_major_rows, col_major_rows_dyn};
+use nalgebra::{DMatrix, DVector, DVectorView};
 use std::collections::{BTreeSet, HashMap};
 
 /// Hard cap on the number of pieces of one simulation.
@@ -458,7 +458,7 @@ impl Mode {
 
 /// The loop's switching functions at one state: `v`, the integrator's input `e` and
 /// `s = dv_rest/dt` (conditional only; 0 otherwise), and the output `y`.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 struct Point {
     v: f64,
     e: f64,
@@ -476,9 +476,9 @@ struct Rows {
 
 impl SatLoop {
     /// The switching functions at `z` in `mode` (θ = 0: the mode decides the plant input).
-    fn point(&self, z: &DVector<f64>, len: f64, mode: Mode) -> Point {
+    fn point(&self, z: &[f64], len: f64, mode: Mode) -> Point {
         let n = self.order();
-        let x = z.rows(0, n);
+        let x = DVectorView::from_slice(&z[..n], n);
         let (xi0, r) = (z[n], z[n + NODES]);
         let gx = self.g.dot(&x) + self.hr * r;
         let (v, w, wdot) = if !self.direct {
@@ -505,6 +505,159 @@ impl SatLoop {
                 y,
             },
         }
+    }
+}
+
+impl SatLoop {
+    /// [`SatLoop::point`]'s quantities `v, y, e, s` as rows over the augmented state `z` of a
+    /// piece of length `len` (they are linear in it), for the unsaturated dynamics (`free`) or
+    /// a limit's (θ = 0 only: the mode decides the plant input), stored column by column
+    /// (`rows[4·j + q]`: quantity q's coefficient of `z_j`) for [`col_major_rows`].
+    fn point_rows(&self, free: bool, len: f64) -> Vec<f64> {
+        let n = self.order();
+        let sz = n + NODES + 2;
+        let (i0, ir, il) = (n, n + NODES, n + NODES + 1);
+        // v's row, and w's (the plant input's)
+        let mut rv = vec![0.0; sz];
+        let mut rw = vec![0.0; sz];
+        for (r, g) in rv.iter_mut().zip(self.g.iter()) {
+            *r = *g;
+        }
+        rv[ir] = self.hr;
+        rv[i0] = self.e;
+        if !self.direct {
+            rw[i0] = 1.0;
+        } else if free {
+            // v = (g·X + h_r r + e d)/(1 − e), w = v + d
+            let ome = 1.0 - self.e;
+            for r in rv.iter_mut() {
+                *r /= ome;
+            }
+            rw.copy_from_slice(&rv);
+            rw[i0] += 1.0;
+        } else {
+            // w = L + d
+            rv[il] = self.e;
+            rw[i0] = 1.0;
+            rw[il] = 1.0;
+        }
+        // a quantity `q·X + q_w w + q_r r`
+        let lin = |q: &DVector<f64>, qw: f64, qr: f64| -> Vec<f64> {
+            let mut row: Vec<f64> = (0..sz)
+                .map(|j| if j < n { q[j] + qw * rw[j] } else { qw * rw[j] })
+                .collect();
+            row[ir] += qr;
+            row
+        };
+        let ry = lin(&self.yx, self.yw, 0.0);
+        let (re, rs) = match (&self.cond, &self.rows) {
+            (Some(cd), Some(rr)) => {
+                let mut rs = lin(&rr.sa, rr.sw, rr.sr);
+                if !self.direct {
+                    // `e·ẇ`, `ẇ(0) = ξ₁/len`
+                    rs[i0 + 1] += self.e / len;
+                }
+                (lin(&cd.ex, cd.ew, cd.er), rs)
+            }
+            _ => (vec![0.0; sz], vec![0.0; sz]),
+        };
+        let mut cols = vec![0.0; 4 * sz];
+        for j in 0..sz {
+            cols[4 * j..4 * j + 4].copy_from_slice(&[rv[j], ry[j], re[j], rs[j]]);
+        }
+        cols
+    }
+}
+
+/// The propagator of one piece length and dynamics kind (the cache's entry): the node
+/// states from the start state, and the switching functions at a state.
+struct PieceProp {
+    kind: usize,
+    len: f64,
+    /// `exp(M·len/DEG)` column by column (`sz × sz`, [`SatLoop::augmented`]): node `i + 1`'s
+    /// state from node `i`'s.
+    step: Vec<f64>,
+    /// [`SatLoop::point_rows`] of the kind.
+    rows: Vec<f64>,
+    /// `|row|` elementwise of v, e, s and e + s: the magnitudes of the validity functions'
+    /// coefficients ([`validity_terms`], for [`switch_first`]'s round-off bound).
+    abs: [Vec<f64>; 4],
+}
+
+impl PieceProp {
+    fn new(m: &SatLoop, kind: usize, len: f64) -> PieceProp {
+        let step = (m.augmented(kind, len) * (len / DEG as f64)).exp();
+        let rows = m.point_rows(kind == 0, len);
+        let abs = [[0, 0], [2, 2], [3, 3], [2, 3]].map(|[a, b]| {
+            rows.chunks_exact(4)
+                .map(|c| {
+                    if a == b {
+                        c[a].abs()
+                    } else {
+                        (c[a] + c[b]).abs()
+                    }
+                })
+                .collect()
+        });
+        PieceProp {
+            kind,
+            len,
+            step: step.as_slice().to_vec(),
+            rows,
+            abs,
+        }
+    }
+
+    /// The switching functions at the augmented state `z` (of a piece of this length).
+    #[inline]
+    fn point(&self, z: &[f64]) -> Point {
+        let mut o = [0.0; 4];
+        col_major_rows::<4>(&self.rows, z, &mut o);
+        Point {
+            v: o[0],
+            y: o[1],
+            e: o[2],
+            s: o[3],
+        }
+    }
+}
+
+/// The propagators met so far, by dynamics kind and piece length (bit for bit); the last one
+/// used is tried first (most pieces are whole steps in the mode of the piece before).
+#[derive(Default)]
+struct PropCache {
+    entries: Vec<PieceProp>,
+    index: HashMap<(usize, u64), usize>,
+    last: usize,
+}
+
+impl PropCache {
+    fn get(&mut self, m: &SatLoop, kind: usize, len: f64) -> &PieceProp {
+        let hit = self
+            .entries
+            .get(self.last)
+            .is_some_and(|e| e.kind == kind && e.len.to_bits() == len.to_bits());
+        if !hit {
+            let entries = &mut self.entries;
+            self.last = *self.index.entry((kind, len.to_bits())).or_insert_with(|| {
+                entries.push(PieceProp::new(m, kind, len));
+                entries.len() - 1
+            });
+        }
+        &self.entries[self.last]
+    }
+}
+
+/// The validity functions' constant terms `c₀` (infinite: an absent function) and which of
+/// [`PieceProp::abs`] are the magnitudes of their coefficients (0: v, 1: e, 2: s, 3: e + s),
+/// as [`validity`] writes them: `f_k(z) = c₀[k] ± row·z`.
+fn validity_terms(mode: Mode, lim: Limits) -> [(f64, usize); 2] {
+    let l = |k: i8| if k > 0 { lim.u_max } else { lim.u_min };
+    match mode {
+        Mode::Free => [(lim.u_max, 0), (-lim.u_min, 0)],
+        Mode::Sat(k) => [(-f64::from(k) * l(k), 0), (f64::INFINITY, 0)],
+        Mode::Clamp(k) | Mode::Integ(k) => [(-f64::from(k) * l(k), 0), (0.0, 1)],
+        Mode::Slide(_) => [(0.0, 2), (0.0, 3)],
     }
 }
 
@@ -657,10 +810,10 @@ pub(crate) fn integrate(
             cuts.add(ev.time);
         }
     }
-    let vinv = start_interpolation_inverse()?;
+    // V⁻¹ column by column (the monomial coefficients of the delayed input from its nodes)
+    let vinv: Vec<f64> = start_interpolation_inverse()?.as_slice().to_vec();
     let forms = PieceForms::new();
-    let mut row_cache: HashMap<(Mode, u64), ValidityRows> = HashMap::new();
-    let mut cache: HashMap<(usize, u64), DMatrix<f64>> = HashMap::new();
+    let mut props = PropCache::default();
     let mut traj = Trajectory {
         h,
         offsets: vec![0.0],
@@ -692,7 +845,7 @@ pub(crate) fn integrate(
         -1 => lim.u_min,
         _ => 0.0,
     };
-    let mut x = DVector::<f64>::zeros(n);
+    let mut x = vec![0.0; n];
     let mut mode = Mode::Free;
     let mut sat_since = 0.0;
     let mut t = 0.0;
@@ -707,13 +860,15 @@ pub(crate) fn integrate(
         }
     };
     // work buffers (no allocation per piece)
-    let mut wn = DVector::<f64>::zeros(NODES);
-    let mut xi = DVector::<f64>::zeros(NODES);
-    let mut zs: Vec<DVector<f64>> = (0..NODES).map(|_| DVector::zeros(sz)).collect();
+    let mut wn = [0.0; NODES];
+    let mut xi = [0.0; NODES];
+    // the node states, node j at `zs[j·sz..(j + 1)·sz]`, and their switching functions
+    let mut zs = vec![0.0; NODES * sz];
+    let mut pts = [Point::default(); NODES];
     // the delayed input's node values on [t0, t1] (one earlier piece's restriction) into `wn`
     let direct = m.direct;
     let cursor = std::cell::Cell::new(0usize);
-    let wv = |wn: &mut DVector<f64>, t0: f64, t1: f64, traj: &Trajectory| {
+    let wv = |wn: &mut [f64; NODES], t0: f64, t1: f64, traj: &Trajectory| {
         wn.fill(0.0);
         if direct {
             // θ = 0: the w slot carries the load d (constant on the piece)
@@ -744,17 +899,15 @@ pub(crate) fn integrate(
             *wi = lagrange(vals, s);
         }
     };
-    // the node states of a piece from its start `zs[0]` (one cached exponential per length)
-    let propagate = |cache: &mut HashMap<(usize, u64), DMatrix<f64>>,
-                     zs: &mut [DVector<f64>],
-                     mi: usize,
-                     len: f64| {
-        let step = cache
-            .entry((mi, len.to_bits() >> 8))
-            .or_insert_with(|| (m.augmented(mi, len) * (len / DEG as f64)).exp());
+    // the node states of a piece from its start `zs[0..sz]` (one cached exponential per kind
+    // and length), and their switching functions
+    let propagate = |pp: &PieceProp, zs: &mut [f64], pts: &mut [Point; NODES]| {
         for i in 1..NODES {
-            let (head, tail) = zs.split_at_mut(i);
-            step.mul_to(&head[i - 1], &mut tail[0]);
+            let (head, tail) = zs.split_at_mut(i * sz);
+            col_major_rows_dyn(sz, &pp.step, &head[(i - 1) * sz..], &mut tail[..sz]);
+        }
+        for (p, z) in pts.iter_mut().zip(zs.chunks_exact(sz)) {
+            *p = pp.point(z);
         }
     };
     // `(applied u, reported v)` of a mode at a point
@@ -791,11 +944,11 @@ pub(crate) fn integrate(
         }
         let r = step_at(&sc.setpoint, t);
         let d = step_at(&sc.disturbance, t);
-        let z = &mut zs[0];
-        z.rows_mut(0, n).copy_from(&x);
+        let z = &mut zs[..sz];
+        z[..n].copy_from_slice(&x);
         wv(&mut wn, t, t1, &traj);
-        vinv.mul_to(&wn, &mut xi);
-        z.rows_mut(n, NODES).copy_from(&xi);
+        col_major_rows::<NODES>(&vinv, &wn, &mut xi);
+        z[n..n + NODES].copy_from_slice(&xi);
         z[n + NODES] = r;
         z[n + NODES + 1] = lval(mode);
         // a jump across a switching surface at the piece start re-classifies the mode here
@@ -828,32 +981,31 @@ pub(crate) fn integrate(
         }
         if let Mode::Slide(_) = mode {
             // on the sliding surface the integral holds v at the limit
-            let p = m.point(&zs[0], t1 - t, mode);
-            zs[0][0] += (lval(mode) - p.v) / m.g[0];
+            let p = m.point(&zs[..sz], t1 - t, mode);
+            zs[0] += (lval(mode) - p.v) / m.g[0];
         }
         let mi = mode.kind();
         let mut len = t1 - t;
-        propagate(&mut cache, &mut zs, mi, len);
+        let mut pp = props.get(&m, mi, len);
+        propagate(pp, &mut zs, &mut pts);
         // the first place on the piece where a validity function turns negative (on its
         // interpolant: `switch_first`), refined on the exact function
-        let vrows = row_cache
-            .entry((mode, len.to_bits()))
-            .or_insert_with(|| validity_rows(&m, mode, len, lim, sz));
         let first = switch_first(&SwitchScan {
             m: &m,
             forms: &forms,
             zs: &zs,
+            pts: &pts,
+            pp,
             kind: mi,
             mode,
             len,
             lim,
             xtol: 1e-15 * (t + len).max(1.0),
-            vrows,
         });
         let mut switch_to = None;
         if let Some((tau, k)) = first {
-            let zt = (m.augmented(mi, len) * tau).exp() * &zs[0];
-            let to = transition(mode, k, m.point(&zt, len, mode), conditional);
+            let zt = (m.augmented(mi, len) * tau).exp() * DVector::from_column_slice(&zs[..sz]);
+            let to = transition(mode, k, m.point(zt.as_slice(), len, mode), conditional);
             switch_to = Some(to);
             if tau <= tol {
                 // at the piece start: switch now and redo the piece
@@ -876,18 +1028,17 @@ pub(crate) fn integrate(
                 continue;
             }
             t1 = t + tau;
-            let z = &mut zs[0];
             wv(&mut wn, t, t1, &traj);
-            vinv.mul_to(&wn, &mut xi);
-            z.rows_mut(n, NODES).copy_from(&xi);
+            col_major_rows::<NODES>(&vinv, &wn, &mut xi);
+            zs[n..n + NODES].copy_from_slice(&xi);
             len = t1 - t;
-            propagate(&mut cache, &mut zs, mi, len);
+            pp = props.get(&m, mi, len);
+            propagate(pp, &mut zs, &mut pts);
         }
         zero_switches = 0;
         // store the piece: applied u + d at the nodes, y, v
         let mut bad = false;
-        for zi in zs.iter() {
-            let p = m.point(zi, len, mode);
+        for p in pts {
             let y = p.y;
             let (u, v) = uv(mode, p);
             if !(v.abs() <= limit && y.abs() <= limit) {
@@ -902,10 +1053,9 @@ pub(crate) fn integrate(
         }
         traj.lens.push(t1 - t);
         traj.n_pieces += 1;
-        x.copy_from(&zs[DEG].rows(0, n));
+        x.copy_from_slice(&zs[DEG * sz..DEG * sz + n]);
         if let Mode::Slide(_) = mode {
-            let p = m.point(&zs[DEG], len, mode);
-            x[0] += (lval(mode) - p.v) / m.g[0];
+            x[0] += (lval(mode) - pts[DEG].v) / m.g[0];
         }
         if bad || !x.iter().all(|q| q.is_finite()) {
             diverged_at = Some(t);
@@ -949,38 +1099,19 @@ pub(crate) fn integrate(
 }
 
 /// What [`switch_first`] scans: the piece's node states `zs` (mode `mode`, its matrices
-/// `kind`, length `len`) and Brent's tolerance.
+/// `kind`, length `len`, propagator `pp`), their switching functions `pts`, and Brent's
+/// tolerance.
 struct SwitchScan<'a> {
     m: &'a SatLoop,
     forms: &'a PieceForms,
-    zs: &'a [DVector<f64>],
+    zs: &'a [f64],
+    pts: &'a [Point; NODES],
+    pp: &'a PieceProp,
     kind: usize,
     mode: Mode,
     len: f64,
     lim: Limits,
     xtol: f64,
-    vrows: &'a ValidityRows,
-}
-
-/// The validity functions of a mode on a piece of length `len` as affine functions of the
-/// augmented state, `f_k(z) = c₀[k] + c[k]·z` (their rows, for [`switch_first`]'s round-off
-/// bound; `len` enters through `ẇ`).
-type ValidityRows = ([f64; 2], [Vec<f64>; 2]);
-
-fn validity_rows(m: &SatLoop, mode: Mode, len: f64, lim: Limits, sz: usize) -> ValidityRows {
-    let val = |z: &DVector<f64>| validity(mode, m.point(z, len, mode), lim);
-    let mut unit = DVector::<f64>::zeros(sz);
-    let c0 = val(&unit);
-    let mut rows = [vec![0.0; sz], vec![0.0; sz]];
-    for i in 0..sz {
-        unit[i] = 1.0;
-        let f = val(&unit);
-        unit[i] = 0.0;
-        for (row, (fk, ck)) in rows.iter_mut().zip(f.iter().zip(&c0)) {
-            row[i] = fk - ck;
-        }
-    }
-    (c0, rows)
 }
 
 /// The first limit switch on a piece: `(τ, k)`, the earliest time at which validity function
@@ -1015,30 +1146,31 @@ fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
         m,
         forms,
         zs,
+        pts,
+        pp,
         kind,
         mode,
         len,
         lim,
         xtol,
-        vrows,
     } = *sw;
-    let sz = zs[0].len();
-    let val = |z: &DVector<f64>| validity(mode, m.point(z, len, mode), lim);
-    let (c0, rows) = (&vrows.0, &vrows.1);
+    let sz = zs.len() / NODES;
+    let val = |z: &[f64]| validity(mode, pp.point(z), lim);
+    let terms = validity_terms(mode, lim);
     let gamma = ((DEG + 1) * sz + 1 + NODES) as f64 * f64::EPSILON * forms.val_norm;
     let mut first: Option<(f64, usize)> = None;
-    let mut big: Option<DMatrix<f64>> = None;
+    let mut big: Option<(DMatrix<f64>, DVector<f64>)> = None;
     // |z| componentwise over the nodes, and both functions at the nodes
     let mut zmax = vec![0.0f64; sz];
     let mut fboth = [[0.0; 2]; NODES];
-    for (z, fj) in zs.iter().zip(fboth.iter_mut()) {
-        for (m, x) in zmax.iter_mut().zip(z.iter()) {
+    for ((z, fj), p) in zs.chunks_exact(sz).zip(fboth.iter_mut()).zip(pts) {
+        for (m, x) in zmax.iter_mut().zip(z) {
             *m = m.max(x.abs());
         }
-        *fj = val(z);
+        *fj = validity(mode, *p, lim);
     }
-    for k in 0..2 {
-        if !c0[k].is_finite() {
+    for (k, &(c0, ai)) in terms.iter().enumerate() {
+        if !c0.is_finite() {
             // an absent limit (or the sat mode's second function): never reached
             continue;
         }
@@ -1047,11 +1179,11 @@ fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
             *f = fj[k];
         }
         // S = |c₀| + Σ_i |c_i|·max_j |z_{j,i}| ≥ max_j S_j
-        let s_max = c0[k].abs()
-            + rows[k]
+        let s_max = c0.abs()
+            + pp.abs[ai]
                 .iter()
                 .zip(zmax.iter())
-                .map(|(c, x)| c.abs() * x)
+                .map(|(c, x)| c * x)
                 .sum::<f64>();
         let thr = gamma * s_max;
         // Bernstein coefficients of p + δ (p's shifted by the constant δ: a partition of unity)
@@ -1071,13 +1203,18 @@ fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
             }
         };
         let p_at = |s: f64| casteljau(&q, s) - thr;
-        let big = &*big.get_or_insert_with(|| m.augmented(kind, len));
+        let (big, z0) = &*big.get_or_insert_with(|| {
+            (
+                m.augmented(kind, len),
+                DVector::from_column_slice(&zs[..sz]),
+            )
+        });
         let f_at = |tau: f64| -> f64 {
             if tau <= 0.0 {
                 return fv[0];
             }
-            let zt = (big * tau).exp() * &zs[0];
-            val(&zt)[k]
+            let zt = (big * tau).exp() * z0;
+            val(zt.as_slice())[k]
         };
         let tau1 = s1 * len;
         let f1 = f_at(tau1);
