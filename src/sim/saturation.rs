@@ -93,7 +93,7 @@ use crate::model::ss::{balance, realize_paths, Ss};
 use crate::model::tf::Tf;
 use crate::numerics::{brent, col_major_rows, col_major_rows_dyn};
 use nalgebra::{DMatrix, DVector, DVectorView};
-use std::collections::{BTreeSet, HashMap};
+use std::collections::{BTreeMap, HashMap};
 
 /// Hard cap on the number of pieces of one simulation.
 const MAX_PIECES: usize = 2_000_000;
@@ -389,27 +389,72 @@ impl SatLoop {
     }
 }
 
-/// Ordered cut times (as bit patterns: positive floats order like their bits).
-struct Cuts(BTreeSet<u64>);
+/// A time on the piece grid: step `g` (a whole number) and offset `off ∈ [0, h)` within it,
+/// `t = g·h + off`. A piece's length is taken from the offsets (`(g₁ − g₀)·h + off₁ − off₀`),
+/// so the pieces between the same two offsets of different steps — a switch's copies
+/// `t* + kθ`, `θ = N·h`, are `(g + kN, off)` — have the same length bit for bit and share one
+/// propagator (as `t* + kθ` summed in floating point they drifted by up to ~60 ulp of t,
+/// a new length, so a new matrix exponential, at every copy).
+#[derive(Clone, Copy, Debug)]
+struct GridTime {
+    g: f64,
+    off: f64,
+}
+
+impl GridTime {
+    fn at(self, h: f64) -> f64 {
+        self.g * h + self.off
+    }
+
+    /// `self + τ` within its step (`τ ≤` the rest of the step), the step's end `(g + 1, 0)`
+    /// when within `tol` of it.
+    fn plus(self, tau: f64, h: f64, tol: f64) -> GridTime {
+        let off = self.off + tau;
+        if off >= h - tol {
+            GridTime {
+                g: self.g + 1.0,
+                off: 0.0,
+            }
+        } else {
+            GridTime { g: self.g, off }
+        }
+    }
+
+    /// The length from `self` to `b`.
+    fn to(self, b: GridTime, h: f64) -> f64 {
+        (b.g - self.g) * h + (b.off - self.off)
+    }
+}
+
+/// Ordered cut times (as bit patterns: positive floats order like their bits), each with
+/// its place on the grid.
+struct Cuts {
+    h: f64,
+    at: BTreeMap<u64, GridTime>,
+}
 
 impl Cuts {
-    fn add(&mut self, t: f64) {
+    fn add(&mut self, c: GridTime) {
+        let t = c.at(self.h);
         if t.is_finite() && t > 0.0 {
-            self.0.insert(t.to_bits());
+            self.at.entry(t.to_bits()).or_insert(c);
         }
     }
 
     /// The first cut later than `t + tol`.
-    fn next_after(&self, t: f64, tol: f64) -> Option<f64> {
+    fn next_after(&self, t: f64, tol: f64) -> Option<(f64, GridTime)> {
         let lo = (t + tol).max(0.0).to_bits() + 1;
-        self.0.range(lo..).next().map(|b| f64::from_bits(*b))
+        self.at
+            .range(lo..)
+            .next()
+            .map(|(b, c)| (f64::from_bits(*b), *c))
     }
 
     /// True when a cut lies within `tol` of `t`.
     fn contains(&self, t: f64, tol: f64) -> bool {
         let lo = (t - tol).max(0.0).to_bits();
         let hi = (t + tol).to_bits();
-        self.0.range(lo..=hi).next().is_some()
+        self.at.range(lo..=hi).next().is_some()
     }
 }
 
@@ -804,29 +849,46 @@ pub(crate) fn integrate(
             ),
         ));
     }
-    let mut cuts = Cuts(BTreeSet::new());
+    let mut cuts = Cuts {
+        h,
+        at: BTreeMap::new(),
+    };
+    // a step's copy one dead time later (θ = N·h; θ = 0: N = 0)
+    let n_theta = (theta / h).round();
+    let copy = |c: GridTime| GridTime {
+        g: c.g + n_theta,
+        off: c.off,
+    };
     for ev in [&sc.setpoint, &sc.disturbance] {
         if ev.size != 0.0 && ev.time <= t_end {
-            cuts.add(ev.time);
+            // (an event on a grid point, within tol, is no cut: the grid cuts there)
+            let g = ((ev.time + tol) / h).floor();
+            let off = ev.time - g * h;
+            if off > tol && off < h - tol {
+                cuts.add(GridTime { g, off });
+            }
         }
     }
     // V⁻¹ column by column (the monomial coefficients of the delayed input from its nodes)
     let vinv: Vec<f64> = start_interpolation_inverse()?.as_slice().to_vec();
     let forms = PieceForms::new();
     let mut props = PropCache::default();
+    // room for the grid's pieces and as many cuts again, at most 2¹⁶ pieces (4 MB a vector;
+    // they grow beyond that)
+    let est = (2 * ((t_end / h).ceil() as usize + 2)).min(1 << 16);
     let mut traj = Trajectory {
         h,
         offsets: vec![0.0],
-        lens: vec![],
-        starts: Some(vec![]),
+        lens: Vec::with_capacity(est),
+        starts: Some(Vec::with_capacity(est)),
         n_pieces: 0,
-        v: vec![],
-        y: vec![],
+        v: Vec::with_capacity(est * NODES),
+        y: Vec::with_capacity(est * NODES),
         setpoint: sc.setpoint,
         disturbance: sc.disturbance,
         tol,
     };
-    let mut v_nodes: Vec<f64> = vec![];
+    let mut v_nodes: Vec<f64> = Vec::with_capacity(est * NODES);
     let mut record = LimitRecord {
         limits: lim,
         intervals: vec![],
@@ -849,6 +911,7 @@ pub(crate) fn integrate(
     let mut mode = Mode::Free;
     let mut sat_since = 0.0;
     let mut t = 0.0;
+    let mut pos = GridTime { g: 0.0, off: 0.0 };
     let mut diverged_at = None;
     let mut just_switched = false;
     let mut zero_switches = 0usize;
@@ -935,13 +998,17 @@ pub(crate) fn integrate(
                 format!("more than {MAX_PIECES} pieces (limit switches): shorten t_end"),
             ));
         }
-        let grid = ((t + tol) / h).floor() + 1.0;
-        let mut t1 = (grid * h).min(t_stop);
-        if let Some(cn) = cuts.next_after(t, tol) {
+        let mut end = GridTime {
+            g: pos.g + 1.0,
+            off: 0.0,
+        };
+        let mut t1 = end.at(h);
+        if let Some((cn, c)) = cuts.next_after(t, tol) {
             if cn < t1 - tol {
-                t1 = cn;
+                (t1, end) = (cn, c);
             }
         }
+        let mut len = pos.to(end, h);
         let r = step_at(&sc.setpoint, t);
         let d = step_at(&sc.disturbance, t);
         let z = &mut zs[..sz];
@@ -954,7 +1021,7 @@ pub(crate) fn integrate(
         // a jump across a switching surface at the piece start re-classifies the mode here
         // (not right after a located switch: there the function is zero to round-off)
         if !just_switched {
-            let p = m.point(z, t1 - t, mode);
+            let p = m.point(z, len, mode);
             let f = validity(mode, p, lim);
             let off = matches!(mode, Mode::Slide(_)) && (p.v - lval(mode)).abs() > eps;
             let e0 = if matches!(mode, Mode::Slide(_)) {
@@ -972,7 +1039,7 @@ pub(crate) fn integrate(
                 if new_mode != mode {
                     switch_at(&mut record, &mut sat_since, mode, new_mode, t);
                     if (mode == Mode::Free) != (new_mode == Mode::Free) {
-                        cuts.add(t + theta);
+                        cuts.add(copy(pos));
                     }
                     mode = new_mode;
                     z[n + NODES + 1] = lval(mode);
@@ -981,11 +1048,10 @@ pub(crate) fn integrate(
         }
         if let Mode::Slide(_) = mode {
             // on the sliding surface the integral holds v at the limit
-            let p = m.point(&zs[..sz], t1 - t, mode);
+            let p = m.point(&zs[..sz], len, mode);
             zs[0] += (lval(mode) - p.v) / m.g[0];
         }
         let mi = mode.kind();
-        let mut len = t1 - t;
         let mut pp = props.get(&m, mi, len);
         propagate(pp, &mut zs, &mut pts);
         // the first place on the piece where a validity function turns negative (on its
@@ -1021,17 +1087,18 @@ pub(crate) fn integrate(
                 }
                 switch_at(&mut record, &mut sat_since, mode, to, t);
                 if (mode == Mode::Free) != (to == Mode::Free) {
-                    cuts.add(t + theta);
+                    cuts.add(copy(pos));
                 }
                 mode = to;
                 just_switched = true;
                 continue;
             }
-            t1 = t + tau;
+            end = pos.plus(tau, h, tol);
+            t1 = end.at(h);
             wv(&mut wn, t, t1, &traj);
             col_major_rows::<NODES>(&vinv, &wn, &mut xi);
             zs[n..n + NODES].copy_from_slice(&xi);
-            len = t1 - t;
+            len = pos.to(end, h);
             pp = props.get(&m, mi, len);
             propagate(pp, &mut zs, &mut pts);
         }
@@ -1051,7 +1118,7 @@ pub(crate) fn integrate(
         if let Some(s) = traj.starts.as_mut() {
             s.push(t);
         }
-        traj.lens.push(t1 - t);
+        traj.lens.push(len);
         traj.n_pieces += 1;
         x.copy_from_slice(&zs[DEG * sz..DEG * sz + n]);
         if let Mode::Slide(_) = mode {
@@ -1070,17 +1137,17 @@ pub(crate) fn integrate(
         }
         // a non-grid cut propagates its copy one dead time later (a switch only when it
         // changes the applied u's law)
-        let on_grid = ((t1 / h).round() * h - t1).abs() <= tol;
+        let on_grid = end.off <= tol;
         let u_switch = switch_to.is_some_and(|to| (to == Mode::Free) != (mode == Mode::Free));
         if !on_grid && (cuts.contains(t1, tol) || u_switch) {
-            cuts.add(t1 + theta);
+            cuts.add(copy(end));
         }
         if let Some(to) = switch_to {
             switch_at(&mut record, &mut sat_since, mode, to, t1);
             mode = to;
         }
         just_switched = switch_to.is_some();
-        t = t1;
+        (t, pos) = (t1, end);
     }
     if mode != Mode::Free {
         record.intervals.push((sat_since, t));
