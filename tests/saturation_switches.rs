@@ -8,6 +8,8 @@
 //!    nodes of the piece the loop takes, which the test shows by computing `v` there.
 //! 2. The benchmark's boiler with limits that are hit, at dt = 0.1, 0.01, 0.001: the same
 //!    pieces, the same trajectory at common sample times and the same limit intervals.
+//! 3. A held limit samples as the limit itself.
+//! 4. The same under a load (issue 15, branch satprop).
 
 mod common;
 
@@ -268,5 +270,54 @@ fn a_held_limit_samples_as_the_limit_itself() {
         }
         // (before the load step the set-point kick holds u_max: 803 samples at dt = 0.001)
         assert!(held[1] > 100, "{aw:?}: the upper limit held: {held:?}");
+    }
+}
+
+/// 4. A held limit samples as the limit itself under a load too. The trajectory stores the
+///    plant input `u + d`; a held limit's sample read back from it is `(L + d) − d`, which is
+///    `L` only when the subtraction is exact: here `L = −0.65`, `d = 1.7`, and
+///    `(−0.65 + 1.7) − 1.7 = −0.6500000000000001` (asserted first, so the test shows the case
+///    it needs; `(1.5 + 1.7) − 1.7 = 1.5000000000000002` as well). The set-point kick holds
+///    `u_max`, and the load step at 15 drives the valve to `u_max` briefly, then to `u_min`
+///    to the end: every sample strictly inside a limit interval must be the limit bit for
+///    bit, for each anti-windup (failed before branch satprop: `u(15.21) =
+///    1.5000000000000002`).
+#[wasm_bindgen_test(unsupported = test)]
+fn a_held_limit_under_a_load_samples_as_the_limit_itself() {
+    let (lo, hi, d) = (-0.65, 1.5, 1.7);
+    assert_ne!((lo + d) - d, lo, "the case needs an inexact (L + d) − d");
+    assert_ne!((hi + d) - d, hi, "the case needs an inexact (L + d) − d");
+    let plant = common::boiler();
+    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
+    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
+    for aw in [
+        AntiWindup::None,
+        AntiWindup::Tracking { tt: None },
+        AntiWindup::Conditional,
+    ] {
+        let rl = RealLoop {
+            limits: Limits::new(Some(lo), Some(hi)).unwrap(),
+            anti_windup: aw,
+            ..RealLoop::default()
+        };
+        let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, d);
+        let res = simulate_real(&plant, &c, &sc, &rl).unwrap();
+        let rec = res.limit_record.as_ref().unwrap();
+        let mut held = [0usize; 2];
+        for (t, u) in res.t.iter().zip(&res.u) {
+            // strictly inside a limit interval (a sample at a switch may be either side)
+            if rec.intervals.iter().any(|(a, b)| t > a && t < b) {
+                let at = if *u > 0.0 { hi } else { lo };
+                assert_eq!(
+                    u.to_bits(),
+                    at.to_bits(),
+                    "{aw:?}: u({t}) = {u} at the limit {at}"
+                );
+                held[usize::from(*u > 0.0)] += 1;
+            }
+        }
+        // u_min held after the load step (with d = 1.7 at 15: the last ~14 s, ~1400 samples)
+        assert!(held[0] > 1000, "{aw:?}: the lower limit held: {held:?}");
+        println!("{aw:?}: samples at u_min {}, at u_max {}", held[0], held[1]);
     }
 }

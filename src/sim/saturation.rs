@@ -459,10 +459,16 @@ impl Cuts {
 }
 
 /// The output of [`integrate`]: the trajectory (applied `u + d` and `y`), the controller
-/// output `v` at the same nodes, divergence time and the time at the limits.
+/// output `v` at the same nodes, the limit each piece holds, divergence time and the time at
+/// the limits.
 pub(crate) struct SatRun {
     pub traj: Trajectory,
     pub v_nodes: Vec<f64>,
+    /// Per piece: the limit `L` the applied input holds on it, NaN on an unsaturated piece.
+    /// The trajectory stores the plant input `L + d`, whose sample `(L + d) − d` is `L` only
+    /// when that subtraction is exact (`(−0.65 + 1.7) − 1.7 = −0.6500000000000001`): a
+    /// held limit's samples are taken from here, `L` exactly.
+    pub held: Vec<f64>,
     pub diverged_at: Option<f64>,
     pub record: LimitRecord,
 }
@@ -889,6 +895,7 @@ pub(crate) fn integrate(
         tol,
     };
     let mut v_nodes: Vec<f64> = Vec::with_capacity(est * NODES);
+    let mut held: Vec<f64> = Vec::with_capacity(est);
     let mut record = LimitRecord {
         limits: lim,
         intervals: vec![],
@@ -1115,6 +1122,11 @@ pub(crate) fn integrate(
             traj.y.push(y);
             v_nodes.push(v);
         }
+        held.push(if mode == Mode::Free {
+            f64::NAN
+        } else {
+            lval(mode)
+        });
         if let Some(s) = traj.starts.as_mut() {
             s.push(t);
         }
@@ -1133,6 +1145,7 @@ pub(crate) fn integrate(
                 s.truncate(k);
             }
             v_nodes.truncate(k * NODES);
+            held.truncate(k);
             break;
         }
         // a non-grid cut propagates its copy one dead time later (a switch only when it
@@ -1160,6 +1173,7 @@ pub(crate) fn integrate(
     Ok(SatRun {
         traj,
         v_nodes,
+        held,
         diverged_at,
         record,
     })
