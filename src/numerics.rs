@@ -444,40 +444,6 @@ pub(crate) fn col_major_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut 
     out[..R].copy_from_slice(&acc);
 }
 
-/// [`col_major_rows`] for a row count known only at run time: the counts the simulator meets
-/// (4: the saturating loop's point rows; 8: the interpolation inverse; 11…18: its augmented
-/// state, `n + NODES + 2` for loops of order 1…8; 15…22: the one-delay loop's propagator rows)
-/// take the constant-size kernel, others a plain loop with the same sums in the same order
-/// (bit-identical to it).
-#[inline]
-pub(crate) fn col_major_rows_dyn(rows: usize, cols: &[f64], z: &[f64], out: &mut [f64]) {
-    match rows {
-        4 => col_major_rows::<4>(cols, z, out),
-        8 => col_major_rows::<8>(cols, z, out),
-        11 => col_major_rows::<11>(cols, z, out),
-        12 => col_major_rows::<12>(cols, z, out),
-        13 => col_major_rows::<13>(cols, z, out),
-        14 => col_major_rows::<14>(cols, z, out),
-        15 => col_major_rows::<15>(cols, z, out),
-        16 => col_major_rows::<16>(cols, z, out),
-        17 => col_major_rows::<17>(cols, z, out),
-        18 => col_major_rows::<18>(cols, z, out),
-        19 => col_major_rows::<19>(cols, z, out),
-        20 => col_major_rows::<20>(cols, z, out),
-        21 => col_major_rows::<21>(cols, z, out),
-        22 => col_major_rows::<22>(cols, z, out),
-        _ => {
-            let out = &mut out[..rows];
-            out.fill(0.0);
-            for (col, &zj) in cols.chunks_exact(rows).zip(z) {
-                for (o, &c) in out.iter_mut().zip(col) {
-                    *o += c * zj;
-                }
-            }
-        }
-    }
-}
-
 /// [`col_major_rows`] in wasm with SIMD: the same sums, two rows to a 128-bit vector.
 /// rustc's own vectorization of the loop above kept the sums as scalars and packed two of them
 /// into a vector, multiplied and added, and unpacked them again for every column of the

@@ -91,7 +91,7 @@ use crate::model::plant::Plant;
 use crate::model::poly::Poly;
 use crate::model::ss::{balance, realize_paths, Ss};
 use crate::model::tf::Tf;
-use crate::numerics::{brent, col_major_rows, col_major_rows_dyn};
+use crate::numerics::{brent, col_major_rows};
 use nalgebra::{DMatrix, DVector, DVectorView};
 use std::collections::{BTreeMap, HashMap};
 
@@ -620,43 +620,97 @@ impl SatLoop {
     }
 }
 
-/// The propagator of one piece length and dynamics kind (the cache's entry): the node
-/// states from the start state, and the switching functions at a state.
+/// The propagator of one piece length and dynamics kind (the cache's entry), as rows over
+/// the piece's start state `z₀` (the one-delay loop's [`super::single`] `Prop`): the
+/// switching functions at the nodes and the end state are `row·z₀`, one column-major pass
+/// over `z₀` each, without the node states.
 struct PieceProp {
     kind: usize,
     len: f64,
-    /// `exp(M·len/DEG)` column by column (`sz × sz`, [`SatLoop::augmented`]): node `i + 1`'s
-    /// state from node `i`'s.
-    step: Vec<f64>,
-    /// [`SatLoop::point_rows`] of the kind.
+    /// [`SatLoop::point_rows`] of the kind (the switching functions at a state).
     rows: Vec<f64>,
-    /// `|row|` elementwise of v, e, s and e + s: the magnitudes of the validity functions'
-    /// coefficients ([`validity_terms`], for [`switch_first`]'s round-off bound).
-    abs: [Vec<f64>; 4],
+    /// `P·Φʲ` (P the point rows, `Φ = exp(M·len/DEG)`, [`SatLoop::augmented`]), rows
+    /// `4j + q` (quantity q of [`Point`] at node j), nodes 0–3 and 4–7, column by column
+    /// (`sz × 16` each).
+    nodes: [Vec<f64>; 2],
+    /// The first `n` rows of `Φ^DEG` (the end state X), padded with zero rows to 8, column by
+    /// column.
+    end: Vec<f64>,
+    /// `max_j |c|·|Φ|ʲ` elementwise for the validity functions' coefficient rows `c` of v, e,
+    /// s and e + s ([`validity_terms`]): with `|z₀|` it bounds the terms that cancel in a
+    /// validity function at any node ([`switch_first`]'s round-off bound).
+    bound: [Vec<f64>; 4],
 }
 
 impl PieceProp {
     fn new(m: &SatLoop, kind: usize, len: f64) -> PieceProp {
-        let step = (m.augmented(kind, len) * (len / DEG as f64)).exp();
+        let n = m.order();
+        let sz = n + NODES + 2;
+        let phi = (m.augmented(kind, len) * (len / DEG as f64)).exp();
+        let phi_abs = phi.abs();
         let rows = m.point_rows(kind == 0, len);
-        let abs = [[0, 0], [2, 2], [3, 3], [2, 3]].map(|[a, b]| {
-            rows.chunks_exact(4)
-                .map(|c| {
-                    if a == b {
-                        c[a].abs()
-                    } else {
-                        (c[a] + c[b]).abs()
-                    }
-                })
-                .collect()
-        });
+        let p = DMatrix::from_column_slice(4, sz, &rows);
+        // |c| of v, e, s, e + s
+        let mut c_abs = DMatrix::<f64>::zeros(4, sz);
+        for j in 0..sz {
+            let c = &rows[4 * j..4 * j + 4];
+            c_abs[(0, j)] = c[0].abs();
+            c_abs[(1, j)] = c[2].abs();
+            c_abs[(2, j)] = c[3].abs();
+            c_abs[(3, j)] = (c[2] + c[3]).abs();
+        }
+        let mut nodes = [vec![0.0; 16 * sz], vec![0.0; 16 * sz]];
+        let mut bound = c_abs.clone();
+        let (mut pj, mut bj) = (p, c_abs);
+        for j in 0..NODES {
+            if j > 0 {
+                pj = &pj * &phi;
+                bj = &bj * &phi_abs;
+                bound = bound.zip_map(&bj, f64::max);
+            }
+            let (half, r0) = (j / 4, 4 * (j % 4));
+            for col in 0..sz {
+                for q in 0..4 {
+                    nodes[half][16 * col + r0 + q] = pj[(q, col)];
+                }
+            }
+        }
+        let mut phi_deg = phi.clone();
+        for _ in 1..DEG {
+            phi_deg = &phi_deg * &phi;
+        }
+        let mut end = vec![0.0; 8 * sz];
+        for col in 0..sz {
+            for r in 0..n {
+                end[8 * col + r] = phi_deg[(r, col)];
+            }
+        }
         PieceProp {
             kind,
             len,
-            step: step.as_slice().to_vec(),
             rows,
-            abs,
+            nodes,
+            end,
+            bound: [0, 1, 2, 3].map(|q| bound.row(q).iter().copied().collect()),
         }
+    }
+
+    /// The switching functions at the nodes and the end state `X` (its first `n` entries)
+    /// of the piece from `z0`.
+    #[inline]
+    fn propagate(&self, z0: &[f64], pts: &mut [Point; NODES], x_end: &mut [f64; 8]) {
+        let mut o = [0.0; 2 * 16];
+        col_major_rows::<16>(&self.nodes[0], z0, &mut o[..16]);
+        col_major_rows::<16>(&self.nodes[1], z0, &mut o[16..]);
+        for (p, q) in pts.iter_mut().zip(o.chunks_exact(4)) {
+            *p = Point {
+                v: q[0],
+                y: q[1],
+                e: q[2],
+                s: q[3],
+            };
+        }
+        col_major_rows::<8>(&self.end, z0, x_end);
     }
 
     /// The switching functions at the augmented state `z` (of a piece of this length).
@@ -700,7 +754,7 @@ impl PropCache {
 }
 
 /// The validity functions' constant terms `c₀` (infinite: an absent function) and which of
-/// [`PieceProp::abs`] are the magnitudes of their coefficients (0: v, 1: e, 2: s, 3: e + s),
+/// [`PieceProp::bound`] bound the magnitudes of their coefficients (0: v, 1: e, 2: s, 3: e + s),
 /// as [`validity`] writes them: `f_k(z) = c₀[k] ± row·z`.
 fn validity_terms(mode: Mode, lim: Limits) -> [(f64, usize); 2] {
     let l = |k: i8| if k > 0 { lim.u_max } else { lim.u_min };
@@ -932,8 +986,9 @@ pub(crate) fn integrate(
     // work buffers (no allocation per piece)
     let mut wn = [0.0; NODES];
     let mut xi = [0.0; NODES];
-    // the node states, node j at `zs[j·sz..(j + 1)·sz]`, and their switching functions
-    let mut zs = vec![0.0; NODES * sz];
+    // the piece's start state, its switching functions at the nodes, its end state
+    let mut zs = vec![0.0; sz];
+    let mut x_end = [0.0; 8];
     let mut pts = [Point::default(); NODES];
     // the delayed input's node values on [t0, t1] (one earlier piece's restriction) into `wn`
     let direct = m.direct;
@@ -967,17 +1022,6 @@ pub(crate) fn integrate(
         for (i, wi) in wn.iter_mut().enumerate() {
             let s = (a + (b - a) * i as f64 / DEG as f64 - p0) / pl;
             *wi = lagrange(vals, s);
-        }
-    };
-    // the node states of a piece from its start `zs[0..sz]` (one cached exponential per kind
-    // and length), and their switching functions
-    let propagate = |pp: &PieceProp, zs: &mut [f64], pts: &mut [Point; NODES]| {
-        for i in 1..NODES {
-            let (head, tail) = zs.split_at_mut(i * sz);
-            col_major_rows_dyn(sz, &pp.step, &head[(i - 1) * sz..], &mut tail[..sz]);
-        }
-        for (p, z) in pts.iter_mut().zip(zs.chunks_exact(sz)) {
-            *p = pp.point(z);
         }
     };
     // `(applied u, reported v)` of a mode at a point
@@ -1060,13 +1104,13 @@ pub(crate) fn integrate(
         }
         let mi = mode.kind();
         let mut pp = props.get(&m, mi, len);
-        propagate(pp, &mut zs, &mut pts);
+        pp.propagate(&zs, &mut pts, &mut x_end);
         // the first place on the piece where a validity function turns negative (on its
         // interpolant: `switch_first`), refined on the exact function
         let first = switch_first(&SwitchScan {
             m: &m,
             forms: &forms,
-            zs: &zs,
+            z0: &zs,
             pts: &pts,
             pp,
             kind: mi,
@@ -1107,7 +1151,7 @@ pub(crate) fn integrate(
             zs[n..n + NODES].copy_from_slice(&xi);
             len = pos.to(end, h);
             pp = props.get(&m, mi, len);
-            propagate(pp, &mut zs, &mut pts);
+            pp.propagate(&zs, &mut pts, &mut x_end);
         }
         zero_switches = 0;
         // store the piece: applied u + d at the nodes, y, v
@@ -1132,7 +1176,7 @@ pub(crate) fn integrate(
         }
         traj.lens.push(len);
         traj.n_pieces += 1;
-        x.copy_from_slice(&zs[DEG * sz..DEG * sz + n]);
+        x.copy_from_slice(&x_end[..n]);
         if let Mode::Slide(_) = mode {
             x[0] += (lval(mode) - pts[DEG].v) / m.g[0];
         }
@@ -1179,13 +1223,13 @@ pub(crate) fn integrate(
     })
 }
 
-/// What [`switch_first`] scans: the piece's node states `zs` (mode `mode`, its matrices
-/// `kind`, length `len`, propagator `pp`), their switching functions `pts`, and Brent's
-/// tolerance.
+/// What [`switch_first`] scans: the piece's start state `z0` (mode `mode`, its matrices
+/// `kind`, length `len`, propagator `pp`), the switching functions at its nodes `pts`, and
+/// Brent's tolerance.
 struct SwitchScan<'a> {
     m: &'a SatLoop,
     forms: &'a PieceForms,
-    zs: &'a [f64],
+    z0: &'a [f64],
     pts: &'a [Point; NODES],
     pp: &'a PieceProp,
     kind: usize,
@@ -1213,20 +1257,24 @@ struct SwitchScan<'a> {
 ///
 /// The threshold `δ` is the round-off of `p`, so that only a turn to negative beyond
 /// round-off counts (after a located switch the function starts at 0 to round-off, and
-/// the mode just entered must not be left again at once). With `S_j = |c₀| + Σ_i |c_i|·|z_{j,i}|`
-/// the size of the terms that cancel in `f` at node j: the node state `z_j` is `j ≤ DEG`
-/// products by the cached exponential (each with a componentwise error ≤ `sz·ε` times the
-/// terms it sums, which on a short piece are of the node states' size) and `f_j` one more sum
-/// of `sz + 1` terms, so `|δf_j| ≤ ((DEG + 1)·sz + 1)·ε·S_j`; the Bernstein coefficients are
-/// fixed combinations of the `f_j` (row sums of magnitudes ≤ `val_norm`, plus the `NODES`-term
-/// sum's own `NODES·ε·val_norm·max|f_j|`, `|f_j| ≤ S_j`), and `p` is a convex combination of
-/// them: `δ = val_norm·((DEG + 1)·sz + 1 + NODES)·ε·S` with `S = |c₀| + Σ_i |c_i|·max_j |z_{j,i}|
-/// ≥ max_j S_j`.
+/// the mode just entered must not be left again at once). The node values are
+/// `f_j = c₀ + (c·Φʲ)·z₀` ([`PieceProp`]: `Φ` the cached step exponential, the row `c·Φʲ`
+/// formed by `j ≤ DEG` products, each with a componentwise error ≤ `sz·ε` times the terms it
+/// sums, then one more sum of `sz + 1` terms with `z₀`), so with
+/// `S_j = |c₀| + (|c|·|Φ|ʲ)·|z₀|`, the size of the terms that cancel in `f_j`,
+/// `|δf_j| ≤ ((DEG + 1)·sz + 1)·ε·S_j`; the Bernstein coefficients are fixed combinations of
+/// the `f_j` (row sums of magnitudes ≤ `val_norm`, plus the `NODES`-term sum's own
+/// `NODES·ε·val_norm·max|f_j|`, `|f_j| ≤ S_j`), and `p` is a convex combination of them:
+/// `δ = val_norm·((DEG + 1)·sz + 1 + NODES)·ε·S` with `S = |c₀| + max_j (|c|·|Φ|ʲ)·|z₀| ≥
+/// max_j S_j` (the row `max_j |c|·|Φ|ʲ` is [`PieceProp::bound`]). Until branch satprop the
+/// node states were formed one product at a time and `S` took `|z_j|` in place of
+/// `|Φ|ʲ·|z₀|` (no larger: the bound is now the same or looser by the cancellations within
+/// `Φʲ·z₀`, still of the order of `ε` times the terms).
 fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
     let SwitchScan {
         m,
         forms,
-        zs,
+        z0,
         pts,
         pp,
         kind,
@@ -1235,19 +1283,15 @@ fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
         lim,
         xtol,
     } = *sw;
-    let sz = zs.len() / NODES;
+    let sz = z0.len();
     let val = |z: &[f64]| validity(mode, pp.point(z), lim);
     let terms = validity_terms(mode, lim);
     let gamma = ((DEG + 1) * sz + 1 + NODES) as f64 * f64::EPSILON * forms.val_norm;
     let mut first: Option<(f64, usize)> = None;
     let mut big: Option<(DMatrix<f64>, DVector<f64>)> = None;
-    // |z| componentwise over the nodes, and both functions at the nodes
-    let mut zmax = vec![0.0f64; sz];
+    // both functions at the nodes
     let mut fboth = [[0.0; 2]; NODES];
-    for ((z, fj), p) in zs.chunks_exact(sz).zip(fboth.iter_mut()).zip(pts) {
-        for (m, x) in zmax.iter_mut().zip(z) {
-            *m = m.max(x.abs());
-        }
+    for (fj, p) in fboth.iter_mut().zip(pts) {
         *fj = validity(mode, *p, lim);
     }
     for (k, &(c0, ai)) in terms.iter().enumerate() {
@@ -1259,12 +1303,12 @@ fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
         for (f, fj) in fv.iter_mut().zip(&fboth) {
             *f = fj[k];
         }
-        // S = |c₀| + Σ_i |c_i|·max_j |z_{j,i}| ≥ max_j S_j
+        // S = |c₀| + max_j (|c|·|Φ|ʲ)·|z₀| ≥ max_j S_j
         let s_max = c0.abs()
-            + pp.abs[ai]
+            + pp.bound[ai]
                 .iter()
-                .zip(zmax.iter())
-                .map(|(c, x)| c * x)
+                .zip(z0)
+                .map(|(b, x)| b * x.abs())
                 .sum::<f64>();
         let thr = gamma * s_max;
         // Bernstein coefficients of p + δ (p's shifted by the constant δ: a partition of unity)
@@ -1284,12 +1328,8 @@ fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
             }
         };
         let p_at = |s: f64| casteljau(&q, s) - thr;
-        let (big, z0) = &*big.get_or_insert_with(|| {
-            (
-                m.augmented(kind, len),
-                DVector::from_column_slice(&zs[..sz]),
-            )
-        });
+        let (big, z0) =
+            &*big.get_or_insert_with(|| (m.augmented(kind, len), DVector::from_column_slice(z0)));
         let f_at = |tau: f64| -> f64 {
             if tau <= 0.0 {
                 return fv[0];

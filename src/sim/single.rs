@@ -7,7 +7,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::model::ss::{balance, realize, Ss};
-use crate::numerics::col_major_rows_dyn;
+use crate::numerics::col_major_rows;
 use nalgebra::{DMatrix, DVector};
 
 /// Hard cap on the number of pieces of one simulation.
@@ -143,11 +143,29 @@ struct Prop {
 impl Prop {
     /// `out[r] = row_r · z` for every row (summed in the order of `z`). Loops of order
     /// n ≤ 8 (rows `2·DEG + 1 … 2·DEG + 8`, 15…22 at degree 7) take a copy of the loop with
-    /// the row count a constant ([`col_major_rows_dyn`]), so the rows' sums stay in registers
-    /// (the same sums in the same order: bit-identical).
+    /// the row count a constant, so the rows' sums stay in registers (the same sums in the
+    /// same order: bit-identical).
     #[inline]
     fn apply(&self, z: &[f64], out: &mut [f64]) {
-        col_major_rows_dyn(self.rows, &self.cols, z, out);
+        const R: usize = 2 * DEG;
+        match self.rows - R {
+            1 => col_major_rows::<{ R + 1 }>(&self.cols, z, out),
+            2 => col_major_rows::<{ R + 2 }>(&self.cols, z, out),
+            3 => col_major_rows::<{ R + 3 }>(&self.cols, z, out),
+            4 => col_major_rows::<{ R + 4 }>(&self.cols, z, out),
+            5 => col_major_rows::<{ R + 5 }>(&self.cols, z, out),
+            6 => col_major_rows::<{ R + 6 }>(&self.cols, z, out),
+            7 => col_major_rows::<{ R + 7 }>(&self.cols, z, out),
+            8 => col_major_rows::<{ R + 8 }>(&self.cols, z, out),
+            _ => {
+                out.fill(0.0);
+                for (col, &zj) in self.cols.chunks_exact(self.rows).zip(z) {
+                    for (o, &c) in out.iter_mut().zip(col) {
+                        *o += c * zj;
+                    }
+                }
+            }
+        }
     }
 }
 
