@@ -17,7 +17,7 @@ use pidlab::model::controller::Pid;
 use pidlab::model::discrete::{AntiWindup, Limits};
 use pidlab::model::plant::Family;
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate_real, RealLoop, Scenario};
+use pidlab::sim::{simulate_real, RealLoop, Response, Scenario};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 const KP: f64 = 1.0;
@@ -227,6 +227,33 @@ fn the_saturating_loop_does_not_follow_dt() {
     }
 }
 
+/// The samples before `until` of a loop with limits `[lo, hi]`: each within the limits, and
+/// each strictly inside a limit interval (a sample at a switch may be either side) the limit
+/// itself, bit for bit; the counts of the latter at `lo` and at `hi`.
+fn held_samples(res: &Response, lo: f64, hi: f64, until: f64, what: &str) -> [usize; 2] {
+    let rec = res.limit_record.as_ref().unwrap();
+    let mut held = [0usize; 2];
+    for (t, u) in res.t.iter().zip(&res.u) {
+        if *t >= until {
+            break;
+        }
+        assert!(
+            *u >= lo && *u <= hi,
+            "{what}: u({t}) = {u} beyond the limits"
+        );
+        if rec.intervals.iter().any(|(a, b)| t > a && t < b) {
+            let at = if *u > 0.0 { hi } else { lo };
+            assert_eq!(
+                u.to_bits(),
+                at.to_bits(),
+                "{what}: u({t}) = {u} at the limit {at}"
+            );
+            held[usize::from(*u > 0.0)] += 1;
+        }
+    }
+    held
+}
+
 /// 3. A held limit samples as the limit itself: the samples `k·dt` now fall inside the pieces
 ///    (the step does not follow `dt`), where the interpolant of a saturated piece's constant
 ///    node values is that constant exactly (`sim::lagrange`'s constant case), not the
@@ -247,27 +274,7 @@ fn a_held_limit_samples_as_the_limit_itself() {
         };
         let sc = Scenario::steps(30.0, 0.001, 0.0, 1.0, 15.0, 1.0);
         let res = simulate_real(&plant, &c, &sc, &rl).unwrap();
-        let rec = res.limit_record.as_ref().unwrap();
-        let mut held = [0usize; 2];
-        for (t, u) in res.t.iter().zip(&res.u) {
-            if *t >= 15.0 {
-                break;
-            }
-            assert!(
-                *u >= lo && *u <= hi,
-                "{aw:?}: u({t}) = {u} beyond the limits"
-            );
-            // strictly inside a limit interval (a sample at a switch may be either side)
-            if rec.intervals.iter().any(|(a, b)| t > a && t < b) {
-                let at = if *u > 0.0 { hi } else { lo };
-                assert_eq!(
-                    u.to_bits(),
-                    at.to_bits(),
-                    "{aw:?}: u({t}) = {u} at the limit {at}"
-                );
-                held[usize::from(*u > 0.0)] += 1;
-            }
-        }
+        let held = held_samples(&res, lo, hi, 15.0, &format!("{aw:?}"));
         // (before the load step the set-point kick holds u_max: 803 samples at dt = 0.001)
         assert!(held[1] > 100, "{aw:?}: the upper limit held: {held:?}");
     }
@@ -302,20 +309,7 @@ fn a_held_limit_under_a_load_samples_as_the_limit_itself() {
         };
         let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, d);
         let res = simulate_real(&plant, &c, &sc, &rl).unwrap();
-        let rec = res.limit_record.as_ref().unwrap();
-        let mut held = [0usize; 2];
-        for (t, u) in res.t.iter().zip(&res.u) {
-            // strictly inside a limit interval (a sample at a switch may be either side)
-            if rec.intervals.iter().any(|(a, b)| t > a && t < b) {
-                let at = if *u > 0.0 { hi } else { lo };
-                assert_eq!(
-                    u.to_bits(),
-                    at.to_bits(),
-                    "{aw:?}: u({t}) = {u} at the limit {at}"
-                );
-                held[usize::from(*u > 0.0)] += 1;
-            }
-        }
+        let held = held_samples(&res, lo, hi, f64::INFINITY, &format!("{aw:?}"));
         // u_min held after the load step (with d = 1.7 at 15: the last ~14 s, ~1400 samples)
         assert!(held[0] > 1000, "{aw:?}: the lower limit held: {held:?}");
         println!("{aw:?}: samples at u_min {}, at u_max {}", held[0], held[1]);
