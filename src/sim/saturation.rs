@@ -16,8 +16,11 @@
 //! the unsaturated mode is neutral, the bound `h ≤ 0.6·θ·(1 − |e|)` of [`crate::sim`]'s "Near
 //! the neutral limit") and at every non-smooth instant — the set-point and load steps and every limit switch — and at
 //! all their copies `+ kθ`, so the delayed input on each piece is the restriction of one
-//! earlier piece's degree-7 polynomial (as in [`super::single`]). On a piece the augmented state
-//! `[x; ξ (monomial coefficients of w); r; L]` is propagated exactly by a matrix exponential.
+//! earlier piece's degree-7 polynomial (as in [`super::single`]); a cut is kept as its grid
+//! step and offset, so its copies give pieces of the same length bit for bit (`GridTime`).
+//! On a piece the augmented state `[x; ξ (monomial coefficients of w); r; L]` is propagated
+//! exactly by a matrix exponential, cached per dynamics and piece length as rows over the
+//! piece's start state (`PieceProp`: the switching functions at the nodes and the end state).
 //! The mode's validity functions (`v − u_max` and `v − u_min` while free; below) are affine
 //! in that state, so on a piece each is the smooth `τ ↦ c·exp(Mτ)·z`; its degree-7 interpolant
 //! through the `NODES` = 8 node values is tested for a turn below zero by the signs of its
