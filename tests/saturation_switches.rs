@@ -13,9 +13,9 @@
 
 mod common;
 
-use pidlab::model::controller::Pid;
+use pidlab::model::controller::{Controller, Pid};
 use pidlab::model::discrete::{AntiWindup, Limits};
-use pidlab::model::plant::Family;
+use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::{self, Params};
 use pidlab::sim::{simulate_real, RealLoop, Response, Scenario};
 use wasm_bindgen_test::wasm_bindgen_test;
@@ -166,6 +166,30 @@ fn a_short_excursion_between_nodes_is_found_and_located() {
     assert!((eb - t_b).abs() < tol, "end {eb} vs {t_b}");
 }
 
+/// The boiler under Praveen Kumar's default design (λ = 1.9, ε = 0.2).
+fn boiler_praveen() -> (Plant, Controller) {
+    let plant = common::boiler();
+    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
+    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
+    (plant, c)
+}
+
+/// Every anti-windup of the continuous loop.
+const ANTI_WINDUPS: [AntiWindup; 3] = [
+    AntiWindup::None,
+    AntiWindup::Tracking { tt: None },
+    AntiWindup::Conditional,
+];
+
+/// A valve `u ∈ [lo, hi]` with anti-windup `aw`.
+fn valve(lo: f64, hi: f64, aw: AntiWindup) -> RealLoop {
+    RealLoop {
+        limits: Limits::new(Some(lo), Some(hi)).unwrap(),
+        anti_windup: aw,
+        ..RealLoop::default()
+    }
+}
+
 /// The boiler under Praveen Kumar's design with limits [−0.6, 1.5] (the set-point kick hits
 /// u_max, the load step u_min), each anti-windup, at dt = 0.1, 0.01, 0.001: the internal step
 /// and the pieces do not depend on dt, so the samples at common times are read on the same
@@ -174,19 +198,9 @@ fn a_short_excursion_between_nodes_is_found_and_located() {
 /// intervals are the same switches: equal to 1e-12.
 #[wasm_bindgen_test(unsupported = test)]
 fn the_saturating_loop_does_not_follow_dt() {
-    let plant = common::boiler();
-    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
-    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
-    for aw in [
-        AntiWindup::None,
-        AntiWindup::Tracking { tt: None },
-        AntiWindup::Conditional,
-    ] {
-        let rl = RealLoop {
-            limits: Limits::new(Some(-0.6), Some(1.5)).unwrap(),
-            anti_windup: aw,
-            ..RealLoop::default()
-        };
+    let (plant, c) = boiler_praveen();
+    for aw in ANTI_WINDUPS {
+        let rl = valve(-0.6, 1.5, aw);
         let runs: Vec<_> = [0.1, 0.01, 0.001]
             .iter()
             .map(|dt| {
@@ -262,16 +276,10 @@ fn held_samples(res: &Response, lo: f64, hi: f64, until: f64, what: &str) -> [us
 ///    equality is exact, with no tolerance.
 #[wasm_bindgen_test(unsupported = test)]
 fn a_held_limit_samples_as_the_limit_itself() {
-    let plant = common::boiler();
-    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
-    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
+    let (plant, c) = boiler_praveen();
     let (lo, hi) = (-0.6, 1.5);
     for aw in [AntiWindup::None, AntiWindup::Tracking { tt: None }] {
-        let rl = RealLoop {
-            limits: Limits::new(Some(lo), Some(hi)).unwrap(),
-            anti_windup: aw,
-            ..RealLoop::default()
-        };
+        let rl = valve(lo, hi, aw);
         let sc = Scenario::steps(30.0, 0.001, 0.0, 1.0, 15.0, 1.0);
         let res = simulate_real(&plant, &c, &sc, &rl).unwrap();
         let held = held_samples(&res, lo, hi, 15.0, &format!("{aw:?}"));
@@ -294,19 +302,9 @@ fn a_held_limit_under_a_load_samples_as_the_limit_itself() {
     let (lo, hi, d) = (-0.65, 1.5, 1.7);
     assert_ne!((lo + d) - d, lo, "the case needs an inexact (L + d) − d");
     assert_ne!((hi + d) - d, hi, "the case needs an inexact (L + d) − d");
-    let plant = common::boiler();
-    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
-    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
-    for aw in [
-        AntiWindup::None,
-        AntiWindup::Tracking { tt: None },
-        AntiWindup::Conditional,
-    ] {
-        let rl = RealLoop {
-            limits: Limits::new(Some(lo), Some(hi)).unwrap(),
-            anti_windup: aw,
-            ..RealLoop::default()
-        };
+    let (plant, c) = boiler_praveen();
+    for aw in ANTI_WINDUPS {
+        let rl = valve(lo, hi, aw);
         let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, d);
         let res = simulate_real(&plant, &c, &sc, &rl).unwrap();
         let held = held_samples(&res, lo, hi, f64::INFINITY, &format!("{aw:?}"));
