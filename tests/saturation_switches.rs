@@ -8,14 +8,16 @@
 //!    nodes of the piece the loop takes, which the test shows by computing `v` there.
 //! 2. The benchmark's boiler with limits that are hit, at dt = 0.1, 0.01, 0.001: the same
 //!    pieces, the same trajectory at common sample times and the same limit intervals.
+//! 3. A held limit samples as the limit itself.
+//! 4. The same under a load (issue 15, branch satprop).
 
 mod common;
 
-use pidlab::model::controller::Pid;
+use pidlab::model::controller::{Controller, Pid};
 use pidlab::model::discrete::{AntiWindup, Limits};
-use pidlab::model::plant::Family;
+use pidlab::model::plant::{Family, Plant};
 use pidlab::rules::{self, Params};
-use pidlab::sim::{simulate_real, RealLoop, Scenario};
+use pidlab::sim::{simulate_real, RealLoop, Response, Scenario};
 use wasm_bindgen_test::wasm_bindgen_test;
 
 const KP: f64 = 1.0;
@@ -164,6 +166,30 @@ fn a_short_excursion_between_nodes_is_found_and_located() {
     assert!((eb - t_b).abs() < tol, "end {eb} vs {t_b}");
 }
 
+/// The boiler under Praveen Kumar's default design (λ = 1.9, ε = 0.2).
+fn boiler_praveen() -> (Plant, Controller) {
+    let plant = common::boiler();
+    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
+    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
+    (plant, c)
+}
+
+/// Every anti-windup of the continuous loop.
+const ANTI_WINDUPS: [AntiWindup; 3] = [
+    AntiWindup::None,
+    AntiWindup::Tracking { tt: None },
+    AntiWindup::Conditional,
+];
+
+/// A valve `u ∈ [lo, hi]` with anti-windup `aw`.
+fn valve(lo: f64, hi: f64, aw: AntiWindup) -> RealLoop {
+    RealLoop {
+        limits: Limits::new(Some(lo), Some(hi)).unwrap(),
+        anti_windup: aw,
+        ..RealLoop::default()
+    }
+}
+
 /// The boiler under Praveen Kumar's design with limits [−0.6, 1.5] (the set-point kick hits
 /// u_max, the load step u_min), each anti-windup, at dt = 0.1, 0.01, 0.001: the internal step
 /// and the pieces do not depend on dt, so the samples at common times are read on the same
@@ -172,19 +198,9 @@ fn a_short_excursion_between_nodes_is_found_and_located() {
 /// intervals are the same switches: equal to 1e-12.
 #[wasm_bindgen_test(unsupported = test)]
 fn the_saturating_loop_does_not_follow_dt() {
-    let plant = common::boiler();
-    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
-    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
-    for aw in [
-        AntiWindup::None,
-        AntiWindup::Tracking { tt: None },
-        AntiWindup::Conditional,
-    ] {
-        let rl = RealLoop {
-            limits: Limits::new(Some(-0.6), Some(1.5)).unwrap(),
-            anti_windup: aw,
-            ..RealLoop::default()
-        };
+    let (plant, c) = boiler_praveen();
+    for aw in ANTI_WINDUPS {
+        let rl = valve(-0.6, 1.5, aw);
         let runs: Vec<_> = [0.1, 0.01, 0.001]
             .iter()
             .map(|dt| {
@@ -225,6 +241,33 @@ fn the_saturating_loop_does_not_follow_dt() {
     }
 }
 
+/// The samples before `until` of a loop with limits `[lo, hi]`: each within the limits, and
+/// each strictly inside a limit interval (a sample at a switch may be either side) the limit
+/// itself, bit for bit; the counts of the latter at `lo` and at `hi`.
+fn held_samples(res: &Response, lo: f64, hi: f64, until: f64, what: &str) -> [usize; 2] {
+    let rec = res.limit_record.as_ref().unwrap();
+    let mut held = [0usize; 2];
+    for (t, u) in res.t.iter().zip(&res.u) {
+        if *t >= until {
+            break;
+        }
+        assert!(
+            *u >= lo && *u <= hi,
+            "{what}: u({t}) = {u} beyond the limits"
+        );
+        if rec.intervals.iter().any(|(a, b)| t > a && t < b) {
+            let at = if *u > 0.0 { hi } else { lo };
+            assert_eq!(
+                u.to_bits(),
+                at.to_bits(),
+                "{what}: u({t}) = {u} at the limit {at}"
+            );
+            held[usize::from(*u > 0.0)] += 1;
+        }
+    }
+    held
+}
+
 /// 3. A held limit samples as the limit itself: the samples `k·dt` now fall inside the pieces
 ///    (the step does not follow `dt`), where the interpolant of a saturated piece's constant
 ///    node values is that constant exactly (`sim::lagrange`'s constant case), not the
@@ -233,40 +276,40 @@ fn the_saturating_loop_does_not_follow_dt() {
 ///    equality is exact, with no tolerance.
 #[wasm_bindgen_test(unsupported = test)]
 fn a_held_limit_samples_as_the_limit_itself() {
-    let plant = common::boiler();
-    let p = Params::default().with("lambda", 1.9).with("epsilon", 0.2);
-    let c = rules::tune("praveen_kumar", &plant, &p).unwrap().controller;
+    let (plant, c) = boiler_praveen();
     let (lo, hi) = (-0.6, 1.5);
     for aw in [AntiWindup::None, AntiWindup::Tracking { tt: None }] {
-        let rl = RealLoop {
-            limits: Limits::new(Some(lo), Some(hi)).unwrap(),
-            anti_windup: aw,
-            ..RealLoop::default()
-        };
+        let rl = valve(lo, hi, aw);
         let sc = Scenario::steps(30.0, 0.001, 0.0, 1.0, 15.0, 1.0);
         let res = simulate_real(&plant, &c, &sc, &rl).unwrap();
-        let rec = res.limit_record.as_ref().unwrap();
-        let mut held = [0usize; 2];
-        for (t, u) in res.t.iter().zip(&res.u) {
-            if *t >= 15.0 {
-                break;
-            }
-            assert!(
-                *u >= lo && *u <= hi,
-                "{aw:?}: u({t}) = {u} beyond the limits"
-            );
-            // strictly inside a limit interval (a sample at a switch may be either side)
-            if rec.intervals.iter().any(|(a, b)| t > a && t < b) {
-                let at = if *u > 0.0 { hi } else { lo };
-                assert_eq!(
-                    u.to_bits(),
-                    at.to_bits(),
-                    "{aw:?}: u({t}) = {u} at the limit {at}"
-                );
-                held[usize::from(*u > 0.0)] += 1;
-            }
-        }
+        let held = held_samples(&res, lo, hi, 15.0, &format!("{aw:?}"));
         // (before the load step the set-point kick holds u_max: 803 samples at dt = 0.001)
         assert!(held[1] > 100, "{aw:?}: the upper limit held: {held:?}");
+    }
+}
+
+/// 4. A held limit samples as the limit itself under a load too. The trajectory stores the
+///    plant input `u + d`; a held limit's sample read back from it is `(L + d) − d`, which is
+///    `L` only when the subtraction is exact: here `L = −0.65`, `d = 1.7`, and
+///    `(−0.65 + 1.7) − 1.7 = −0.6500000000000001` (asserted first, so the test shows the case
+///    it needs; `(1.5 + 1.7) − 1.7 = 1.5000000000000002` as well). The set-point kick holds
+///    `u_max`, and the load step at 15 drives the valve to `u_max` briefly, then to `u_min`
+///    to the end: every sample strictly inside a limit interval must be the limit bit for
+///    bit, for each anti-windup (failed before branch satprop: `u(15.21) =
+///    1.5000000000000002`).
+#[wasm_bindgen_test(unsupported = test)]
+fn a_held_limit_under_a_load_samples_as_the_limit_itself() {
+    let (lo, hi, d) = (-0.65, 1.5, 1.7);
+    assert_ne!((lo + d) - d, lo, "the case needs an inexact (L + d) − d");
+    assert_ne!((hi + d) - d, hi, "the case needs an inexact (L + d) − d");
+    let (plant, c) = boiler_praveen();
+    for aw in ANTI_WINDUPS {
+        let rl = valve(lo, hi, aw);
+        let sc = Scenario::steps(30.0, 0.01, 0.0, 1.0, 15.0, d);
+        let res = simulate_real(&plant, &c, &sc, &rl).unwrap();
+        let held = held_samples(&res, lo, hi, f64::INFINITY, &format!("{aw:?}"));
+        // u_min held after the load step (with d = 1.7 at 15: the last ~14 s, ~1400 samples)
+        assert!(held[0] > 1000, "{aw:?}: the lower limit held: {held:?}");
+        println!("{aw:?}: samples at u_min {}, at u_max {}", held[0], held[1]);
     }
 }

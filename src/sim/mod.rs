@@ -346,14 +346,15 @@ fn simulate_saturated(
         (u >= lim.u_min && u <= lim.u_max).then_some((y, u))
     };
     let mut res = sample(sc, run.traj, run.diverged_at, &steady);
-    let v = res
-        .t
-        .iter()
-        .map(|t| {
-            let (k, s) = res.trajectory.locate(*t);
-            lagrange(&run.v_nodes[k * NODES..(k + 1) * NODES], s)
-        })
-        .collect();
+    let mut v = Vec::with_capacity(res.t.len());
+    for (t, u) in res.t.iter().zip(res.u.iter_mut()) {
+        let (k, s) = res.trajectory.locate(*t);
+        v.push(lagrange(&run.v_nodes[k * NODES..(k + 1) * NODES], s));
+        // a held limit is the limit itself, not (L + d) − d (`SatRun::held`)
+        if !run.held[k].is_nan() {
+            *u = run.held[k];
+        }
+    }
     res.v = Some(v);
     res.limit_record = Some(run.record);
     Ok(res)

@@ -16,8 +16,11 @@
 //! the unsaturated mode is neutral, the bound `h ≤ 0.6·θ·(1 − |e|)` of [`crate::sim`]'s "Near
 //! the neutral limit") and at every non-smooth instant — the set-point and load steps and every limit switch — and at
 //! all their copies `+ kθ`, so the delayed input on each piece is the restriction of one
-//! earlier piece's degree-7 polynomial (as in [`super::single`]). On a piece the augmented state
-//! `[x; ξ (monomial coefficients of w); r; L]` is propagated exactly by a matrix exponential.
+//! earlier piece's degree-7 polynomial (as in [`super::single`]); a cut is kept as its grid
+//! step and offset, so its copies give pieces of the same length bit for bit (`GridTime`).
+//! On a piece the augmented state `[x; ξ (monomial coefficients of w); r; L]` is propagated
+//! exactly by a matrix exponential, cached per dynamics and piece length as rows over the
+//! piece's start state (`PieceProp`: the switching functions at the nodes and the end state).
 //! The mode's validity functions (`v − u_max` and `v − u_min` while free; below) are affine
 //! in that state, so on a piece each is the smooth `τ ↦ c·exp(Mτ)·z`; its degree-7 interpolant
 //! through the `NODES` = 8 node values is tested for a turn below zero by the signs of its
@@ -91,9 +94,9 @@ use crate::model::plant::Plant;
 use crate::model::poly::Poly;
 use crate::model::ss::{balance, realize_paths, Ss};
 use crate::model::tf::Tf;
-use crate::numerics::brent;
-use nalgebra::{DMatrix, DVector};
-use std::collections::{BTreeSet, HashMap};
+use crate::numerics::{brent, col_major_rows};
+use nalgebra::{DMatrix, DVector, DVectorView};
+use std::collections::{BTreeMap, HashMap};
 
 /// Hard cap on the number of pieces of one simulation.
 const MAX_PIECES: usize = 2_000_000;
@@ -389,35 +392,86 @@ impl SatLoop {
     }
 }
 
-/// Ordered cut times (as bit patterns: positive floats order like their bits).
-struct Cuts(BTreeSet<u64>);
+/// A time on the piece grid: step `g` (a whole number) and offset `off ∈ [0, h)` within it,
+/// `t = g·h + off`. A piece's length is taken from the offsets (`(g₁ − g₀)·h + off₁ − off₀`),
+/// so the pieces between the same two offsets of different steps — a switch's copies
+/// `t* + kθ`, `θ = N·h`, are `(g + kN, off)` — have the same length bit for bit and share one
+/// propagator (as `t* + kθ` summed in floating point they drifted by up to ~60 ulp of t,
+/// a new length, so a new matrix exponential, at every copy).
+#[derive(Clone, Copy, Debug)]
+struct GridTime {
+    g: f64,
+    off: f64,
+}
+
+impl GridTime {
+    fn at(self, h: f64) -> f64 {
+        self.g * h + self.off
+    }
+
+    /// `self + τ` within its step (`τ ≤` the rest of the step), the step's end `(g + 1, 0)`
+    /// when within `tol` of it.
+    fn plus(self, tau: f64, h: f64, tol: f64) -> GridTime {
+        let off = self.off + tau;
+        if off >= h - tol {
+            GridTime {
+                g: self.g + 1.0,
+                off: 0.0,
+            }
+        } else {
+            GridTime { g: self.g, off }
+        }
+    }
+
+    /// The length from `self` to `b`.
+    fn to(self, b: GridTime, h: f64) -> f64 {
+        (b.g - self.g) * h + (b.off - self.off)
+    }
+}
+
+/// Ordered cut times (as bit patterns: positive floats order like their bits), each with
+/// its place on the grid.
+struct Cuts {
+    h: f64,
+    at: BTreeMap<u64, GridTime>,
+}
 
 impl Cuts {
-    fn add(&mut self, t: f64) {
+    fn add(&mut self, c: GridTime) {
+        let t = c.at(self.h);
         if t.is_finite() && t > 0.0 {
-            self.0.insert(t.to_bits());
+            self.at.entry(t.to_bits()).or_insert(c);
         }
     }
 
     /// The first cut later than `t + tol`.
-    fn next_after(&self, t: f64, tol: f64) -> Option<f64> {
+    fn next_after(&self, t: f64, tol: f64) -> Option<(f64, GridTime)> {
         let lo = (t + tol).max(0.0).to_bits() + 1;
-        self.0.range(lo..).next().map(|b| f64::from_bits(*b))
+        self.at
+            .range(lo..)
+            .next()
+            .map(|(b, c)| (f64::from_bits(*b), *c))
     }
 
     /// True when a cut lies within `tol` of `t`.
     fn contains(&self, t: f64, tol: f64) -> bool {
         let lo = (t - tol).max(0.0).to_bits();
         let hi = (t + tol).to_bits();
-        self.0.range(lo..=hi).next().is_some()
+        self.at.range(lo..=hi).next().is_some()
     }
 }
 
 /// The output of [`integrate`]: the trajectory (applied `u + d` and `y`), the controller
-/// output `v` at the same nodes, divergence time and the time at the limits.
+/// output `v` at the same nodes, the limit each piece holds, divergence time and the time at
+/// the limits.
 pub(crate) struct SatRun {
     pub traj: Trajectory,
     pub v_nodes: Vec<f64>,
+    /// Per piece: the limit `L` the applied input holds on it, NaN on an unsaturated piece.
+    /// The trajectory stores the plant input `L + d`, whose sample `(L + d) − d` is `L` only
+    /// when that subtraction is exact (`(−0.65 + 1.7) − 1.7 = −0.6500000000000001`): a
+    /// held limit's samples are taken from here, `L` exactly.
+    pub held: Vec<f64>,
     pub diverged_at: Option<f64>,
     pub record: LimitRecord,
 }
@@ -458,7 +512,7 @@ impl Mode {
 
 /// The loop's switching functions at one state: `v`, the integrator's input `e` and
 /// `s = dv_rest/dt` (conditional only; 0 otherwise), and the output `y`.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 struct Point {
     v: f64,
     e: f64,
@@ -476,9 +530,9 @@ struct Rows {
 
 impl SatLoop {
     /// The switching functions at `z` in `mode` (θ = 0: the mode decides the plant input).
-    fn point(&self, z: &DVector<f64>, len: f64, mode: Mode) -> Point {
+    fn point(&self, z: &[f64], len: f64, mode: Mode) -> Point {
         let n = self.order();
-        let x = z.rows(0, n);
+        let x = DVectorView::from_slice(&z[..n], n);
         let (xi0, r) = (z[n], z[n + NODES]);
         let gx = self.g.dot(&x) + self.hr * r;
         let (v, w, wdot) = if !self.direct {
@@ -505,6 +559,213 @@ impl SatLoop {
                 y,
             },
         }
+    }
+}
+
+impl SatLoop {
+    /// [`SatLoop::point`]'s quantities `v, y, e, s` as rows over the augmented state `z` of a
+    /// piece of length `len` (they are linear in it), for the unsaturated dynamics (`free`) or
+    /// a limit's (θ = 0 only: the mode decides the plant input), stored column by column
+    /// (`rows[4·j + q]`: quantity q's coefficient of `z_j`) for [`col_major_rows`].
+    fn point_rows(&self, free: bool, len: f64) -> Vec<f64> {
+        let n = self.order();
+        let sz = n + NODES + 2;
+        let (i0, ir, il) = (n, n + NODES, n + NODES + 1);
+        // v's row, and w's (the plant input's)
+        let mut rv = vec![0.0; sz];
+        let mut rw = vec![0.0; sz];
+        for (r, g) in rv.iter_mut().zip(self.g.iter()) {
+            *r = *g;
+        }
+        rv[ir] = self.hr;
+        rv[i0] = self.e;
+        if !self.direct {
+            rw[i0] = 1.0;
+        } else if free {
+            // v = (g·X + h_r r + e d)/(1 − e), w = v + d
+            let ome = 1.0 - self.e;
+            for r in rv.iter_mut() {
+                *r /= ome;
+            }
+            rw.copy_from_slice(&rv);
+            rw[i0] += 1.0;
+        } else {
+            // w = L + d
+            rv[il] = self.e;
+            rw[i0] = 1.0;
+            rw[il] = 1.0;
+        }
+        // a quantity `q·X + q_w w + q_r r`
+        let lin = |q: &DVector<f64>, qw: f64, qr: f64| -> Vec<f64> {
+            let mut row: Vec<f64> = (0..sz)
+                .map(|j| if j < n { q[j] + qw * rw[j] } else { qw * rw[j] })
+                .collect();
+            row[ir] += qr;
+            row
+        };
+        let ry = lin(&self.yx, self.yw, 0.0);
+        let (re, rs) = match (&self.cond, &self.rows) {
+            (Some(cd), Some(rr)) => {
+                let mut rs = lin(&rr.sa, rr.sw, rr.sr);
+                if !self.direct {
+                    // `e·ẇ`, `ẇ(0) = ξ₁/len`
+                    rs[i0 + 1] += self.e / len;
+                }
+                (lin(&cd.ex, cd.ew, cd.er), rs)
+            }
+            _ => (vec![0.0; sz], vec![0.0; sz]),
+        };
+        let mut cols = vec![0.0; 4 * sz];
+        for j in 0..sz {
+            cols[4 * j..4 * j + 4].copy_from_slice(&[rv[j], ry[j], re[j], rs[j]]);
+        }
+        cols
+    }
+}
+
+/// The propagator of one piece length and dynamics kind (the cache's entry), as rows over
+/// the piece's start state `z₀` (the one-delay loop's [`super::single`] `Prop`): the
+/// switching functions at the nodes and the end state are `row·z₀`, one column-major pass
+/// over `z₀` each, without the node states.
+struct PieceProp {
+    kind: usize,
+    len: f64,
+    /// [`SatLoop::point_rows`] of the kind (the switching functions at a state).
+    rows: Vec<f64>,
+    /// `P·Φʲ` (P the point rows, `Φ = exp(M·len/DEG)`, [`SatLoop::augmented`]), rows
+    /// `4j + q` (quantity q of [`Point`] at node j), nodes 0–3 and 4–7, column by column
+    /// (`sz × 16` each).
+    nodes: [Vec<f64>; 2],
+    /// The first `n` rows of `Φ^DEG` (the end state X), padded with zero rows to 8, column by
+    /// column.
+    end: Vec<f64>,
+    /// `max_j |c|·|Φ|ʲ` elementwise for the validity functions' coefficient rows `c` of v, e,
+    /// s and e + s ([`validity_terms`]): with `|z₀|` it bounds the terms that cancel in a
+    /// validity function at any node ([`switch_first`]'s round-off bound).
+    bound: [Vec<f64>; 4],
+}
+
+impl PieceProp {
+    fn new(m: &SatLoop, kind: usize, len: f64) -> PieceProp {
+        let n = m.order();
+        let sz = n + NODES + 2;
+        let phi = (m.augmented(kind, len) * (len / DEG as f64)).exp();
+        let phi_abs = phi.abs();
+        let rows = m.point_rows(kind == 0, len);
+        let p = DMatrix::from_column_slice(4, sz, &rows);
+        // |c| of v, e, s, e + s
+        let mut c_abs = DMatrix::<f64>::zeros(4, sz);
+        for j in 0..sz {
+            let c = &rows[4 * j..4 * j + 4];
+            c_abs[(0, j)] = c[0].abs();
+            c_abs[(1, j)] = c[2].abs();
+            c_abs[(2, j)] = c[3].abs();
+            c_abs[(3, j)] = (c[2] + c[3]).abs();
+        }
+        let mut nodes = [vec![0.0; 16 * sz], vec![0.0; 16 * sz]];
+        let mut bound = c_abs.clone();
+        let (mut pj, mut bj) = (p, c_abs);
+        for j in 0..NODES {
+            if j > 0 {
+                pj = &pj * &phi;
+                bj = &bj * &phi_abs;
+                bound = bound.zip_map(&bj, f64::max);
+            }
+            let (half, r0) = (j / 4, 4 * (j % 4));
+            for col in 0..sz {
+                for q in 0..4 {
+                    nodes[half][16 * col + r0 + q] = pj[(q, col)];
+                }
+            }
+        }
+        let mut phi_deg = phi.clone();
+        for _ in 1..DEG {
+            phi_deg = &phi_deg * &phi;
+        }
+        let mut end = vec![0.0; 8 * sz];
+        for col in 0..sz {
+            for r in 0..n {
+                end[8 * col + r] = phi_deg[(r, col)];
+            }
+        }
+        PieceProp {
+            kind,
+            len,
+            rows,
+            nodes,
+            end,
+            bound: [0, 1, 2, 3].map(|q| bound.row(q).iter().copied().collect()),
+        }
+    }
+
+    /// The switching functions at the nodes and the end state `X` (its first `n` entries)
+    /// of the piece from `z0`.
+    #[inline]
+    fn propagate(&self, z0: &[f64], pts: &mut [Point; NODES], x_end: &mut [f64; 8]) {
+        let mut o = [0.0; 2 * 16];
+        col_major_rows::<16>(&self.nodes[0], z0, &mut o[..16]);
+        col_major_rows::<16>(&self.nodes[1], z0, &mut o[16..]);
+        for (p, q) in pts.iter_mut().zip(o.chunks_exact(4)) {
+            *p = Point {
+                v: q[0],
+                y: q[1],
+                e: q[2],
+                s: q[3],
+            };
+        }
+        col_major_rows::<8>(&self.end, z0, x_end);
+    }
+
+    /// The switching functions at the augmented state `z` (of a piece of this length).
+    #[inline]
+    fn point(&self, z: &[f64]) -> Point {
+        let mut o = [0.0; 4];
+        col_major_rows::<4>(&self.rows, z, &mut o);
+        Point {
+            v: o[0],
+            y: o[1],
+            e: o[2],
+            s: o[3],
+        }
+    }
+}
+
+/// The propagators met so far, by dynamics kind and piece length (bit for bit); the last one
+/// used is tried first (most pieces are whole steps in the mode of the piece before).
+#[derive(Default)]
+struct PropCache {
+    entries: Vec<PieceProp>,
+    index: HashMap<(usize, u64), usize>,
+    last: usize,
+}
+
+impl PropCache {
+    fn get(&mut self, m: &SatLoop, kind: usize, len: f64) -> &PieceProp {
+        let hit = self
+            .entries
+            .get(self.last)
+            .is_some_and(|e| e.kind == kind && e.len.to_bits() == len.to_bits());
+        if !hit {
+            let entries = &mut self.entries;
+            self.last = *self.index.entry((kind, len.to_bits())).or_insert_with(|| {
+                entries.push(PieceProp::new(m, kind, len));
+                entries.len() - 1
+            });
+        }
+        &self.entries[self.last]
+    }
+}
+
+/// The validity functions' constant terms `c₀` (infinite: an absent function) and which of
+/// [`PieceProp::bound`] bound the magnitudes of their coefficients (0: v, 1: e, 2: s, 3: e + s),
+/// as [`validity`] writes them: `f_k(z) = c₀[k] ± row·z`.
+fn validity_terms(mode: Mode, lim: Limits) -> [(f64, usize); 2] {
+    let l = |k: i8| if k > 0 { lim.u_max } else { lim.u_min };
+    match mode {
+        Mode::Free => [(lim.u_max, 0), (-lim.u_min, 0)],
+        Mode::Sat(k) => [(-f64::from(k) * l(k), 0), (f64::INFINITY, 0)],
+        Mode::Clamp(k) | Mode::Integ(k) => [(-f64::from(k) * l(k), 0), (0.0, 1)],
+        Mode::Slide(_) => [(0.0, 2), (0.0, 3)],
     }
 }
 
@@ -651,29 +912,47 @@ pub(crate) fn integrate(
             ),
         ));
     }
-    let mut cuts = Cuts(BTreeSet::new());
+    let mut cuts = Cuts {
+        h,
+        at: BTreeMap::new(),
+    };
+    // a step's copy one dead time later (θ = N·h; θ = 0: N = 0)
+    let n_theta = (theta / h).round();
+    let copy = |c: GridTime| GridTime {
+        g: c.g + n_theta,
+        off: c.off,
+    };
     for ev in [&sc.setpoint, &sc.disturbance] {
         if ev.size != 0.0 && ev.time <= t_end {
-            cuts.add(ev.time);
+            // (an event on a grid point, within tol, is no cut: the grid cuts there)
+            let g = ((ev.time + tol) / h).floor();
+            let off = ev.time - g * h;
+            if off > tol && off < h - tol {
+                cuts.add(GridTime { g, off });
+            }
         }
     }
-    let vinv = start_interpolation_inverse()?;
+    // V⁻¹ column by column (the monomial coefficients of the delayed input from its nodes)
+    let vinv: Vec<f64> = start_interpolation_inverse()?.as_slice().to_vec();
     let forms = PieceForms::shared();
-    let mut row_cache: HashMap<(Mode, u64), ValidityRows> = HashMap::new();
-    let mut cache: HashMap<(usize, u64), DMatrix<f64>> = HashMap::new();
+    let mut props = PropCache::default();
+    // room for the grid's pieces and as many cuts again, at most 2¹⁶ pieces (4 MB a vector;
+    // they grow beyond that)
+    let est = (2 * ((t_end / h).ceil() as usize + 2)).min(1 << 16);
     let mut traj = Trajectory {
         h,
         offsets: vec![0.0],
-        lens: vec![],
-        starts: Some(vec![]),
+        lens: Vec::with_capacity(est),
+        starts: Some(Vec::with_capacity(est)),
         n_pieces: 0,
-        v: vec![],
-        y: vec![],
+        v: Vec::with_capacity(est * NODES),
+        y: Vec::with_capacity(est * NODES),
         setpoint: sc.setpoint,
         disturbance: sc.disturbance,
         tol,
     };
-    let mut v_nodes: Vec<f64> = vec![];
+    let mut v_nodes: Vec<f64> = Vec::with_capacity(est * NODES);
+    let mut held: Vec<f64> = Vec::with_capacity(est);
     let mut record = LimitRecord {
         limits: lim,
         intervals: vec![],
@@ -692,10 +971,11 @@ pub(crate) fn integrate(
         -1 => lim.u_min,
         _ => 0.0,
     };
-    let mut x = DVector::<f64>::zeros(n);
+    let mut x = vec![0.0; n];
     let mut mode = Mode::Free;
     let mut sat_since = 0.0;
     let mut t = 0.0;
+    let mut pos = GridTime { g: 0.0, off: 0.0 };
     let mut diverged_at = None;
     let mut just_switched = false;
     let mut zero_switches = 0usize;
@@ -707,13 +987,16 @@ pub(crate) fn integrate(
         }
     };
     // work buffers (no allocation per piece)
-    let mut wn = DVector::<f64>::zeros(NODES);
-    let mut xi = DVector::<f64>::zeros(NODES);
-    let mut zs: Vec<DVector<f64>> = (0..NODES).map(|_| DVector::zeros(sz)).collect();
+    let mut wn = [0.0; NODES];
+    let mut xi = [0.0; NODES];
+    // the piece's start state, its switching functions at the nodes, its end state
+    let mut zs = vec![0.0; sz];
+    let mut x_end = [0.0; 8];
+    let mut pts = [Point::default(); NODES];
     // the delayed input's node values on [t0, t1] (one earlier piece's restriction) into `wn`
     let direct = m.direct;
     let cursor = std::cell::Cell::new(0usize);
-    let wv = |wn: &mut DVector<f64>, t0: f64, t1: f64, traj: &Trajectory| {
+    let wv = |wn: &mut [f64; NODES], t0: f64, t1: f64, traj: &Trajectory| {
         wn.fill(0.0);
         if direct {
             // θ = 0: the w slot carries the load d (constant on the piece)
@@ -739,22 +1022,15 @@ pub(crate) fn integrate(
         cursor.set(k);
         let (p0, pl) = traj.piece(k);
         let vals = traj.v_nodes(k);
+        if (a - p0).abs() <= tol && (b - p0 - pl).abs() <= tol {
+            // the window is that piece (a grid step, or the copy of a cut one dead time
+            // earlier: the usual case): its nodes, as the one-delay loop takes them
+            wn.copy_from_slice(vals);
+            return;
+        }
         for (i, wi) in wn.iter_mut().enumerate() {
             let s = (a + (b - a) * i as f64 / DEG as f64 - p0) / pl;
             *wi = lagrange(vals, s);
-        }
-    };
-    // the node states of a piece from its start `zs[0]` (one cached exponential per length)
-    let propagate = |cache: &mut HashMap<(usize, u64), DMatrix<f64>>,
-                     zs: &mut [DVector<f64>],
-                     mi: usize,
-                     len: f64| {
-        let step = cache
-            .entry((mi, len.to_bits() >> 8))
-            .or_insert_with(|| (m.augmented(mi, len) * (len / DEG as f64)).exp());
-        for i in 1..NODES {
-            let (head, tail) = zs.split_at_mut(i);
-            step.mul_to(&head[i - 1], &mut tail[0]);
         }
     };
     // `(applied u, reported v)` of a mode at a point
@@ -782,26 +1058,30 @@ pub(crate) fn integrate(
                 format!("more than {MAX_PIECES} pieces (limit switches): shorten t_end"),
             ));
         }
-        let grid = ((t + tol) / h).floor() + 1.0;
-        let mut t1 = (grid * h).min(t_stop);
-        if let Some(cn) = cuts.next_after(t, tol) {
+        let mut end = GridTime {
+            g: pos.g + 1.0,
+            off: 0.0,
+        };
+        let mut t1 = end.at(h);
+        if let Some((cn, c)) = cuts.next_after(t, tol) {
             if cn < t1 - tol {
-                t1 = cn;
+                (t1, end) = (cn, c);
             }
         }
+        let mut len = pos.to(end, h);
         let r = step_at(&sc.setpoint, t);
         let d = step_at(&sc.disturbance, t);
-        let z = &mut zs[0];
-        z.rows_mut(0, n).copy_from(&x);
+        let z = &mut zs[..sz];
+        z[..n].copy_from_slice(&x);
         wv(&mut wn, t, t1, &traj);
-        vinv.mul_to(&wn, &mut xi);
-        z.rows_mut(n, NODES).copy_from(&xi);
+        col_major_rows::<NODES>(&vinv, &wn, &mut xi);
+        z[n..n + NODES].copy_from_slice(&xi);
         z[n + NODES] = r;
         z[n + NODES + 1] = lval(mode);
         // a jump across a switching surface at the piece start re-classifies the mode here
         // (not right after a located switch: there the function is zero to round-off)
         if !just_switched {
-            let p = m.point(z, t1 - t, mode);
+            let p = m.point(z, len, mode);
             let f = validity(mode, p, lim);
             let off = matches!(mode, Mode::Slide(_)) && (p.v - lval(mode)).abs() > eps;
             let e0 = if matches!(mode, Mode::Slide(_)) {
@@ -819,7 +1099,7 @@ pub(crate) fn integrate(
                 if new_mode != mode {
                     switch_at(&mut record, &mut sat_since, mode, new_mode, t);
                     if (mode == Mode::Free) != (new_mode == Mode::Free) {
-                        cuts.add(t + theta);
+                        cuts.add(copy(pos));
                     }
                     mode = new_mode;
                     z[n + NODES + 1] = lval(mode);
@@ -828,32 +1108,30 @@ pub(crate) fn integrate(
         }
         if let Mode::Slide(_) = mode {
             // on the sliding surface the integral holds v at the limit
-            let p = m.point(&zs[0], t1 - t, mode);
-            zs[0][0] += (lval(mode) - p.v) / m.g[0];
+            let p = m.point(&zs[..sz], len, mode);
+            zs[0] += (lval(mode) - p.v) / m.g[0];
         }
         let mi = mode.kind();
-        let mut len = t1 - t;
-        propagate(&mut cache, &mut zs, mi, len);
+        let mut pp = props.get(&m, mi, len);
+        pp.propagate(&zs, &mut pts, &mut x_end);
         // the first place on the piece where a validity function turns negative (on its
         // interpolant: `switch_first`), refined on the exact function
-        let vrows = row_cache
-            .entry((mode, len.to_bits()))
-            .or_insert_with(|| validity_rows(&m, mode, len, lim, sz));
         let first = switch_first(&SwitchScan {
             m: &m,
             forms,
-            zs: &zs,
+            z0: &zs,
+            pts: &pts,
+            pp,
             kind: mi,
             mode,
             len,
             lim,
             xtol: 1e-15 * (t + len).max(1.0),
-            vrows,
         });
         let mut switch_to = None;
         if let Some((tau, k)) = first {
-            let zt = (m.augmented(mi, len) * tau).exp() * &zs[0];
-            let to = transition(mode, k, m.point(&zt, len, mode), conditional);
+            let zt = (m.augmented(mi, len) * tau).exp() * DVector::from_column_slice(&zs[..sz]);
+            let to = transition(mode, k, m.point(zt.as_slice(), len, mode), conditional);
             switch_to = Some(to);
             if tau <= tol {
                 // at the piece start: switch now and redo the piece
@@ -869,25 +1147,25 @@ pub(crate) fn integrate(
                 }
                 switch_at(&mut record, &mut sat_since, mode, to, t);
                 if (mode == Mode::Free) != (to == Mode::Free) {
-                    cuts.add(t + theta);
+                    cuts.add(copy(pos));
                 }
                 mode = to;
                 just_switched = true;
                 continue;
             }
-            t1 = t + tau;
-            let z = &mut zs[0];
+            end = pos.plus(tau, h, tol);
+            t1 = end.at(h);
             wv(&mut wn, t, t1, &traj);
-            vinv.mul_to(&wn, &mut xi);
-            z.rows_mut(n, NODES).copy_from(&xi);
-            len = t1 - t;
-            propagate(&mut cache, &mut zs, mi, len);
+            col_major_rows::<NODES>(&vinv, &wn, &mut xi);
+            zs[n..n + NODES].copy_from_slice(&xi);
+            len = pos.to(end, h);
+            pp = props.get(&m, mi, len);
+            pp.propagate(&zs, &mut pts, &mut x_end);
         }
         zero_switches = 0;
         // store the piece: applied u + d at the nodes, y, v
         let mut bad = false;
-        for zi in zs.iter() {
-            let p = m.point(zi, len, mode);
+        for p in pts {
             let y = p.y;
             let (u, v) = uv(mode, p);
             if !(v.abs() <= limit && y.abs() <= limit) {
@@ -897,15 +1175,19 @@ pub(crate) fn integrate(
             traj.y.push(y);
             v_nodes.push(v);
         }
+        held.push(if mode == Mode::Free {
+            f64::NAN
+        } else {
+            lval(mode)
+        });
         if let Some(s) = traj.starts.as_mut() {
             s.push(t);
         }
-        traj.lens.push(t1 - t);
+        traj.lens.push(len);
         traj.n_pieces += 1;
-        x.copy_from(&zs[DEG].rows(0, n));
+        x.copy_from_slice(&x_end[..n]);
         if let Mode::Slide(_) = mode {
-            let p = m.point(&zs[DEG], len, mode);
-            x[0] += (lval(mode) - p.v) / m.g[0];
+            x[0] += (lval(mode) - pts[DEG].v) / m.g[0];
         }
         if bad || !x.iter().all(|q| q.is_finite()) {
             diverged_at = Some(t);
@@ -916,21 +1198,22 @@ pub(crate) fn integrate(
                 s.truncate(k);
             }
             v_nodes.truncate(k * NODES);
+            held.truncate(k);
             break;
         }
         // a non-grid cut propagates its copy one dead time later (a switch only when it
         // changes the applied u's law)
-        let on_grid = ((t1 / h).round() * h - t1).abs() <= tol;
+        let on_grid = end.off <= tol;
         let u_switch = switch_to.is_some_and(|to| (to == Mode::Free) != (mode == Mode::Free));
         if !on_grid && (cuts.contains(t1, tol) || u_switch) {
-            cuts.add(t1 + theta);
+            cuts.add(copy(end));
         }
         if let Some(to) = switch_to {
             switch_at(&mut record, &mut sat_since, mode, to, t1);
             mode = to;
         }
         just_switched = switch_to.is_some();
-        t = t1;
+        (t, pos) = (t1, end);
     }
     if mode != Mode::Free {
         record.intervals.push((sat_since, t));
@@ -943,44 +1226,26 @@ pub(crate) fn integrate(
     Ok(SatRun {
         traj,
         v_nodes,
+        held,
         diverged_at,
         record,
     })
 }
 
-/// What [`switch_first`] scans: the piece's node states `zs` (mode `mode`, its matrices
-/// `kind`, length `len`) and Brent's tolerance.
+/// What [`switch_first`] scans: the piece's start state `z0` (mode `mode`, its matrices
+/// `kind`, length `len`, propagator `pp`), the switching functions at its nodes `pts`, and
+/// Brent's tolerance.
 struct SwitchScan<'a> {
     m: &'a SatLoop,
     forms: &'a PieceForms,
-    zs: &'a [DVector<f64>],
+    z0: &'a [f64],
+    pts: &'a [Point; NODES],
+    pp: &'a PieceProp,
     kind: usize,
     mode: Mode,
     len: f64,
     lim: Limits,
     xtol: f64,
-    vrows: &'a ValidityRows,
-}
-
-/// The validity functions of a mode on a piece of length `len` as affine functions of the
-/// augmented state, `f_k(z) = c₀[k] + c[k]·z` (their rows, for [`switch_first`]'s round-off
-/// bound; `len` enters through `ẇ`).
-type ValidityRows = ([f64; 2], [Vec<f64>; 2]);
-
-fn validity_rows(m: &SatLoop, mode: Mode, len: f64, lim: Limits, sz: usize) -> ValidityRows {
-    let val = |z: &DVector<f64>| validity(mode, m.point(z, len, mode), lim);
-    let mut unit = DVector::<f64>::zeros(sz);
-    let c0 = val(&unit);
-    let mut rows = [vec![0.0; sz], vec![0.0; sz]];
-    for i in 0..sz {
-        unit[i] = 1.0;
-        let f = val(&unit);
-        unit[i] = 0.0;
-        for (row, (fk, ck)) in rows.iter_mut().zip(f.iter().zip(&c0)) {
-            row[i] = fk - ck;
-        }
-    }
-    (c0, rows)
 }
 
 /// The first limit switch on a piece: `(τ, k)`, the earliest time at which validity function
@@ -1001,44 +1266,45 @@ fn validity_rows(m: &SatLoop, mode: Mode, len: f64, lim: Limits, sz: usize) -> V
 ///
 /// The threshold `δ` is the round-off of `p`, so that only a turn to negative beyond
 /// round-off counts (after a located switch the function starts at 0 to round-off, and
-/// the mode just entered must not be left again at once). With `S_j = |c₀| + Σ_i |c_i|·|z_{j,i}|`
-/// the size of the terms that cancel in `f` at node j: the node state `z_j` is `j ≤ DEG`
-/// products by the cached exponential (each with a componentwise error ≤ `sz·ε` times the
-/// terms it sums, which on a short piece are of the node states' size) and `f_j` one more sum
-/// of `sz + 1` terms, so `|δf_j| ≤ ((DEG + 1)·sz + 1)·ε·S_j`; the Bernstein coefficients are
-/// fixed combinations of the `f_j` (row sums of magnitudes ≤ `val_norm`, plus the `NODES`-term
-/// sum's own `NODES·ε·val_norm·max|f_j|`, `|f_j| ≤ S_j`), and `p` is a convex combination of
-/// them: `δ = val_norm·((DEG + 1)·sz + 1 + NODES)·ε·S` with `S = |c₀| + Σ_i |c_i|·max_j |z_{j,i}|
-/// ≥ max_j S_j`.
+/// the mode just entered must not be left again at once). The node values are
+/// `f_j = c₀ + (c·Φʲ)·z₀` ([`PieceProp`]: `Φ` the cached step exponential, the row `c·Φʲ`
+/// formed by `j ≤ DEG` products, each with a componentwise error ≤ `sz·ε` times the terms it
+/// sums, then one more sum of `sz + 1` terms with `z₀`), so with
+/// `S_j = |c₀| + (|c|·|Φ|ʲ)·|z₀|`, the size of the terms that cancel in `f_j`,
+/// `|δf_j| ≤ ((DEG + 1)·sz + 1)·ε·S_j`; the Bernstein coefficients are fixed combinations of
+/// the `f_j` (row sums of magnitudes ≤ `val_norm`, plus the `NODES`-term sum's own
+/// `NODES·ε·val_norm·max|f_j|`, `|f_j| ≤ S_j`), and `p` is a convex combination of them:
+/// `δ = val_norm·((DEG + 1)·sz + 1 + NODES)·ε·S` with `S = |c₀| + max_j (|c|·|Φ|ʲ)·|z₀| ≥
+/// max_j S_j` (the row `max_j |c|·|Φ|ʲ` is [`PieceProp::bound`]). Until branch satprop the
+/// node states were formed one product at a time and `S` took `|z_j|` in place of
+/// `|Φ|ʲ·|z₀|` (no larger: the bound is now the same or looser by the cancellations within
+/// `Φʲ·z₀`, still of the order of `ε` times the terms).
 fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
     let SwitchScan {
         m,
         forms,
-        zs,
+        z0,
+        pts,
+        pp,
         kind,
         mode,
         len,
         lim,
         xtol,
-        vrows,
     } = *sw;
-    let sz = zs[0].len();
-    let val = |z: &DVector<f64>| validity(mode, m.point(z, len, mode), lim);
-    let (c0, rows) = (&vrows.0, &vrows.1);
+    let sz = z0.len();
+    let val = |z: &[f64]| validity(mode, pp.point(z), lim);
+    let terms = validity_terms(mode, lim);
     let gamma = ((DEG + 1) * sz + 1 + NODES) as f64 * f64::EPSILON * forms.val_norm;
     let mut first: Option<(f64, usize)> = None;
-    let mut big: Option<DMatrix<f64>> = None;
-    // |z| componentwise over the nodes, and both functions at the nodes
-    let mut zmax = vec![0.0f64; sz];
+    let mut big: Option<(DMatrix<f64>, DVector<f64>)> = None;
+    // both functions at the nodes
     let mut fboth = [[0.0; 2]; NODES];
-    for (z, fj) in zs.iter().zip(fboth.iter_mut()) {
-        for (m, x) in zmax.iter_mut().zip(z.iter()) {
-            *m = m.max(x.abs());
-        }
-        *fj = val(z);
+    for (fj, p) in fboth.iter_mut().zip(pts) {
+        *fj = validity(mode, *p, lim);
     }
-    for k in 0..2 {
-        if !c0[k].is_finite() {
+    for (k, &(c0, ai)) in terms.iter().enumerate() {
+        if !c0.is_finite() {
             // an absent limit (or the sat mode's second function): never reached
             continue;
         }
@@ -1046,12 +1312,12 @@ fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
         for (f, fj) in fv.iter_mut().zip(&fboth) {
             *f = fj[k];
         }
-        // S = |c₀| + Σ_i |c_i|·max_j |z_{j,i}| ≥ max_j S_j
-        let s_max = c0[k].abs()
-            + rows[k]
+        // S = |c₀| + max_j (|c|·|Φ|ʲ)·|z₀| ≥ max_j S_j
+        let s_max = c0.abs()
+            + pp.bound[ai]
                 .iter()
-                .zip(zmax.iter())
-                .map(|(c, x)| c.abs() * x)
+                .zip(z0)
+                .map(|(b, x)| b * x.abs())
                 .sum::<f64>();
         let thr = gamma * s_max;
         // Bernstein coefficients of p + δ (p's shifted by the constant δ: a partition of unity)
@@ -1071,13 +1337,14 @@ fn switch_first(sw: &SwitchScan) -> Option<(f64, usize)> {
             }
         };
         let p_at = |s: f64| casteljau(&q, s) - thr;
-        let big = &*big.get_or_insert_with(|| m.augmented(kind, len));
+        let (big, z0) =
+            &*big.get_or_insert_with(|| (m.augmented(kind, len), DVector::from_column_slice(z0)));
         let f_at = |tau: f64| -> f64 {
             if tau <= 0.0 {
                 return fv[0];
             }
-            let zt = (big * tau).exp() * &zs[0];
-            val(&zt)[k]
+            let zt = (big * tau).exp() * z0;
+            val(zt.as_slice())[k]
         };
         let tau1 = s1 * len;
         let f1 = f_at(tau1);
