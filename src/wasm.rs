@@ -45,7 +45,10 @@ fn to_js(v: &Value) -> Result<JsValue, JsError> {
     let text = String::from_utf8(w.text).map_err(|_| JsError::new("output: not UTF-8"))?;
     let out = js_sys::JSON::parse(&text).map_err(|_| JsError::new("output: not JSON"))?;
     for (path, a) in w.long {
-        let (last, outer) = path.split_last().expect("a nested long array has a path");
+        // (a root long array is the only one and returned above: every other has a path)
+        let (last, outer) = path
+            .split_last()
+            .ok_or_else(|| JsError::new("output: a long array without a path"))?;
         let mut at = out.clone();
         for seg in outer {
             at = js_sys::Reflect::get(&at, &seg.key())
@@ -83,6 +86,14 @@ struct JsonText<'a> {
 }
 
 impl<'a> JsonText<'a> {
+    /// Writes `x`, an element or field of the value being written, with `seg` on the path.
+    fn child(&mut self, seg: Seg<'a>, x: &'a Value) -> bool {
+        self.path.push(seg);
+        let ok = self.write(x);
+        self.path.pop();
+        ok
+    }
+
     /// Writes `v`; false where [`to_js`] must take [`to_js_by_key`] instead.
     fn write(&mut self, v: &'a Value) -> bool {
         /// ±(2^53 − 1), JavaScript's safe integers (`serde_wasm_bindgen` refuses the others).
@@ -98,10 +109,7 @@ impl<'a> JsonText<'a> {
                     if i > 0 {
                         self.text.push(b',');
                     }
-                    self.path.push(Seg::Index(i));
-                    let ok = self.write(x);
-                    self.path.pop();
-                    if !ok {
+                    if !self.child(Seg::Index(i), x) {
                         return false;
                     }
                 }
@@ -117,12 +125,12 @@ impl<'a> JsonText<'a> {
                         self.text.push(b',');
                     }
                     // a key: a JSON string, as a `Value::String` would be written
-                    serde_json::to_writer(&mut self.text, k).expect("a string serializes");
+                    // (writing a string into a Vec cannot fail; were it to, the key-by-key path)
+                    if serde_json::to_writer(&mut self.text, k).is_err() {
+                        return false;
+                    }
                     self.text.push(b':');
-                    self.path.push(Seg::Key(k));
-                    let ok = self.write(x);
-                    self.path.pop();
-                    if !ok {
+                    if !self.child(Seg::Key(k), x) {
                         return false;
                     }
                 }
@@ -134,19 +142,17 @@ impl<'a> JsonText<'a> {
                     (None, Some(i)) => i.unsigned_abs() <= SAFE,
                     _ => true, // an f64 (always finite in a `Value`)
                 };
-                if !safe {
-                    return false;
-                }
-                self.scalar(v);
+                return safe && self.scalar(v);
             }
-            _ => self.scalar(v),
+            _ => return self.scalar(v),
         }
         true
     }
 
-    fn scalar(&mut self, v: &Value) {
-        // writing into a Vec<u8> cannot fail, nor can a string, number, bool or null
-        serde_json::to_writer(&mut self.text, v).expect("a scalar serializes");
+    /// Writes a string, number, bool or null (into a Vec this cannot fail; were it to, false:
+    /// the key-by-key path).
+    fn scalar(&mut self, v: &Value) -> bool {
+        serde_json::to_writer(&mut self.text, v).is_ok()
     }
 }
 
