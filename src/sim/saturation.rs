@@ -636,13 +636,23 @@ struct PieceProp {
     /// `4j + q` (quantity q of [`Point`] at node j), nodes 0–3 and 4–7, column by column
     /// (`sz × 16` each).
     nodes: [Vec<f64>; 2],
-    /// The first `n` rows of `Φ^DEG` (the end state X), padded with zero rows to 8, column by
-    /// column.
+    /// The first `n` rows of `Φ^DEG` (the end state X) in blocks of [`END_ROWS`] rows (the
+    /// last padded with zero rows), each block column by column (`sz × END_ROWS`).
     end: Vec<f64>,
     /// `max_j |c|·|Φ|ʲ` elementwise for the validity functions' coefficient rows `c` of v, e,
     /// s and e + s ([`validity_terms`]): with `|z₀|` it bounds the terms that cancel in a
     /// validity function at any node ([`switch_first`]'s round-off bound).
     bound: [Vec<f64>; 4],
+}
+
+/// Rows of one block of [`PieceProp::end`]: the loop's order is not bounded (a plant of any
+/// order with its controller), so the end state is computed 8 rows at a time.
+const END_ROWS: usize = 8;
+
+/// The length of the end state's blocks for a loop of order `n` (`n` rounded up to
+/// [`END_ROWS`]).
+fn end_len(n: usize) -> usize {
+    n.div_ceil(END_ROWS) * END_ROWS
 }
 
 impl PieceProp {
@@ -682,10 +692,11 @@ impl PieceProp {
         for _ in 1..DEG {
             phi_deg = &phi_deg * &phi;
         }
-        let mut end = vec![0.0; 8 * sz];
-        for col in 0..sz {
-            for r in 0..n {
-                end[8 * col + r] = phi_deg[(r, col)];
+        let mut end = vec![0.0; end_len(n) * sz];
+        for r in 0..n {
+            let (block, row) = (r / END_ROWS, r % END_ROWS);
+            for col in 0..sz {
+                end[block * END_ROWS * sz + END_ROWS * col + row] = phi_deg[(r, col)];
             }
         }
         PieceProp {
@@ -698,10 +709,10 @@ impl PieceProp {
         }
     }
 
-    /// The switching functions at the nodes and the end state `X` (its first `n` entries)
-    /// of the piece from `z0`.
+    /// The switching functions at the nodes and the end state `X` (its first `n` entries;
+    /// `x_end` holds [`end_len`]`(n)`) of the piece from `z0`.
     #[inline]
-    fn propagate(&self, z0: &[f64], pts: &mut [Point; NODES], x_end: &mut [f64; 8]) {
+    fn propagate(&self, z0: &[f64], pts: &mut [Point; NODES], x_end: &mut [f64]) {
         let mut o = [0.0; 2 * 16];
         col_major_rows::<16>(&self.nodes[0], z0, &mut o[..16]);
         col_major_rows::<16>(&self.nodes[1], z0, &mut o[16..]);
@@ -713,7 +724,13 @@ impl PieceProp {
                 s: q[3],
             };
         }
-        col_major_rows::<8>(&self.end, z0, x_end);
+        for (block, out) in self
+            .end
+            .chunks_exact(END_ROWS * z0.len())
+            .zip(x_end.chunks_exact_mut(END_ROWS))
+        {
+            col_major_rows::<END_ROWS>(block, z0, out);
+        }
     }
 
     /// The switching functions at the augmented state `z` (of a piece of this length).
@@ -991,7 +1008,7 @@ pub(crate) fn integrate(
     let mut xi = [0.0; NODES];
     // the piece's start state, its switching functions at the nodes, its end state
     let mut zs = vec![0.0; sz];
-    let mut x_end = [0.0; 8];
+    let mut x_end = vec![0.0; end_len(n)];
     let mut pts = [Point::default(); NODES];
     // the delayed input's node values on [t0, t1] (one earlier piece's restriction) into `wn`
     let direct = m.direct;
