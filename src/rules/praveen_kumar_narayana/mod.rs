@@ -91,7 +91,9 @@ use nalgebra::{Matrix4, Vector4};
 pub mod settings;
 pub mod studies;
 pub mod tables;
-pub use settings::{ex2_process, pai2010_controller, presets, CITATION_PAI, EX1, EX2_REDUCED};
+pub use settings::{
+    ex2_process, pai2010_controller, pai2010_ds_d, presets, CITATION_PAI, EX1, EX2_REDUCED,
+};
 pub use tables::LAMBDA_PAPER;
 
 /// Method id (API.md).

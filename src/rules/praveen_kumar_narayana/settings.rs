@@ -64,6 +64,57 @@ pub fn pai2010_controller(kc: f64, ti: f64, td: f64) -> Result<Controller> {
         .to_controller()
 }
 
+/// Pai et al. 2010's settings as their method computes them (our reconstruction, pinned to
+/// Table 1): a direct synthesis for disturbances (DS-d, Chen & Seborg 2002, the method Pai et
+/// al.'s abstract names) of the **ideal** PID `K_c(1 + 1/(τ_I s) + τ_D s)` on the model
+/// `k e^{−θ′s}/(s(τs + 1))`, the inverse-response zero folded into the dead time
+/// (`θ′ = θ + z`) and `e^{−θ′s} ≈ 1 − θ′s` inside the derivation only. The characteristic
+/// polynomial `τ_I s²(τs + 1) + kK_c(τ_I τ_D s² + τ_I s + 1)(1 − θ′s)` is matched to
+/// `kK_c(τ_c s + 1)³`:
+///
+/// `τ_I = 3τ_c + θ′`, and with `x = 1/(kK_c)`: `x + τ_D = 3τ_c²/τ_I + θ′`,
+/// `τx − θ′τ_D = τ_c³/τ_I` (solved here in closed form).
+///
+/// Returns `[K_c, τ_I, τ_D]`. Pai et al. choose τ_c from their correlation (not quoted by the
+/// paper); for Example 1 the one τ_c = 0.7211 gives K_c = 4.066, τ_I = 2.681, τ_D = 0.6501
+/// against the printed 4.066, 2.683, 0.650 (tests/praveen_kumar_narayana.rs). It tells what
+/// Pai's three numbers are (an ideal PID's, not a series PID's), not how Praveen Kumar &
+/// Narayana simulated them (see [`pai2010_controller`] and the reproduction report).
+/// Errors (paths `k`, `tau`, `z`, `theta`, `tau_c`): k, τ, τ_c not finite and > 0; z, θ not
+/// finite and ≥ 0; a τ_D ≤ 0 (τ_c too large for the model: the triple pole needs a
+/// negative derivative) or a setting that is not finite and positive (inputs so extreme that
+/// the closed form overflows).
+pub fn pai2010_ds_d(model: &IpdtIr, tau_c: f64) -> Result<[f64; 3]> {
+    use crate::error::{non_negative, positive, Error};
+    let k = positive("k", model.k)?;
+    let tau = positive("tau", model.tau)?;
+    let theta = non_negative("z", model.z)? + non_negative("theta", model.theta)?;
+    let tc = positive("tau_c", tau_c)?;
+    let ti = 3.0 * tc + theta;
+    let a = 3.0 * tc * tc / ti + theta;
+    let b = tc * tc * tc / ti;
+    // x + τ_D = a, τx − θ′τ_D = b  ⇒  x = (aθ′ + b)/(τ + θ′) > 0.
+    let x = (a * theta + b) / (tau + theta);
+    let td = a - x;
+    let kc = 1.0 / (k * x);
+    if [kc, ti, td].iter().any(|v| !v.is_finite()) {
+        return Err(Error::new(
+            "tau_c",
+            "with this model gives a setting beyond the floating-point range".to_string(),
+        ));
+    }
+    if td <= 0.0 {
+        return Err(Error::new(
+            "tau_c",
+            format!(
+                "gives τ_D = {} ≤ 0 for this model: choose a smaller τ_c",
+                crate::error::num(td)
+            ),
+        ));
+    }
+    Ok([kc, ti, td])
+}
+
 const PAI_STRUCTURE: &str = "Comparison setting of Table 1 as series PID K_c(1 + 1/(τ_I s))(1 + τ_D s/(0.1τ_D s + 1)) \
 on the error (ε = 1); the structure is our reconstruction (it reproduces the printed regulatory rows)";
 
