@@ -46,7 +46,7 @@ fn main() {
     println!("|---|---|---:|---:|---:|---|");
     for (id, m, t, a, w, ok, names) in &rows {
         println!(
-            "| {id} | {m} | {t:.1}{} | {a:.1} | {w:.1} | {} |",
+            "| {id} | {m} | {t:.1}{} | {a:.2} | {w:.1} | {} |",
             if *ok { "" } else { " (error)" },
             names.join(", ")
         );
@@ -54,7 +54,7 @@ fn main() {
     let mut adm: Vec<f64> = rows.iter().map(|r| r.3).collect();
     adm.sort_by(f64::total_cmp);
     println!(
-        "\n{} presets with a rule; admissible CPU median {:.1} ms, max {:.1} ms, total {:.0} ms",
+        "\n{} presets with a rule; admissible CPU median {:.2} ms, max {:.2} ms, total {:.1} ms",
         adm.len(),
         adm[adm.len() / 2],
         adm[adm.len() - 1],
