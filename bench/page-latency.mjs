@@ -6,6 +6,7 @@
 //   node bench/page-latency.mjs --first 10         # also: navigation -> first plots, 10 loads
 //   node bench/page-latency.mjs --json             # also every figure as one JSON line
 //   PIDLAB_PAGE=other.html node bench/page-latency.mjs
+//   node bench/page-latency.mjs --all-presets      # every preset in turn, each one's latency
 //
 // Per control, in a fresh page:
 //   step: one input at a time (a slider value, a select option, a checkbox, a typed number, a
@@ -44,6 +45,7 @@ let dragN = 60;
 let first = 0;
 let maxOptions = 30; // a select steps through up to this many of its options
 let json = false;
+let allPresets = false;
 const only = [];
 for (let i = 0; i < args.length; i++) {
   if (args[i] === '--n') n = Number(args[++i]);
@@ -51,7 +53,17 @@ for (let i = 0; i < args.length; i++) {
   else if (args[i] === '--first') first = Number(args[++i]);
   else if (args[i] === '--options') maxOptions = Number(args[++i]);
   else if (args[i] === '--json') json = true;
+  else if (args[i] === '--all-presets') allPresets = true;
   else only.push(args[i]);
+}
+// --all-presets: the preset select alone, through every one of its options (the probe of issue
+// 15's preset change): per preset, input -> its design drawn (the first frame after a render for
+// this input was applied) and input -> result painted (that, with the method sliders' admissible
+// intervals: what `result` measures for every control), slowest first.
+if (allPresets) {
+  maxOptions = Infinity;
+  only.splice(0, only.length, 'preset');
+  dragN = 0;
 }
 if (!existsSync(dist)) {
   console.error('dist/pidlab.html missing: run bash scripts/page.sh --no-serve first');
@@ -191,9 +203,15 @@ const HELPERS = () => {
       // a result: a render for an input after this one's start has been applied (and, for the
       // async preset load, its input counted); settled: nothing more pending for it
       // (a control that changes no design, e.g. which sliders an embedding shows: its result is its frame)
-      const result = noRender ? frame : (await until(() => (sync || P.perf.shown > shown0) && P.current(false, true, false))) - t0;
+      // (drawn: a render for this input applied, whatever else is pending)
+      let drawn = NaN;
+      const result = noRender ? frame : (await until(() => {
+        const shown = sync || P.perf.shown > shown0;
+        if (shown && Number.isNaN(drawn)) drawn = performance.now() - t0;
+        return shown && P.current(false, true, false);
+      })) - t0;
       const settled = (await until(() => P.current(true, false))) - t0;
-      return { frame, result, settled };
+      return { frame, result, settled, drawn };
     },
     /** An input in every frame (a drag); per-input frame latency and the last input's result. */
     async drag(sel, values) {
@@ -228,7 +246,7 @@ async function run(c) {
   const { page, errors } = await openPage(U.encodeHash(c.st) + (c.hash || ''));
   await prepare(page, c);
   await page.evaluate(HELPERS);
-  const out = { step: { frame: [], result: [], settled: [] }, drag: null, errors };
+  const out = { step: { frame: [], result: [], settled: [] }, drawn: [], values: [], drag: null, errors };
   const info = await page.evaluate((sel) => {
     const x = document.querySelector(sel);
     if (!x) return null;
@@ -266,6 +284,8 @@ async function run(c) {
     }
     const r = await page.evaluate(([s, k, v, nr, ps]) => window.__bench.step(s, k, v, nr, ps), [c.sel, c.kind, value(i, steps), !!c.noRender, !!c.popstate]);
     for (const k of Object.keys(out.step)) out.step[k].push(r[k]);
+    out.drawn.push(r.drawn);
+    out.values.push(value(i, steps));
   }
   if (c.kind === 'slider' && dragN > 0 && !page.isClosed()) {
     const vals = Array.from({ length: dragN }, (_, i) => range[0] + (range[1] - range[0]) * (0.5 + 0.5 * Math.sin(i / 6)));
@@ -331,6 +351,15 @@ for (const c of CONTROLS) {
   rows.push(row);
   results[c.name] = row;
   const t = (a) => a.map(f).join(' / ');
+  if (allPresets) {
+    // each preset, slowest result first
+    const per = r.values.map((v, i) => ({ v, drawn: r.drawn[i], result: s.result[i] })).sort((a, b) => b.result - a.result);
+    console.log(`\n## every preset (${per.length}): input → design drawn, input → result painted (ms), slowest first`);
+    console.log('| preset | drawn | result |\n|---|---:|---:|');
+    for (const x of per) console.log(`| ${x.v} | ${f(x.drawn)} | ${f(x.result)} |`);
+    console.log(`\nresult over every preset: p50 ${f(q(s.result, 0.5))} / p95 ${f(q(s.result, 0.95))} / max ${f(Math.max(...s.result))} ms; above 100 ms: ${s.result.filter((x) => x > 100).length}`);
+    results.presets = per;
+  }
   console.log(`${c.name.padEnd(15)} frame ${t(row.frame).padEnd(18)} result ${t(row.result).padEnd(20)} settled ${t(row.settled).padEnd(20)}` + (row.drag ? ` drag frame ${t(row.drag.frame)}, final ${f(row.drag.final)}, missed ${row.drag.missed}/${row.drag.n} (over 16.7 ms ${row.drag.over})` : '') + (r.errors.length ? '  ERRORS: ' + r.errors.slice(0, 2).join(' | ') : ''));
 }
 

@@ -17,6 +17,8 @@ use crate::sim::Scenario;
 use serde::Serialize;
 
 pub mod admissible;
+#[cfg(feature = "full")]
+mod admissible_presets;
 mod params;
 pub use params::{ParamDefault, ParamInfo, ParamValue, Params};
 
