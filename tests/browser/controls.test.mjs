@@ -6,6 +6,7 @@
 // when a field was typed since (no timing is asserted: what is checked is what each frame shows).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { isDeepStrictEqual } from 'node:util';
 import * as S from '../../www/state.js';
 import * as U from '../../www/url.js';
 import * as H from './harness.mjs';
@@ -97,9 +98,11 @@ test('a method change: the select in the input\'s frame, its panel and the resul
   // the history entry holds the panel's values (committed after the panel was built: a value
   // that changed after the select's own entry, λ's stand-in giving way to its suggestion, is
   // committed once it has settled for 400 ms, history.js commitSoon; the intervals of a
-  // preset's plant come from the module's table at once, so the page may settle before that)
-  await page.waitForTimeout(600);
-  assert.deepEqual(U.decodeHash(await page.evaluate(() => location.hash)).state, st);
+  // preset's plant come from the module's table at once, so the page may settle before that),
+  // so the hash is polled (up to 5 s) rather than read after a fixed pause.
+  const hashState = async () => U.decodeHash(await page.evaluate(() => location.hash)).state;
+  for (let t0 = Date.now(); Date.now() - t0 < 5000 && !isDeepStrictEqual(await hashState(), st); ) await page.waitForTimeout(50);
+  assert.deepEqual(await hashState(), st);
   const { page: p2, log: log2 } = await open(U.encodeHash(st));
   await p2.evaluate(() => window.__pidlab.settled(true));
   assert.deepEqual(await view(p2), after1);
