@@ -90,3 +90,65 @@ fn a_diverging_sampled_controller_behind_a_valve_is_reported_not_drawn_as_nan() 
     );
     assert!(r["diverged"].as_bool() == Some(true));
 }
+
+/// trapfuzz seed 2, case 281: a finite plant whose loop polynomial L = Cy·P overflows
+/// (1e300·1e10): nalgebra's eigenvalue iteration on a companion matrix with ±∞ and NaN
+/// never ends (no iteration limit), so `analyze` and `freqresp` never answered. Now the
+/// eigenvalues have a bounded iteration and the roots of a non-finite polynomial are an error
+/// naming the controller.
+#[wasm_bindgen_test(unsupported = test)]
+fn a_loop_whose_coefficients_overflow_is_an_error_not_a_hang() {
+    let input = json!({
+        "plant": {"num": [1e300, 1.0], "den": [1, 1, 1, 0], "delay": 0.1},
+        "controller": {
+            "cr": {"num": [1e10, 1.0], "den": [1, 0]},
+            "cy": {"num": [1e10, 1.0], "den": [1, 0]}
+        }
+    });
+    for (name, r) in [
+        ("analyze", api::analyze(&input)),
+        ("freqresp", api::freqresp(&input)),
+    ] {
+        let msg = message(r);
+        assert!(
+            msg.starts_with("controller: the loop L = Cy·P: "),
+            "{name}: {msg}"
+        );
+    }
+}
+
+/// The bounded eigenvalue iteration gives the same eigenvalues, bit for bit, as nalgebra's
+/// unbounded one where that converges, and `None` on a matrix with NaN or ∞ (where the
+/// unbounded one never returns).
+#[wasm_bindgen_test(unsupported = test)]
+fn bounded_eigenvalues_agree_with_nalgebra_and_refuse_non_finite_matrices() {
+    use nalgebra::DMatrix;
+    // the companion matrix of (s + 1)(s + 2)(s² + 0.2 s + 4)(s − 3), and a rotation-like one
+    let mats = [
+        DMatrix::from_row_slice(
+            5,
+            5,
+            &[
+                -0.2, -1.4, -5.6, 22.0, 24.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0,
+                0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0,
+            ],
+        ),
+        DMatrix::from_row_slice(3, 3, &[0.0, -1.0, 0.5, 1.0, 0.0, 2.0, 0.0, 0.0, -3.0]),
+    ];
+    for m in &mats {
+        let ours = pidlab::numerics::eigenvalues(m).expect("converges");
+        let theirs: Vec<_> = m.complex_eigenvalues().iter().copied().collect();
+        assert_eq!(ours.len(), theirs.len());
+        for (a, b) in ours.iter().zip(&theirs) {
+            assert!(
+                a.re.to_bits() == b.re.to_bits() && a.im.to_bits() == b.im.to_bits(),
+                "{a} vs {b}"
+            );
+        }
+    }
+    let mut bad = mats[0].clone();
+    bad[(0, 2)] = f64::NAN;
+    assert!(pidlab::numerics::eigenvalues(&bad).is_none());
+    bad[(0, 2)] = f64::INFINITY;
+    assert!(pidlab::numerics::eigenvalues(&bad).is_none());
+}

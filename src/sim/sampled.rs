@@ -282,11 +282,7 @@ pub(crate) fn integrate(
     let ps = plant_ss(plant)?;
     let n = ps.a.nrows();
     let theta = plant.delay;
-    let rho =
-        ps.a.clone()
-            .complex_eigenvalues()
-            .iter()
-            .fold(0.0f64, |m, l| m.max(l.norm()));
+    let rho = crate::numerics::spectral_radius(&ps.a);
     let max_len = if rho > 0.0 { 0.5 / rho } else { f64::INFINITY }.min(sc.dt);
     let tol = 1e-9 * h.min(sc.dt);
     let ev = events(sc, h, theta, max_len, tol)?;

@@ -13,7 +13,7 @@
 //! bandwidth are inserted into the grid, so the marks lie on the curves.
 
 use super::sweep::char_freqs;
-use super::{analyze, Analysis, LoopTf};
+use super::{analyze, loop_roots, Analysis, LoopTf};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
@@ -140,7 +140,7 @@ pub fn freqresp(plant: &Plant, c: &Controller, opt: FreqOptions) -> Result<FreqR
     .flatten()
     .filter(|w| w.is_finite() && *w > 0.0)
     .collect();
-    let (flo, fhi) = char_freqs(&lt, &lt.lr.num.roots(), &lt.lr.den.roots());
+    let (flo, fhi) = char_freqs(&lt, &loop_roots(&lt.lr.num)?, &loop_roots(&lt.lr.den)?);
     let mark_hi = marks.iter().cloned().fold(0.0, f64::max);
     let lo = opt.w_min.unwrap_or(flo / 100.0);
     let hi = opt.w_max.unwrap_or((fhi * 100.0).max(mark_hi * 10.0));
