@@ -152,3 +152,30 @@ fn bounded_eigenvalues_agree_with_nalgebra_and_refuse_non_finite_matrices() {
     bad[(0, 2)] = f64::INFINITY;
     assert!(pidlab::numerics::eigenvalues(&bad).is_none());
 }
+
+/// trapfuzz seed 2, cases 46, 173, 1070, …: `freqresp` with `w_min: 1e-300` (or `w_max:
+/// 1e300`) on an integrating loop: |L(jω)| = K_i k/ω² overflows to ∞ and |T| = ∞/∞ = NaN, which
+/// reached the output as `null`. The range is now refused where the response overflows, naming
+/// the end.
+#[wasm_bindgen_test(unsupported = test)]
+fn a_frequency_range_where_the_loop_overflows_is_refused_naming_its_end() {
+    let pi = json!({"num": [1.0, 0.1], "den": [1, 0]});
+    let base = json!({"plant": {"family": "piptd", "k": 1, "theta": 1},
+        "controller": {"cr": pi, "cy": pi}});
+    let mut low = base.clone();
+    low["w_min"] = json!(1e-300);
+    let msg = message(api::freqresp(&low));
+    assert!(
+        msg.starts_with("w_min: the loop's frequency response overflows"),
+        "{msg}"
+    );
+    // the default range and a modest w_min answer, every curve finite
+    for w_min in [None, Some(1e-6)] {
+        let mut v = base.clone();
+        if let Some(w) = w_min {
+            v["w_min"] = json!(w);
+        }
+        let r = api::freqresp(&v).expect("answers");
+        finite_samples(&r, &["w", "s", "t", "cs", "ps", "l_mag", "l_phase"]);
+    }
+}
