@@ -8,6 +8,7 @@
 // input, whatever ran before it. No test code here (tests/node/trapfuzz.test.mjs runs a short
 // seeded run through bench/trapfuzz.mjs).
 import { uniform } from '../tests/node/rng.mjs';
+import { clone, paths, setPath } from '../tests/node/edit.mjs';
 
 /** The random source of one case: uniform numbers from (seed, index), with helpers. */
 export function caseRng(seed, index) {
@@ -382,37 +383,6 @@ const GARBAGE = () => [
   nested(31), nested(33), 1n, Symbol('x'), () => 1, new Date(0), new Map([[1, 2]]),
   new Float64Array([1, NaN]), new Uint8Array(3), Object.create(null), 'a'.repeat(10000),
 ];
-
-function clone(v) {
-  if (Array.isArray(v)) return v.map(clone);
-  if (v && typeof v === 'object' && v.constructor === Object) {
-    const o = {};
-    for (const [k, x] of Object.entries(v)) o[k] = clone(x);
-    return o;
-  }
-  return v;
-}
-
-function paths(v, prefix = [], out = []) {
-  out.push(prefix);
-  if (Array.isArray(v)) v.forEach((x, i) => paths(x, [...prefix, i], out));
-  else if (v && typeof v === 'object' && v.constructor === Object) {
-    for (const [k, x] of Object.entries(v)) paths(x, [...prefix, k], out);
-  }
-  return out;
-}
-
-function setPath(root, path, value, del) {
-  if (path.length === 0) return value;
-  let o = root;
-  for (const k of path.slice(0, -1)) o = o[k];
-  const last = path[path.length - 1];
-  if (del) {
-    if (Array.isArray(o)) o.splice(last, 1);
-    else delete o[last];
-  } else o[last] = value;
-  return root;
-}
 
 /** 1–3 edits of a valid input: a field replaced by garbage, deleted, or an unknown one added. */
 export function malform(R, input) {
