@@ -8,6 +8,40 @@
 
 use crate::error::Result;
 
+/// Most QR sweeps per eigenvalue in [`eigenvalues`]: the Francis double-shift iteration
+/// converges in 2–4 sweeps per eigenvalue on every matrix the crate builds (LAPACK's `dhseqr`
+/// allows 30); past this it is not converging, and nalgebra's unbounded `complex_eigenvalues`
+/// would loop for ever (a hang, or in wasm a page that never answers: tests/trap_limits.rs).
+const SCHUR_SWEEPS_PER_EIGENVALUE: usize = 100;
+
+/// The eigenvalues of a square matrix: nalgebra's real Schur form (the same iteration, to the
+/// same bits, as `complex_eigenvalues`) with a bounded number of QR sweeps. `None` when an
+/// entry is not finite or the iteration does not converge.
+pub fn eigenvalues(m: &nalgebra::DMatrix<f64>) -> Option<Vec<nalgebra::Complex<f64>>> {
+    if !m.iter().all(|x| x.is_finite()) {
+        return None;
+    }
+    let max = SCHUR_SWEEPS_PER_EIGENVALUE * m.nrows().max(1);
+    let schur = m.clone().try_schur(f64::EPSILON, max)?;
+    Some(schur.complex_eigenvalues().iter().copied().collect())
+}
+
+/// The spectral radius of a square matrix (0 for an empty one), or, should [`eigenvalues`]
+/// not converge, its upper bound `‖m‖∞` (every induced norm bounds it): a step chosen from it
+/// is then smaller, never larger, than the one the exact radius gives.
+pub fn spectral_radius(m: &nalgebra::DMatrix<f64>) -> f64 {
+    if m.nrows() == 0 {
+        return 0.0;
+    }
+    match eigenvalues(m) {
+        Some(ev) => ev.iter().fold(0.0, |r: f64, z| r.max(z.norm())),
+        None => m
+            .row_iter()
+            .map(|r| r.iter().map(|x| x.abs()).sum::<f64>())
+            .fold(0.0, f64::max),
+    }
+}
+
 /// Brent's method on `[a, b]` with `f(a)·f(b) ≤ 0`; stops when the bracket is below
 /// `xtol` or after `maxit` evaluations. Returns `(x, evaluations)`.
 pub fn brent(

@@ -201,7 +201,10 @@ fn every_end_is_what_it_says() {
                     End::Sluggish => {
                         let t = rules::tune(&method, &plant, &base.clone().with(&iv.name, out));
                         let m = servo_mean_time(&plant, &t.unwrap().controller).unwrap();
-                        assert!(m > SLUGGISH * time_scale(&plant), "{fam} × {method}: {m}");
+                        assert!(
+                            m > SLUGGISH * time_scale(&plant).unwrap(),
+                            "{fam} × {method}: {m}"
+                        );
                     }
                     _ => {}
                 }

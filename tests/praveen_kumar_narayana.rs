@@ -180,7 +180,7 @@ fn random_plants_give_a_stable_filter_or_a_named_error() {
                 let r = char_residual(&p, &t.controller, lambda);
                 assert!(r <= 1e-9, "{p:?} λ = {lambda}: residual {r}");
                 // The lead-lag's pole is the controller's only pole besides the integrator.
-                for root in t.controller.cy.den.roots() {
+                for root in t.controller.cy.den.roots().unwrap() {
                     assert!(root.re <= 0.0, "{p:?} λ = {lambda}: controller pole {root}");
                 }
             }

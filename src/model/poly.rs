@@ -223,19 +223,38 @@ impl Poly {
     }
 
     /// All roots (with multiplicity), via the eigenvalues of the companion matrix
-    /// (nalgebra). Exact zero roots are split off first so that integrators are found
-    /// exactly. The zero polynomial and constants have no roots.
-    pub fn roots(&self) -> Vec<C64> {
+    /// ([`crate::numerics::eigenvalues`]). Exact zero roots are split off first so that
+    /// integrators are found exactly. The zero polynomial and constants have no roots.
+    ///
+    /// Errors (without a path: the caller names the field, `e.within("plant")`): a
+    /// coefficient ratio that overflows (a companion matrix that is not finite) or an
+    /// eigenvalue iteration that does not converge.
+    pub fn roots(&self) -> Result<Vec<C64>> {
         let k = self.zero_root_multiplicity();
         let mut out = vec![C64::new(0.0, 0.0); k];
         let p = self.shift_down(k);
         let n = p.degree();
+        let fail = |why: &str| {
+            Error::new(
+                "",
+                format!("the roots of a polynomial of degree {n} cannot be computed ({why})"),
+            )
+        };
+        if !p.is_finite() {
+            return Err(fail(
+                "a coefficient is not finite: the coefficients overflow",
+            ));
+        }
         if n == 0 {
-            return out;
+            return Ok(out);
         }
         if n == 1 {
-            out.push(C64::new(-p.c[0] / p.c[1], 0.0));
-            return out;
+            let r = -p.c[0] / p.c[1];
+            if !r.is_finite() {
+                return Err(fail("the root overflows"));
+            }
+            out.push(C64::new(r, 0.0));
+            return Ok(out);
         }
         let lead = p.leading();
         let mut m = DMatrix::<f64>::zeros(n, n);
@@ -245,8 +264,11 @@ impl Poly {
         for i in 1..n {
             m[(i, i - 1)] = 1.0;
         }
-        out.extend(m.complex_eigenvalues().iter().copied());
-        out
+        let ev = crate::numerics::eigenvalues(&m).ok_or_else(|| {
+            fail("the coefficients' ratios overflow, or the eigenvalue iteration of the companion matrix does not converge")
+        })?;
+        out.extend(ev);
+        Ok(out)
     }
 
     /// True when every coefficient is finite.
@@ -279,14 +301,14 @@ mod tests {
         let (q, r) = p.div_rem(&Poly::from_desc(&[1.0, 1.0])).unwrap();
         assert_eq!(q.to_desc(), vec![1.0, -1.0, -6.0]);
         assert!(r.max_abs() < 1e-14);
-        let mut re: Vec<f64> = p.roots().iter().map(|z| z.re).collect();
+        let mut re: Vec<f64> = p.roots().unwrap().iter().map(|z| z.re).collect();
         re.sort_by(|a, b| a.partial_cmp(b).unwrap());
         for (a, b) in re.iter().zip([-2.0, -1.0, 3.0]) {
             assert!((a - b).abs() < 1e-12);
         }
         // exact integrators are split off exactly
         let s2 = Poly::from_desc(&[1.0, 1.0, 0.0, 0.0]);
-        let r = s2.roots();
+        let r = s2.roots().unwrap();
         assert_eq!(r.iter().filter(|z| z.re == 0.0 && z.im == 0.0).count(), 2);
     }
 }

@@ -162,16 +162,18 @@ impl Outcome {
 }
 
 /// The plant's own time scale: the dead time plus 1/|r| for every non-zero pole and zero of
-/// its rational part (a pure integrator with dead time: θ).
-pub fn time_scale(plant: &Plant) -> f64 {
-    let inv = |p: &crate::model::poly::Poly| -> f64 {
-        p.roots()
+/// its rational part (a pure integrator with dead time: θ). Errors: the roots cannot be
+/// computed (`plant.num`, `plant.den`: [`crate::model::poly::Poly::roots`]).
+pub fn time_scale(plant: &Plant) -> Result<f64> {
+    let inv = |p: &crate::model::poly::Poly, field: &str| -> Result<f64> {
+        Ok(p.roots()
+            .map_err(|e| e.within(field))?
             .iter()
             .filter(|r| r.norm() > 0.0)
             .map(|r| 1.0 / r.norm())
-            .sum()
+            .sum())
     };
-    plant.delay + inv(&plant.tf.num) + inv(&plant.tf.den)
+    Ok(plant.delay + inv(&plant.tf.num, "plant.num")? + inv(&plant.tf.den, "plant.den")?)
 }
 
 /// The mean response time of the servo loop y/r = P Cr e^{−θs}/(1 + P Cy e^{−θs}), i.e.
@@ -235,9 +237,9 @@ fn loop_key(c: &crate::model::controller::Controller) -> LoopKey {
 }
 
 impl<'a> Judge<'a> {
-    fn new(rule: &'a dyn Rule, plant: &'a Plant) -> Self {
-        let ts = time_scale(plant);
-        Judge {
+    fn new(rule: &'a dyn Rule, plant: &'a Plant) -> Result<Self> {
+        let ts = time_scale(plant)?;
+        Ok(Judge {
             rule,
             plant,
             slow_time: if ts > 0.0 {
@@ -248,7 +250,7 @@ impl<'a> Judge<'a> {
             n: if rule.slow_to_tune() { GRID_SLOW } else { GRID },
             rel: if rule.slow_to_tune() { REL_SLOW } else { REL },
             seen: Default::default(),
-        }
+        })
     }
 
     /// Tunes with `params` and judges the nominal loop.
@@ -563,7 +565,7 @@ fn note(label: &str, min: f64, max: f64, a: End, b: End) -> String {
 /// target-Ms parameters are left out of the scans and get the Ms range of λ's interval).
 pub fn intervals(rule: &dyn Rule, plant: &Plant, params: &Params) -> Result<Vec<Interval>> {
     let info = rule.info();
-    let judge = Judge::new(rule, plant);
+    let judge = Judge::new(rule, plant)?;
     let mut base = params.clone();
     base.0.retain(|k, _| !stands_in(k));
     let decls: Vec<&ParamInfo> = info.params.iter().filter(|p| p.is_continuous()).collect();

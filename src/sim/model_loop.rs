@@ -327,9 +327,7 @@ impl MultiModel {
                 0.0
             }
         });
-        e.complex_eigenvalues()
-            .iter()
-            .fold(0.0, |x: f64, z| x.max(z.norm()))
+        crate::numerics::spectral_radius(&e)
     }
 
     fn a(&self) -> DMatrix<f64> {
@@ -525,9 +523,7 @@ fn internal_step(mm: &MultiModel, sc: &Scenario) -> f64 {
     let rho = if mm.n == 0 {
         0.0
     } else {
-        a.complex_eigenvalues()
-            .iter()
-            .fold(0.0, |x: f64, z| x.max(z.norm()))
+        crate::numerics::spectral_radius(&a)
     };
     let mut h = sc.t_end;
     if rho > 0.0 {

@@ -160,18 +160,23 @@ fn plant_ss(plant: &Plant) -> Result<PlantSs> {
 /// Sorted, de-duplicated event times in `[0, t_end]` (merging within `tol`).
 fn events(sc: &Scenario, h: f64, theta: f64, max_len: f64, tol: f64) -> Result<Vec<f64>> {
     let t_end = sc.t_end;
-    let n_h = ((t_end + tol) / h).floor() as usize;
-    let n_dt = ((t_end + tol) / sc.dt).floor() as usize;
-    let estimate = 2 * n_h + n_dt + (t_end / max_len) as usize + 8;
-    if estimate > MAX_PIECES {
+    let n_h = ((t_end + tol) / h).floor();
+    let n_dt = ((t_end + tol) / sc.dt).floor();
+    // counted in f64: in wasm32 a `usize` is 32 bits, `as usize` saturates at 2³² − 1 and
+    // `2 * n_h` wrapped to a small number, so 10¹¹ sample instants passed this check and filled
+    // the memory (a trap: tests/trap_limits.rs)
+    let estimate = 2.0 * n_h + n_dt + (t_end / max_len).floor() + 8.0;
+    if estimate.is_nan() || estimate > MAX_PIECES as f64 {
         return Err(Error::new(
             "sampling.h",
             format!(
-                "{estimate} pieces (sample instants, their delayed copies, output samples) \
+                "{estimate:.0} pieces (sample instants, their delayed copies, output samples) \
                  exceed the limit {MAX_PIECES}: take a larger h or dt, or a shorter t_end"
             ),
         ));
     }
+    let (n_h, n_dt) = (n_h as usize, n_dt as usize);
+    let estimate = estimate as usize;
     let mut ev = Vec::with_capacity(estimate);
     ev.push(0.0);
     ev.push(t_end);
@@ -277,11 +282,7 @@ pub(crate) fn integrate(
     let ps = plant_ss(plant)?;
     let n = ps.a.nrows();
     let theta = plant.delay;
-    let rho =
-        ps.a.clone()
-            .complex_eigenvalues()
-            .iter()
-            .fold(0.0f64, |m, l| m.max(l.norm()));
+    let rho = crate::numerics::spectral_radius(&ps.a);
     let max_len = if rho > 0.0 { 0.5 / rho } else { f64::INFINITY }.min(sc.dt);
     let tol = 1e-9 * h.min(sc.dt);
     let ev = events(sc, h, theta, max_len, tol)?;
@@ -343,11 +344,18 @@ pub(crate) fn integrate(
                 noise.push(nk);
             }
             let (v, u) = ctrl.step(step_at(&sc.setpoint, tk), y + nk);
+            if !(v.is_finite() && u.is_finite()) {
+                // the difference equations themselves diverged (e.g. forward Euler of a fast
+                // derivative filter) while the valve kept u and y bounded: an unstable loop,
+                // reported as diverged here, not as NaN samples (tests/trap_limits.rs)
+                diverged_at = Some(tk);
+                break;
+            }
             rec.v.push(v);
             rec.u.push(u);
             k_next += 1;
         }
-        if p == n_pieces {
+        if p == n_pieces || diverged_at.is_some() {
             break;
         }
         let t1 = ev[p + 1];

@@ -899,11 +899,9 @@ pub(crate) fn integrate(
     // not by dt. Every limit switch on a piece is found on the interpolant of its validity
     // functions (`switch_first`: Bernstein sign test, not the node values), so an excursion
     // past a limit between two nodes is seen (until branch satsw the node test kept h ≤ dt).
-    let rho = m.a.iter().fold(0.0f64, |r, a| {
-        a.complex_eigenvalues()
-            .iter()
-            .fold(r, |r, z| r.max(z.norm()))
-    });
+    let rho =
+        m.a.iter()
+            .fold(0.0f64, |r, a| r.max(crate::numerics::spectral_radius(a)));
     let mut hmax = sc.t_end;
     if rho > 0.0 {
         hmax = hmax.min(FAST_STEP / rho);

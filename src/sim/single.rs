@@ -115,13 +115,7 @@ impl LoopModel {
 
     /// Spectral radius of A (fastest open-loop mode).
     fn rho(&self) -> f64 {
-        if self.a.nrows() == 0 {
-            return 0.0;
-        }
-        self.a
-            .complex_eigenvalues()
-            .iter()
-            .fold(0.0, |m: f64, z| m.max(z.norm()))
+        crate::numerics::spectral_radius(&self.a)
     }
 }
 

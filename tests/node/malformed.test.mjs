@@ -6,6 +6,7 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { pidlab, BOILER, BOILER_TF, IPD, FIELD_PATH } from './pidlab.mjs';
 import { uniform as rng } from './rng.mjs';
+import { clone, paths, setPath } from './edit.mjs';
 
 const CALLS_PER_EXPORT = 1200;
 
@@ -30,38 +31,6 @@ const GARBAGE = [
   { a: { b: [{ c: NaN }] } }, nested(50), 1n, Symbol('x'), () => 1, new Date(0), new Map(),
   new Float64Array([1, 2]), new Uint8Array(3),
 ];
-
-function clone(v) {
-  if (Array.isArray(v)) return v.map(clone);
-  if (v && typeof v === 'object' && v.constructor === Object) {
-    const o = {};
-    for (const [k, x] of Object.entries(v)) o[k] = clone(x);
-    return o;
-  }
-  return v;
-}
-
-/** All paths (arrays of keys) inside a plain object/array value. */
-function paths(v, prefix = [], out = []) {
-  out.push(prefix);
-  if (Array.isArray(v)) v.forEach((x, i) => paths(x, [...prefix, i], out));
-  else if (v && typeof v === 'object' && v.constructor === Object) {
-    for (const [k, x] of Object.entries(v)) paths(x, [...prefix, k], out);
-  }
-  return out;
-}
-
-function setPath(root, path, value, del) {
-  if (path.length === 0) return value;
-  let o = root;
-  for (const k of path.slice(0, -1)) o = o[k];
-  const last = path[path.length - 1];
-  if (del) {
-    if (Array.isArray(o)) o.splice(last, 1);
-    else delete o[last];
-  } else o[last] = value;
-  return root;
-}
 
 /** One malformed variant of a valid input: 1-3 random edits (replace, delete, add keys). */
 function mutate(base, r) {

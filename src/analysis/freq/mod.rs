@@ -262,14 +262,14 @@ pub fn stability_and_ms(plant: &Plant, c: &Controller) -> Result<(bool, Option<f
 fn feedback_stability_and_ms(plant: &Plant, c: &Controller) -> Result<(bool, Option<f64>)> {
     let l = LoopTf::new(plant, c);
     if l.lr.num.is_zero() {
-        let a = no_feedback(plant);
+        let a = no_feedback(plant)?;
         return Ok((a.stable, a.ms));
     }
     if !l.lr.is_proper() {
         return Ok((false, None));
     }
     let hf = HighFreq::new(&l);
-    let band = Band::new(&l, hf.l_inf);
+    let band = Band::new(&l, hf.l_inf)?;
     let lim = MsLimits::new(&l, &hf);
     if hf.neutral && hf.l_inf >= 1.0 {
         let a = neutral_unstable(&l, &hf, &band);
@@ -277,7 +277,7 @@ fn feedback_stability_and_ms(plant: &Plant, c: &Controller) -> Result<(bool, Opt
     }
     let sweep = Sweep::run(&l, &band, &hf, &lim);
     let ms = ms_supremum(&l, &sweep, &lim);
-    let st = stability(&l, c, &band, &hf, sweep.truncated);
+    let st = stability(&l, c, &band, &hf, sweep.truncated)?;
     Ok((st.stable, ms.ms))
 }
 
@@ -287,13 +287,13 @@ fn feedback_stability_and_ms(plant: &Plant, c: &Controller) -> Result<(bool, Opt
 fn analyze_feedback(plant: &Plant, c: &Controller) -> Result<Analysis> {
     let l = LoopTf::new(plant, c);
     if l.lr.num.is_zero() {
-        return Ok(no_feedback(plant));
+        return no_feedback(plant);
     }
     if !l.lr.is_proper() {
         return Ok(ill_posed());
     }
     let hf = HighFreq::new(&l);
-    let band = Band::new(&l, hf.l_inf);
+    let band = Band::new(&l, hf.l_inf)?;
     let lim = MsLimits::new(&l, &hf);
     if hf.neutral && hf.l_inf >= 1.0 {
         return Ok(neutral_unstable(&l, &hf, &band));
@@ -302,7 +302,7 @@ fn analyze_feedback(plant: &Plant, c: &Controller) -> Result<Analysis> {
     let ms = ms_supremum(&l, &sweep, &lim);
     let mt = mt_supremum(&l, &sweep, &hf);
     let m = margins(&l, &sweep, &band, &hf);
-    let st = stability(&l, c, &band, &hf, sweep.truncated);
+    let st = stability(&l, c, &band, &hf, sweep.truncated)?;
     Ok(Analysis {
         stable: st.stable,
         verdict: st.verdict,
@@ -361,9 +361,15 @@ impl Analysis {
 }
 
 /// `Cy = 0`: no feedback at all, the closed loop is the open-loop plant.
-fn no_feedback(plant: &Plant) -> Analysis {
-    let unstable = plant.tf.den.roots().iter().any(|z| z.re >= 0.0);
-    Analysis {
+fn no_feedback(plant: &Plant) -> Result<Analysis> {
+    let unstable = plant
+        .tf
+        .den
+        .roots()
+        .map_err(|e| e.within("plant.den"))?
+        .iter()
+        .any(|z| z.re >= 0.0);
+    Ok(Analysis {
         stable: !unstable,
         verdict: if unstable {
             "unstable: no feedback (Cy = 0) and the plant has poles in the closed right half-plane"
@@ -375,7 +381,15 @@ fn no_feedback(plant: &Plant) -> Analysis {
         mt: Some(0.0),
         l_inf: 0.0,
         ..Analysis::blank()
-    }
+    })
+}
+
+/// The roots of a polynomial of the loop `L = Cy·P` (its numerator or denominator); errors
+/// name the controller (the plant alone was read and checked before): `controller: the loop
+/// L = Cy·P: …`, e.g. when the products' coefficients overflow.
+pub(super) fn loop_roots(p: &crate::model::poly::Poly) -> Result<Vec<C64>> {
+    p.roots()
+        .map_err(|e| Error::new("controller", format!("the loop L = Cy·P: {}", e.message)))
 }
 
 /// An improper `L`: `|L(j∞)| = ∞`, nothing else is defined.

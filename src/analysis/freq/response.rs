@@ -13,7 +13,7 @@
 //! bandwidth are inserted into the grid, so the marks lie on the curves.
 
 use super::sweep::char_freqs;
-use super::{analyze, Analysis, LoopTf};
+use super::{analyze, loop_roots, Analysis, LoopTf};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
@@ -140,7 +140,7 @@ pub fn freqresp(plant: &Plant, c: &Controller, opt: FreqOptions) -> Result<FreqR
     .flatten()
     .filter(|w| w.is_finite() && *w > 0.0)
     .collect();
-    let (flo, fhi) = char_freqs(&lt, &lt.lr.num.roots(), &lt.lr.den.roots());
+    let (flo, fhi) = char_freqs(&lt, &loop_roots(&lt.lr.num)?, &loop_roots(&lt.lr.den)?);
     let mark_hi = marks.iter().cloned().fold(0.0, f64::max);
     let lo = opt.w_min.unwrap_or(flo / 100.0);
     let hi = opt.w_max.unwrap_or((fhi * 100.0).max(mark_hi * 10.0));
@@ -189,6 +189,7 @@ pub fn freqresp(plant: &Plant, c: &Controller, opt: FreqOptions) -> Result<FreqR
         }
     }
     let l_phase = unwrap_phase(&lt, &pts);
+    overflow_check(&pts, &l_phase, &opt, (lo * hi).sqrt())?;
     Ok(FreqResponse {
         w: pts.iter().map(|p| p.w).collect(),
         s: pts.iter().map(|p| p.s).collect(),
@@ -199,6 +200,39 @@ pub fn freqresp(plant: &Plant, c: &Controller, opt: FreqOptions) -> Result<FreqR
         l_phase,
         analysis,
     })
+}
+
+/// Every curve finite at every point, else an error naming the end of the range where it
+/// overflows: at an extreme ω (e.g. `w_max: 1e300`) `|L(jω)|`, `|Cy(jω)|` or `|P(jω)|`
+/// exceeds f64's range (~1.8e308), and the gang of four would be ∞/∞ = NaN (JSON `null`).
+/// `mid`: the range's geometric middle (below it the point is nearer `w_min`).
+fn overflow_check(pts: &[Point], l_phase: &[f64], opt: &FreqOptions, mid: f64) -> Result<()> {
+    let bad = pts.iter().zip(l_phase).find(|(p, ph)| {
+        ![p.s, p.t, p.cs, p.ps, p.l.norm(), **ph]
+            .iter()
+            .all(|x| x.is_finite())
+    });
+    let Some((p, _)) = bad else {
+        return Ok(());
+    };
+    let (field, remedy) = if p.w <= mid && opt.w_min.is_some() {
+        ("options.w_min", "take a larger w_min")
+    } else if p.w > mid && opt.w_max.is_some() {
+        ("options.w_max", "take a smaller w_max")
+    } else {
+        (
+            "options.controller",
+            "the loop's coefficients are too large",
+        )
+    };
+    Err(Error::new(
+        field,
+        format!(
+            "the loop's frequency response overflows f64 at ω = {} (|L|, |Cy| or |P| beyond \
+             1.8e308): {remedy}",
+            crate::error::num(p.w)
+        ),
+    ))
 }
 
 /// Phase of `L` in degrees: the rational part unwrapped sample to sample (the grid keeps its

@@ -2,6 +2,7 @@
 
 use super::sweep::{refine, Band};
 use super::{HighFreq, LoopTf};
+use crate::error::Result;
 use crate::model::controller::Controller;
 use crate::model::poly::{Poly, C64};
 use crate::model::ss::common_denominator;
@@ -23,7 +24,7 @@ pub(super) fn stability(
     band: &Band,
     hf: &HighFreq,
     truncated: bool,
-) -> Stability {
+) -> Result<Stability> {
     let (rhp_ol, count) = nyquist_count(l, band);
     let mut st = Stability {
         stable: false,
@@ -32,7 +33,7 @@ pub(super) fn stability(
         rhp_open_loop: rhp_ol,
         margins_hold: true,
     };
-    let cr_unstable = setpoint_path_unstable(c);
+    let cr_unstable = setpoint_path_unstable(c)?;
     match count {
         Err(msg) => {
             st.verdict = msg;
@@ -60,18 +61,22 @@ pub(super) fn stability(
     if truncated && st.stable {
         st.verdict.push_str(" (frequency sweep truncated)");
     }
-    st
+    Ok(st)
 }
 
 /// The set-point path has poles of its own (poles of Cr not shared with Cy) in the closed
 /// right half-plane: internally unstable whatever the feedback loop does.
-fn setpoint_path_unstable(c: &Controller) -> bool {
+fn setpoint_path_unstable(c: &Controller) -> Result<bool> {
     let cd = common_denominator(&c.cr.den, &c.cy.den);
     let extra = cd
         .div_rem(&c.cy.den)
         .map(|(q, _)| q)
         .unwrap_or_else(|_| Poly::constant(1.0));
-    extra.roots().iter().any(|z| z.re >= -1e-12)
+    Ok(extra
+        .roots()
+        .map_err(|e| e.within("controller.cr"))?
+        .iter()
+        .any(|z| z.re >= -1e-12))
 }
 
 /// Number of open-loop RHP poles and of closed-loop RHP roots (Nyquist on the δ-shifted line).
@@ -312,7 +317,7 @@ mod tests {
     fn certified_start_turns_less_than_its_bound() {
         for (plant, c) in loops() {
             let l = LoopTf::new(&plant, &c);
-            let band = Band::new(&l, HighFreq::new(&l).l_inf);
+            let band = Band::new(&l, HighFreq::new(&l).l_inf).unwrap();
             let delta = band.w_lo * 1e-4;
             let f = |w: f64| {
                 let s = C64::new(delta, w);
@@ -351,7 +356,7 @@ mod tests {
         let mut counts = vec![];
         for (plant, c) in loops() {
             let l = LoopTf::new(&plant, &c);
-            let band = Band::new(&l, HighFreq::new(&l).l_inf);
+            let band = Band::new(&l, HighFreq::new(&l).l_inf).unwrap();
             let delta = band.w_lo * 1e-4;
             let fast = shifted_line_samples(&l, delta, &band, true);
             let full = shifted_line_samples(&l, delta, &band, false);

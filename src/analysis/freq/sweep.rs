@@ -2,6 +2,7 @@
 //! the adaptive sampling, and the rotation-tail window of a delayed biproper loop.
 
 use super::{HighFreq, LoopTf, MsLimits};
+use crate::error::Result;
 use crate::model::poly::C64;
 
 /// Characteristic frequencies: magnitudes of the non-zero poles and zeros of L and 1/θ, from
@@ -224,9 +225,11 @@ pub(super) struct Band {
 }
 
 impl Band {
-    pub(super) fn new(l: &LoopTf, l_inf: f64) -> Band {
-        let num_roots = l.lr.num.roots();
-        let den_roots = l.lr.den.roots();
+    /// Errors: the roots of L's numerator or denominator cannot be computed
+    /// ([`super::loop_roots`], `controller: …`).
+    pub(super) fn new(l: &LoopTf, l_inf: f64) -> Result<Band> {
+        let num_roots = super::loop_roots(&l.lr.num)?;
+        let den_roots = super::loop_roots(&l.lr.den)?;
         let (flo, fhi) = char_freqs(l, &num_roots, &den_roots);
         let w_lo = flo * 1e-4;
         let w_hi = fhi * 1e5;
@@ -237,7 +240,7 @@ impl Band {
             .filter(|x| *x > 0.0 && x.is_finite())
             .collect();
         let tail = Tail::new(l, w_lo, w_hi, l_inf, &pole_freqs);
-        Band {
+        Ok(Band {
             flo,
             fhi,
             w_lo,
@@ -245,7 +248,7 @@ impl Band {
             tail,
             num_roots,
             den_roots,
-        }
+        })
     }
 }
 

@@ -61,7 +61,7 @@ pub fn reduce_to_fopdt_ir(plant: &Plant) -> Result<(Family, ReductionDetails)> {
 /// ~ ε^{1/m}), are replaced by the cluster mean (exact to rounding); distinct real roots are
 /// kept. Errors name `plant.den`.
 fn lag_time_constants(den: &crate::model::poly::Poly) -> Result<Vec<f64>> {
-    let mut roots: Vec<C64> = den.roots();
+    let mut roots: Vec<C64> = den.roots().map_err(|e| e.within("plant.den"))?;
     if roots.is_empty() {
         return Err(Error::new(
             "plant.den",

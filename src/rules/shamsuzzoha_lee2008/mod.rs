@@ -355,7 +355,7 @@ pub fn setpoint_filter(gamma: f64, beta: &[f64]) -> Result<Tf> {
     let mut den = vec![1.0];
     den.extend(beta.iter().copied());
     let den = Poly::from_asc(&den);
-    if !stable_poly(&den) {
+    if !stable_poly(&den).map_err(|e| e.within("params.lambda"))? {
         return Err(Error::new(
             "params.lambda",
             format!(
@@ -398,14 +398,15 @@ pub fn weighting_filter(gamma: f64, ti: f64, td: f64) -> Result<Tf> {
     })
 }
 
-/// Hurwitz test for degree ≤ 2 (all coefficients of one sign) and via roots otherwise.
-fn stable_poly(p: &Poly) -> bool {
+/// Hurwitz test for degree ≤ 2 (all coefficients of one sign) and via roots otherwise
+/// (errors: the roots cannot be computed, without a path: the caller names the field).
+fn stable_poly(p: &Poly) -> Result<bool> {
     let c = p.asc();
     if c.len() <= 3 {
         let s = c.last().map(|x| x.signum()).unwrap_or(0.0);
-        return s != 0.0 && c.iter().all(|x| x.signum() == s && *x != 0.0);
+        return Ok(s != 0.0 && c.iter().all(|x| x.signum() == s && *x != 0.0));
     }
-    p.roots().iter().all(|z| z.re < 0.0)
+    Ok(p.roots()?.iter().all(|z| z.re < 0.0))
 }
 
 // ---------------------------------------------------------------------------------------
