@@ -467,6 +467,10 @@ export const generation = () => 1 + ctl.traps;
  *  `modules.full`: calls per function). */
 export const stats = () => structuredClone(ctl.stats);
 
+/** { n, ms }: how many answers of `fn` were computed so far, and the computing time (ms) of the
+ *  last one (in its worker, or on the page's thread at start-up). */
+export const lastCall = (fn) => { const s = ctl.stats.calls[fn]; return s ? { n: s.n, ms: s.last } : { n: 0, ms: 0 }; };
+
 /** Test hook: the fast lane's next call traps (its worker's instance then counts as dead). */
 export function forceTrap() {
   const lane = ctl.lanes.fast;
