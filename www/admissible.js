@@ -36,7 +36,10 @@ export function admissible(method, plant) {
   if (g && typeof g.admissible !== 'function') return null;
   let a;
   try {
-    a = W.need('ranges', 'admissible', { method, plant }, presetPair(method, plant) ? 'fast' : null);
+    // (only once the full module is live: before, the request waits for it, and on the slow
+    // worker, held at start-up until the first plots, it does not start the full module's load
+    // ahead of them)
+    a = W.need('ranges', 'admissible', { method, plant }, g && presetPair(method, plant) ? 'fast' : null);
   } catch {
     return null; // the module's refusal, or a crash: the declared ranges stand in
   }
