@@ -4,8 +4,24 @@
 // many seconds for Arvanitis's Algorithm III) and memoized there by input. Where the module
 // has no such function, or it fails for this plant, the ranges methods() declares stand in
 // (null here); while the worker is scanning, PENDING.
+//
+// A paper preset's (method, plant) is not scanned: the module answers it from its table
+// (src/rules/admissible_presets.rs; tests/admissible_presets.rs checks that every rule preset's
+// pair, its plant as the preset's JSON gives it, is served from the table) in 0.2–3 ms. That
+// request goes to the fast worker, beside the design: on the slow one it would wait for the
+// trade-off sweep's request in flight (docs/PERFORMANCE.md, "A preset change: the intervals
+// beside the sweep"). The page learns the intervals from the module either way.
 import * as E from './engine.js';
+import * as S from './state.js';
 import * as W from './worker-client.js';
+import { store } from './store.js';
+
+/** Whether (method, plant) is a preset's own: a rule preset applied to its process (not to a
+ *  reduced model, which loads a literal controller), the plant exactly the preset's. */
+function presetPair(method, plant) {
+  const key = JSON.stringify(plant);
+  return (store.presets || []).some((p) => p.tune && p.tune.method === method && !p.tune.plant && p.plant && JSON.stringify(S.cleanPlant(p.plant)) === key);
+}
 
 export const PENDING = W.PENDING;
 
@@ -20,7 +36,10 @@ export function admissible(method, plant) {
   if (g && typeof g.admissible !== 'function') return null;
   let a;
   try {
-    a = W.need('ranges', 'admissible', { method, plant });
+    // (only once the full module is live: before, the request waits for it, and on the slow
+    // worker, held at start-up until the first plots, it does not start the full module's load
+    // ahead of them)
+    a = W.need('ranges', 'admissible', { method, plant }, g && presetPair(method, plant) ? 'fast' : null);
   } catch {
     return null; // the module's refusal, or a crash: the declared ranges stand in
   }

@@ -25,7 +25,7 @@ import * as Id from './identify.js';
 import { drawBode, currentResponse, BODE_PARTS } from './bode.js';
 import * as I from './instructor.js';
 import * as Api from './embed-api.js';
-import { updateSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeoff.js';
+import { updateSweep, supersedeSweep, drawTradeoff, onSweepProgress, sweepState } from './tradeoff.js';
 import * as Er from './errors.js';
 import * as Hi from './history.js';
 import * as XD from './export-data.js';
@@ -257,6 +257,8 @@ function render(arrival = false) {
   if (structure.due) { setBusy(true); return; }
   if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); inputAt.prev = inputAt.last; inputAt.last = t0; }
   W.begin('render');
+  // (an input's sweep of another design stops before its intervals are asked: the slow worker)
+  if (!arrival) supersedeSweep();
   try {
     if (!arrival) C.updateRanges();
     const r = compute();

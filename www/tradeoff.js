@@ -3,11 +3,16 @@
 // a dot that moves with the slider, the pins are dots of their own colours, and the papers'
 // recommended band 1.4 ≤ Ms ≤ 2.0 is hatched.
 //
-// The sweep never blocks the page: sweep_grid and then sweep() on CHUNK values at a time run in
+// The sweep never blocks the page: sweep_grid and then sweep() on a few values at a time run in
 // the slow computation worker (worker-client.js, consumer "sweep"), one request at a time, the
-// panel redrawn after each; a new input (another plant, rule, scenario or base parameter) starts a
-// new pass: the old sweep's queued request is dropped and its running one cancelled. The swept parameter's own slider does not restart it: it moves the
-// dot along the curve.
+// panel redrawn after each. The slow worker also answers the admissible() intervals a method,
+// family or preset change waits for (consumer "ranges", queued ahead of the sweep): a request
+// in flight is not interrupted, so each sweep() request is kept short (PASS_MS, from the
+// worker's time per value of the previous request). A new input (another plant, rule, scenario
+// or base parameter) stops the old sweep at once (supersedeSweep(), from the input's render:
+// its queued request is dropped, its running one cancelled after worker-client.js's CANCEL_MS,
+// and it posts no further request) and the new sweep starts once the new design is drawn. The
+// swept parameter's own slider does not restart it: it moves the dot along the curve.
 import * as S from './state.js';
 import * as W from './worker-client.js';
 import { $, setText, errText } from './dom.js';
@@ -16,10 +21,16 @@ import { drawSpec } from './drawspec.js';
 import * as P from './pins.js';
 
 export const POINTS = 40;
-// values per sweep() request: each call has a fixed cost (the rule's plant-aware interval, about
-// 0.6 s for Shamsuzzoha & Lee on ifoptd in Node here) that a batch pays once; the panel is
-// redrawn after each batch, and a new input cancels the batch in progress (worker-client.js)
+// values per sweep() request: at most CHUNK (a request's round trip is paid once per batch; the
+// panel is redrawn after each), and as many as the worker computed in PASS_MS in the previous
+// request (its time per value): a request already running holds the slow worker, so the
+// intervals of a new design (0.2–3 ms of work for a preset: src/rules/admissible_presets.rs)
+// wait for it. The first request of a sweep has one value (Arvanitis's Algorithm III: 14–309 ms
+// of CPU per design on the boiler natively, docs/PERFORMANCE.md; most rules' designs take ≤ 2 ms,
+// and their sweeps go on in CHUNKs).
 const CHUNK = 8;
+const FIRST_CHUNK = 1;
+const PASS_MS = 12;
 const MS_MAX = 6; // points beyond this Ms are off the chart (unusable designs)
 const BAND = [1.4, 2.0];
 const C = { servo: '#0072B2', load: '#D55E00', cur: '#000000' };
@@ -49,7 +60,7 @@ async function start(inp) {
   j.startKey = JSON.stringify(inp);
   job = j;
   W.begin('sweep');
-  const live = () => job === j; // not replaced by a newer input
+  const live = () => job === j && !j.stopped; // not replaced nor stopped by a newer input
   try {
     const g = await W.ask('sweep', 'sweep_grid', { method: inp.method, plant: inp.plant, points: POINTS });
     if (!live()) return;
@@ -65,10 +76,16 @@ async function start(inp) {
     return;
   }
   try {
+    let chunk = FIRST_CHUNK;
     while (j.points.length < j.values.length) {
-      const vs = j.values.slice(j.points.length, j.points.length + CHUNK);
+      const vs = j.values.slice(j.points.length, j.points.length + chunk);
+      const before = W.lastCall('sweep').n;
       const out = await W.ask('sweep', 'sweep', { ...inp, param: j.param, values: vs });
       if (!live()) return;
+      // (the worker's own time for this request, not its wait in the queue; an answer from the
+      // memo was not computed now and keeps the chunk)
+      const c = W.lastCall('sweep');
+      if (c.n > before) chunk = Math.max(1, Math.min(CHUNK, Math.floor(PASS_MS / Math.max(c.ms / vs.length, 1e-3))));
       j.points.push(...out.points.slice(0, vs.length));
       if (j.points.length >= j.values.length && !j.refined) {
         // second pass: where neighbouring designs' Ms differ by more than MS_GAP, values between
@@ -121,12 +138,27 @@ function refinement(j) {
   return out;
 }
 
+/** Whether `j` is the sweep of input `inp` (the swept parameter's value aside). */
+const sweepOf = (j, inp) => j.method === inp.method && (j.param === null ? j.startKey === JSON.stringify(inp) : baseKey(inp, j.param) === j.baseKey);
+
 /** Starts a sweep of the current state unless the one in progress (or done) is for it. */
 export function updateSweep() {
   const inp = sweepInput();
   if (!inp) { job = null; W.begin('sweep'); return; }
-  if (job && job.method === inp.method && (job.param === null ? job.startKey === JSON.stringify(inp) : baseKey(inp, job.param) === job.baseKey)) return;
+  if (job && !job.stopped && sweepOf(job, inp)) return;
   start(inp);
+}
+
+/** A user input: a sweep in progress for another input stops now (it posts no more requests,
+ *  its queued one is dropped), so the slow worker is free for the new design's intervals; the
+ *  panel keeps what it drew until updateSweep() starts the new sweep (after the new design is
+ *  drawn, the trade-off panel's turn). */
+export function supersedeSweep() {
+  if (!job || job.done || job.stopped) return;
+  const inp = sweepInput();
+  if (inp && sweepOf(job, inp)) return;
+  job.stopped = true;
+  W.begin('sweep');
 }
 
 /** Hatching of the band [a, b] between y0 and y1: vertical strokes with gaps between them. */

@@ -7,7 +7,9 @@
 //         the pins; "presets"; "standin": the λ for Ms = 1.6 a method's panel starts from while
 //         its intervals are computed);
 //   slow: what may take seconds and must not hold the design up (consumers "ranges":
-//         admissible; "sweep": the trade-off curves; "identify").
+//         admissible; "sweep": the trade-off curves; "identify"). A paper preset's admissible()
+//         is a table look-up in the module and goes to the fast worker (need()'s `lane`,
+//         admissible.js).
 //
 // Consumers and generations. A consumer starts a pass with begin(consumer) (a new generation)
 // and asks for what the pass needs: need() returns the answer when it is known (memoized by
@@ -396,17 +398,20 @@ export function onArrival(consumer, fn) {
   ctl.arrival[consumer] = fn;
 }
 
-function enqueue(consumer, fn, input, key, waiter) {
-  const lane = ctl.lanes[LANE_OF[consumer]];
+function enqueue(consumer, fn, input, key, waiter, laneName = null) {
+  const lane = ctl.lanes[laneName || LANE_OF[consumer]];
   if (!lane) throw new EngineCrash(fn, 'no computation worker', false);
   let req = lane.find(key);
+  // (a request sent to the fast worker instead of its consumer's, a few ms of work, goes with
+  // the design's own: the page shows the design with it)
+  const prio = laneName && laneName !== LANE_OF[consumer] ? PRIORITY.render : PRIORITY[consumer] ?? 5;
   if (!req) {
-    req = { id: ctl.nextId++, seq: ctl.nextId, key, fn, input, consumers: [], gens: {}, needers: [], waiters: [], prio: PRIORITY[consumer] ?? 5 };
+    req = { id: ctl.nextId++, seq: ctl.nextId, key, fn, input, consumers: [], gens: {}, needers: [], waiters: [], prio };
     lane.queue.push(req);
   }
   if (!req.consumers.includes(consumer)) req.consumers.push(consumer);
   req.gens[consumer] = ctl.gens[consumer] || 0;
-  req.prio = Math.min(req.prio, PRIORITY[consumer] ?? 5);
+  req.prio = Math.min(req.prio, prio);
   if (waiter) req.waiters.push(waiter);
   else if (!req.needers.includes(consumer)) req.needers.push(consumer);
   lane.pump();
@@ -414,9 +419,11 @@ function enqueue(consumer, fn, input, key, waiter) {
 
 /**
  * The answer of fn(input) for the current pass of `consumer`: the value when known; throws the
- * module's error (or the EngineCrash of a trap); PENDING after queueing the request.
+ * module's error (or the EngineCrash of a trap); PENDING after queueing the request. `lane`
+ * ('fast' | 'slow') overrides the consumer's worker for this request (admissible.js: a request
+ * the module answers from a table in a few ms goes to the fast worker).
  */
-export function need(consumer, fn, input) {
+export function need(consumer, fn, input, lane = null) {
   const key = keyOf(fn, input);
   const e = ctl.memo.get(key);
   if (e) {
@@ -433,7 +440,7 @@ export function need(consumer, fn, input) {
       throw here.error || here.crash;
     }
   }
-  enqueue(consumer, fn, input, key, null);
+  enqueue(consumer, fn, input, key, null, lane);
   return PENDING;
 }
 
@@ -466,6 +473,10 @@ export const generation = () => 1 + ctl.traps;
  *  drops, requests parked for the full module, and which module answered (`modules.first`,
  *  `modules.full`: calls per function). */
 export const stats = () => structuredClone(ctl.stats);
+
+/** { n, ms }: how many answers of `fn` were computed so far, and the computing time (ms) of the
+ *  last one (in its worker, or on the page's thread at start-up). */
+export const lastCall = (fn) => { const s = ctl.stats.calls[fn]; return s ? { n: s.n, ms: s.last } : { n: 0, ms: 0 }; };
 
 /** Test hook: the fast lane's next call traps (its worker's instance then counts as dead). */
 export function forceTrap() {
