@@ -86,11 +86,12 @@ pub enum Scale {
     Log,
 }
 
-/// The interval of one continuous parameter for one plant.
+/// The interval of one continuous parameter for one plant. `S` is the type of its texts:
+/// `String` as computed, `&'static str` in the presets' table ([`Stored`]).
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct Interval {
+pub struct Interval<S = String> {
     /// Parameter name.
-    pub name: String,
+    pub name: S,
     /// Smallest value of the interval.
     pub min: f64,
     /// Largest value of the interval.
@@ -113,7 +114,7 @@ pub struct Interval {
     /// The smallest and largest Ms over the interval (its grid points and ends).
     pub ms_range: Option<[f64; 2]>,
     /// What the ends mean, in words (for the page's hint).
-    pub note: String,
+    pub note: S,
 }
 
 /// One evaluation of the rule at a parameter value.
@@ -676,35 +677,9 @@ pub fn admissible(id: &str, plant: &Plant, params: &Params) -> Result<Vec<Interv
 }
 
 /// An [`Interval`] as the presets' table stores it (static strings).
-#[derive(Debug, Clone, Copy)]
-pub struct Stored {
-    /// [`Interval::name`].
-    pub name: &'static str,
-    /// [`Interval::min`].
-    pub min: f64,
-    /// [`Interval::max`].
-    pub max: f64,
-    /// [`Interval::min_open`].
-    pub min_open: bool,
-    /// [`Interval::max_open`].
-    pub max_open: bool,
-    /// [`Interval::min_end`].
-    pub min_end: End,
-    /// [`Interval::max_end`].
-    pub max_end: End,
-    /// [`Interval::suggested`].
-    pub suggested: f64,
-    /// [`Interval::scale`].
-    pub scale: Scale,
-    /// [`Interval::ms`].
-    pub ms: Option<[f64; 3]>,
-    /// [`Interval::ms_range`].
-    pub ms_range: Option<[f64; 2]>,
-    /// [`Interval::note`].
-    pub note: &'static str,
-}
+pub type Stored = Interval<&'static str>;
 
-impl Stored {
+impl Interval<&'static str> {
     /// The interval stored.
     pub fn interval(&self) -> Interval {
         Interval {
