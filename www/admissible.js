@@ -19,9 +19,14 @@ import { store } from './store.js';
 /** Whether (method, plant) is a preset's own: a rule preset applied to its process (not to a
  *  reduced model, which loads a literal controller), the plant exactly the preset's. */
 function presetPair(method, plant) {
-  const key = JSON.stringify(plant);
-  return (store.presets || []).some((p) => p.tune && p.tune.method === method && !p.tune.plant && p.plant && JSON.stringify(S.cleanPlant(p.plant)) === key);
+  if (pairs.of !== store.presets) {
+    // (the keys built once per presets list, not at every call)
+    const keys = (store.presets || []).filter((p) => p.tune && !p.tune.plant && p.plant).map((p) => p.tune.method + '\n' + JSON.stringify(S.cleanPlant(p.plant)));
+    pairs = { of: store.presets, keys: new Set(keys) };
+  }
+  return pairs.keys.has(method + '\n' + JSON.stringify(plant));
 }
+let pairs = { of: undefined, keys: new Set() };
 
 export const PENDING = W.PENDING;
 
