@@ -74,6 +74,7 @@ function panelsSoon() {
   afterPaint(() => {
     if (!structure.due) return; // (built meanwhile: a restored state)
     buildAll();
+    W.mark('panels');
     changed();
   });
 }
@@ -161,6 +162,7 @@ function classroomStep() {
   } catch (e) {
     showBanners([...r.banners, { kind: 'warn', title: 'Frequency panels', text: errText(e) }]);
   }
+  W.mark('classroom ' + i);
   perf.classroom.push(performance.now() - t0);
   if (perf.classroom.length > 1000) perf.classroom.shift();
   if (classroom.todo.size) { afterPaint(classroomStep); return; }
@@ -203,6 +205,7 @@ function scheduleSecondary(r) {
     } catch (e) {
       showBanners([...crashBanners(), { kind: 'error', title: 'Internal error', text: errText(e) }]);
     }
+    W.mark('secondary');
     perf.secondary.push(performance.now() - t0);
     if (perf.secondary.length > 1000) perf.secondary.shift();
   });
@@ -232,6 +235,7 @@ function applyLater() {
   later.due = true;
   afterPaint(() => {
     later.due = false;
+    W.mark('later');
     changed(false, true);
   });
 }
@@ -253,6 +257,7 @@ const streaming = () => inputAt.last - inputAt.prev < STREAM_MS;
 function render(arrival = false) {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
+  W.mark(arrival ? 'render arrival' : 'render');
   // the panels of a structural change are built first (rebuildSoon): their build renders
   if (structure.due) { setBusy(true); return; }
   if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); inputAt.prev = inputAt.last; inputAt.last = t0; }
@@ -276,6 +281,7 @@ function render(arrival = false) {
       return;
     }
     perf.shown = perf.inputs;
+    W.mark('applied');
     store.last = r;
     // the module's errors in the user's words, beside the field they are about and in the banner
     r.banners = Er.route(r.banners);
@@ -338,6 +344,7 @@ function render(arrival = false) {
     }
     scheduleClassroom(r);
     lap('tables', t2);
+    W.mark('drawn');
     const crashed = crashBanners();
     if (crashed.length) showBanners([...crashed, ...r.banners]);
   } catch (e) {

@@ -122,6 +122,9 @@ function computeHere(fn, input) {
 }
 const note = (ev, lane, fn) => { if (ctl.trace) ctl.trace.push([performance.now(), ev, lane, fn]); };
 
+/** A page-side event in the trace (the benchmarks' phases: panels built, result applied, …). */
+export const mark = (ev) => note(ev, 'page', '');
+
 /** Starts recording what the workers do (the benchmark's and the tests' diagnostics); returns
  *  the record so far and stops when `on` is false. */
 export function trace(on = true) {
@@ -203,6 +206,7 @@ class Lane {
     if (w !== this.worker) return;
     if ('ready' in m) {
       this.ready = m.ready;
+      note('ready ' + m.kind, this.name, '');
       if (this.instances === 1) performance.mark('pidlab-' + this.name + '-worker-ready' + (m.kind === 'full' ? '-full' : ''));
       if (m.error) console.error('pidlab: the ' + this.name + ' worker cannot instantiate the ' + m.kind + ' module: ' + m.error);
       this.pump();
