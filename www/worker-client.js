@@ -262,9 +262,17 @@ class Lane {
     }
     remember(req.key, entry);
     // the next queued request is posted before the page handles this answer (its render of a
-    // design, 5–15 ms of the page's thread): the worker computes meanwhile
-    this.pump();
-    this.settle(req, entry);
+    // design, 5–15 ms of the page's thread): the worker computes meanwhile. Not after an
+    // answer the method's panel waits for (admissible): its arrival may rebuild the panel with
+    // other parameter values (controls.js rangesArrived), and what the queue holds is then
+    // asked again or dropped
+    if (req.consumers.includes('ranges')) {
+      this.settle(req, entry);
+      this.pump();
+    } else {
+      this.pump();
+      this.settle(req, entry);
+    }
   }
 
   settle(req, entry) {
