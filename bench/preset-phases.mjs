@@ -52,15 +52,15 @@ function phases(r) {
   const drawn = at((e) => e[1] === 'drawn' && e[0] >= (applied ?? Infinity));
   const lastDesign = Math.max(...DESIGN.map((fn) => (calls[fn] ? calls[fn].at(-1).ans : -Infinity)));
   const workerMs = DESIGN.reduce((s, fn) => s + (calls[fn] || []).reduce((a, c) => a + c.ms, 0), 0);
-  const adm = calls.admissible ? calls.admissible[0] : null;
+  const adm = tr.find((e) => e[1].startsWith('answer') && e[3] === 'admissible');
   const fr = calls.freqresp ? calls.freqresp.at(-1) : null;
   const laterT = last((e) => e[1] === 'later');
-  return { v: r.v, painted: r.painted, panels, firstPost, busyFns, busyMs, lastDesign: Number.isFinite(lastDesign) ? lastDesign : null, workerMs, applied, drawn, adm: adm && adm.ans, fr: fr && fr.ans, later: laterT, calls };
+  return { v: r.v, painted: r.painted, panels, firstPost, busyFns, busyMs, lastDesign: Number.isFinite(lastDesign) ? lastDesign : null, workerMs, applied, drawn, adm: adm ? adm[0] : null, fr: fr && fr.ans, later: laterT, calls };
 }
 const ph = rows.map(phases).sort((a, b) => b.painted - a.painted);
 console.log(`# ${dist}: ${rows.length} presets, load average ${load0.toFixed(2)} → ${loadavg()[0].toFixed(2)}`);
-console.log('ms from the input: panels built | first design post (fast worker busy before it with) | last design answer (design worker ms) | admissible answered | freqresp answered | applied | drawn | painted');
-console.log('| preset | panels | 1st post | fast worker before | design answered (worker ms) | admissible | freqresp | applied | drawn | painted |');
+console.log('ms from the input: panels built | first design post (the fast worker\'s answers before it, worker ms) | last design answer (design worker ms) | admissible answered | freqresp answered | applied | drawn | painted');
+console.log('| preset | panels | 1st post | answered before it | design answered (worker ms) | admissible | freqresp | applied | drawn | painted |');
 console.log('|---|---:|---:|---|---:|---:|---:|---:|---:|---:|');
 for (const p of ph.slice(0, K)) console.log(`| ${p.v} | ${f1(p.panels)} | ${f1(p.firstPost)} | ${p.busyFns.join(', ') || '–'} | ${f1(p.lastDesign)} (${f1(p.workerMs)}) | ${f1(p.adm)} | ${f1(p.fr)} | ${f1(p.applied)} | ${f1(p.drawn)} | ${f1(p.painted)} |`);
 const q = (a, pp) => { const s = a.filter((x) => x !== null && Number.isFinite(x)).sort((x, y) => x - y); return s.length ? s[Math.min(s.length - 1, Math.floor(pp * (s.length - 1) + 0.5))] : NaN; };
