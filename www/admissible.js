@@ -65,3 +65,17 @@ export function admissible(method, plant) {
   }
   return out;
 }
+
+/** A preset was loaded: its (method, plant)'s intervals are asked of the fast worker now (a
+ *  table look-up in the module), in the input's task, so that the method's panel, built after
+ *  the input's frame, finds them answered and asks the design with its final parameters at
+ *  once (no stand-ins, no second round trip before the tune). Nothing for another pair. */
+export function prefetch(method, plant) {
+  const g = E.fullGlue();
+  if (!method || method === '__literal' || !plant || !g || typeof g.admissible !== 'function' || !presetPair(method, plant)) return;
+  try {
+    W.need('presets', 'admissible', { method, plant }, 'fast');
+  } catch {
+    // (a refusal is memoized: the panel's own request finds it)
+  }
+}

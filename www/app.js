@@ -66,14 +66,20 @@ function rebuildSoon() {
   panelsSoon();
 }
 
-/** Every panel built (buildAll), then a render, in the task after the frame (see rebuildSoon). */
+/** Every panel built (buildAll), then a render, in the task after the frame (see rebuildSoon).
+ *  The previous design's pending work stops now, not when the panels are built: its classroom
+ *  panels' chunks, its freqresp requests not yet posted (the fast worker then takes the new
+ *  design's calls first) and its trade-off sweep. */
 function panelsSoon() {
   setBusy(true);
   if (structure.due) return;
+  beginPass();
+  supersedeSweep();
   structure.due = true;
   afterPaint(() => {
     if (!structure.due) return; // (built meanwhile: a restored state)
     buildAll();
+    W.mark('panels');
     changed();
   });
 }
@@ -161,6 +167,7 @@ function classroomStep() {
   } catch (e) {
     showBanners([...r.banners, { kind: 'warn', title: 'Frequency panels', text: errText(e) }]);
   }
+  W.mark('classroom ' + i);
   perf.classroom.push(performance.now() - t0);
   if (perf.classroom.length > 1000) perf.classroom.shift();
   if (classroom.todo.size) { afterPaint(classroomStep); return; }
@@ -203,6 +210,7 @@ function scheduleSecondary(r) {
     } catch (e) {
       showBanners([...crashBanners(), { kind: 'error', title: 'Internal error', text: errText(e) }]);
     }
+    W.mark('secondary');
     perf.secondary.push(performance.now() - t0);
     if (perf.secondary.length > 1000) perf.secondary.shift();
   });
@@ -232,6 +240,7 @@ function applyLater() {
   later.due = true;
   afterPaint(() => {
     later.due = false;
+    W.mark('later');
     changed(false, true);
   });
 }
@@ -253,15 +262,22 @@ const streaming = () => inputAt.last - inputAt.prev < STREAM_MS;
 function render(arrival = false) {
   const t0 = performance.now();
   for (const k of Object.keys(perf.phases)) delete perf.phases[k];
+  W.mark(arrival ? 'render arrival' : 'render');
   // the panels of a structural change are built first (rebuildSoon): their build renders
   if (structure.due) { setBusy(true); return; }
   if (!arrival) { W.forgetCrashes(); perf.inputs++; markInput(); inputAt.prev = inputAt.last; inputAt.last = t0; }
-  W.begin('render');
+  beginPass();
   // (an input's sweep of another design stops before its intervals are asked: the slow worker)
   if (!arrival) supersedeSweep();
   try {
     if (!arrival) C.updateRanges();
     const r = compute();
+    // the frequency response is asked for as soon as the controller is known (the worker
+    // computes it after the design's simulate and analyze, without a round trip through this
+    // thread), unless the inputs come in a stream (a drag, a held key): then the fast worker is
+    // left free for the next input's design, and the Bode panel's chunk asks for it after the
+    // frame (a newer input cancels that chunk; the drag's last input gets its panel)
+    if (r.ctl && !streaming()) { try { currentResponse(r); } catch { /* (drawBode shows the error) */ } }
     // (the first plots are drawn at once: no frame before them shows anything of an input)
     if (!r.pending && inputFrame.due && perf.firstPlotsAt) {
       setBusy(true);
@@ -276,16 +292,12 @@ function render(arrival = false) {
       return;
     }
     perf.shown = perf.inputs;
+    W.mark('applied');
     store.last = r;
     // the module's errors in the user's words, beside the field they are about and in the banner
     r.banners = Er.route(r.banners);
     showBanners(r.banners);
     showReadouts(r);
-    // the frequency response is asked for now (the worker computes it while this frame paints),
-    // unless the inputs come in a stream (a drag, a held key): then the fast worker is left free
-    // for the next input's design, and the Bode panel's chunk asks for it after the frame (a
-    // newer input cancels that chunk; the drag's last input gets its panel)
-    if (!streaming()) { try { currentResponse(r); } catch { /* (drawBode shows the error) */ } }
     const t1 = performance.now();
     // (the first plots: all at once; nothing of the page is on screen yet. A single input:
     // all at once too, its result complete in one frame. In a stream of inputs, a drag, the
@@ -338,6 +350,7 @@ function render(arrival = false) {
     }
     scheduleClassroom(r);
     lap('tables', t2);
+    W.mark('drawn');
     const crashed = crashBanners();
     if (crashed.length) showBanners([...crashed, ...r.banners]);
   } catch (e) {
@@ -345,6 +358,28 @@ function render(arrival = false) {
   } finally {
     finishRender(t0);
   }
+}
+
+/** A new render pass: what the previous ones asked of the workers for the design (consumer
+ *  "render") and for its frequency-response panel ("bode") and this one does not ask again is
+ *  dropped; the classroom panels' chunks of an older result stop. */
+function beginPass() {
+  W.begin('render');
+  W.begin('bode');
+}
+
+/** A freqresp the frequency-response panel waited for has arrived: its parts are drawn again
+ *  (in later frames, as the classroom panels are) when the page shows its latest render pass;
+ *  else that pass draws them once its result is applied. */
+function bodeArrived() {
+  const r = store.last;
+  if (!r || structure.due || classroom.gen !== W.current('render')) return;
+  classroom.r = r;
+  for (let k = 0; k < BODE_PARTS; k++) classroom.todo.add(k);
+  busy('bode', true);
+  if (classroom.scheduled) return;
+  classroom.scheduled = true;
+  afterPaint(classroomStep);
 }
 
 function finishRender(t0) {
@@ -422,7 +457,9 @@ function wire() {
  *  admissible scans, a fit and, unless `sweep` is false, the trade-off sweep; `panels` false:
  *  the readouts and response plots only, the classroom panels drawn in later frames aside). */
 function isCurrent(all = false, sweep = true, panels = true) {
-  const waiting = (panels && classroom.scheduled) || secondary.due || later.due || firstTables.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  // (the frequency-response panel's freqresp counts as the design's, as when it was asked by
+  // the render consumer: a result is painted once its answer is in)
+  const waiting = (panels && classroom.scheduled) || W.busy('bode') || secondary.due || later.due || firstTables.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 
@@ -531,6 +568,7 @@ async function main() {
   // The worker's answers: a render's render again; admissible's rebuild the method's sliders.
   W.onArrival('render', () => changed(false, true));
   W.onArrival('ranges', C.rangesArrived);
+  W.onArrival('bode', bodeArrived);
   // the λ for Ms = 1.6 the method's panel waited for (at start-up, the default design's):
   // the design's own requests are posted at once, not at the next frame's render (after the
   // panel's layout and paint: 60–80 ms at start-up here, with the fast worker idle meanwhile)

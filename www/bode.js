@@ -11,17 +11,18 @@ import { drawSpec, log10, db, cssSize, dpr } from './drawspec.js';
 import * as P from './pins.js';
 
 const C = { s: '#0072B2', t: '#D55E00', cs: '#009E73', ps: '#CC79A7', ref: '#000000', mark: '#E69F00' };
-/** freqresp() of the current loop (the worker's, memoized by input); null when there is no
- *  controller; W.PENDING while the worker computes it (the page renders again on arrival). */
+/** freqresp() of the current loop (the worker's, memoized by input; consumer "bode", whose
+ *  generations follow the render's); null when there is no controller; W.PENDING while the
+ *  worker computes it (the panel is drawn again on arrival: app.js). */
 export function currentResponse(r) {
   if (!r || !r.ctl) return null;
-  return W.need('render', 'freqresp', { plant: store.state.plant, controller: S.controllerOf(r.ctl) });
+  return W.need('bode', 'freqresp', { plant: store.state.plant, controller: S.controllerOf(r.ctl) });
 }
 
 /** freqresp of a pinned design; null when it failed or is still being computed. */
 function pinResponse(pin) {
   try {
-    const fr = W.need('render', 'freqresp', { plant: pin.plant, controller: pin.controller });
+    const fr = W.need('bode', 'freqresp', { plant: pin.plant, controller: pin.controller });
     return fr === W.PENDING ? null : fr;
   } catch {
     return null;

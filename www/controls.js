@@ -370,7 +370,12 @@ export function rangesArrived() {
     afterMethod();
     // a control of the panel that had the focus has it again (it was built anew)
     if (focused && document.activeElement !== $(focused) && $(focused)) $(focused).focus();
-    changed();
+    // (the check an input's render scheduled is settled: the sliders now span this plant's
+    // intervals, as an input's render would find)
+    updateRanges();
+    // (an answer, not an input: rendered at once, its result applied in this task; as an input
+    // it would wait for a frame first and count as a stream of inputs: app.js render())
+    changed(false, true);
     return;
   }
   updateRangesNow();

@@ -6,6 +6,7 @@ import { $, el, setText, setHidden } from './dom.js';
 import { store, changed, rebuild } from './store.js';
 import * as P from './pins.js';
 import { simInput } from './realloop.js';
+import { prefetch } from './admissible.js';
 
 export function buildPresets() {
   const sel = $('preset');
@@ -65,6 +66,7 @@ async function loadPreset(id) {
     state.params = {};
   }
   state.preset = p.id;
+  prefetch(state.method, state.plant);
   rebuild();
 }
 

@@ -3,9 +3,10 @@
 // identify) runs in a worker, so the page's thread only posts requests and keeps painting.
 //
 // Two workers ("lanes"), each with its own instance of the one compiled module:
-//   fast: what the current design shows (consumers "render": tune, simulate, analyze, freqresp,
-//         the pins; "presets"; "standin": the λ for Ms = 1.6 a method's panel starts from while
-//         its intervals are computed);
+//   fast: what the current design shows (consumers "render": tune, simulate, analyze, the
+//         pins; "bode": the frequency-response panel's freqresp, after the design's calls when
+//         both are queued; "presets"; "standin": the λ for Ms = 1.6 a method's panel starts
+//         from while its intervals are computed);
 //   slow: what may take seconds and must not hold the design up (consumers "ranges":
 //         admissible; "sweep": the trade-off curves; "identify"). A paper preset's admissible()
 //         is a table look-up in the module and goes to the fast worker (need()'s `lane`,
@@ -48,10 +49,13 @@ export class Superseded extends Error {
   constructor(fn) { super(fn + '(): superseded by a newer request'); this.name = 'Superseded'; }
 }
 
-const LANE_OF = { render: 'fast', presets: 'fast', standin: 'fast', ranges: 'slow', identify: 'slow', sweep: 'slow' };
-// on the slow lane, who goes first when several are queued
-const PRIORITY = { standin: 0, render: 0, presets: 0, identify: 1, ranges: 2, sweep: 3 };
-// (a restart costs an instantiation, 20–120 ms here: a call shorter than this is left to finish)
+const LANE_OF = { render: 'fast', presets: 'fast', standin: 'fast', bode: 'fast', ranges: 'slow', identify: 'slow', sweep: 'slow' };
+// who goes first when several are queued on a lane (the fast lane: the design before the
+// frequency-response panel's freqresp)
+const PRIORITY = { standin: 0, render: 0, presets: 0, bode: 1, identify: 1, ranges: 2, sweep: 3 };
+// (a restart costs an instantiation, 20–120 ms here, 46–111 ms from a trap to the fresh worker
+// ready with the full module at load 2.5–7.5, and its first calls run cold: a call shorter than
+// this is left to finish; a superseded freqresp, 1–11 ms, always is)
 const CANCEL_MS = 250;
 const MEMO_SIZE = 64;
 
@@ -121,6 +125,9 @@ function computeHere(fn, input) {
   return entry;
 }
 const note = (ev, lane, fn) => { if (ctl.trace) ctl.trace.push([performance.now(), ev, lane, fn]); };
+
+/** A page-side event in the trace (the benchmarks' phases: panels built, result applied, …). */
+export const mark = (ev) => note(ev, 'page', '');
 
 /** Starts recording what the workers do (the benchmark's and the tests' diagnostics); returns
  *  the record so far and stops when `on` is false. */
@@ -203,6 +210,7 @@ class Lane {
     if (w !== this.worker) return;
     if ('ready' in m) {
       this.ready = m.ready;
+      note('ready ' + m.kind, this.name, '');
       if (this.instances === 1) performance.mark('pidlab-' + this.name + '-worker-ready' + (m.kind === 'full' ? '-full' : ''));
       if (m.error) console.error('pidlab: the ' + this.name + ' worker cannot instantiate the ' + m.kind + ' module: ' + m.error);
       this.pump();
@@ -253,8 +261,18 @@ class Lane {
       entry = { error: e };
     }
     remember(req.key, entry);
-    this.settle(req, entry);
-    this.pump();
+    // the next queued request is posted before the page handles this answer (its render of a
+    // design, 5–15 ms of the page's thread): the worker computes meanwhile. Not after an
+    // answer the method's panel waits for (admissible): its arrival may rebuild the panel with
+    // other parameter values (controls.js rangesArrived), and what the queue holds is then
+    // asked again or dropped
+    if (req.consumers.includes('ranges')) {
+      this.settle(req, entry);
+      this.pump();
+    } else {
+      this.pump();
+      this.settle(req, entry);
+    }
   }
 
   settle(req, entry) {
