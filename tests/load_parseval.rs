@@ -275,3 +275,46 @@ fn unstable_and_offset_loops_are_refused() {
     let e = load_step_criterion(&plant(&p), &c, w, None).unwrap_err();
     assert_eq!(e.path, "weights.u");
 }
+
+/// Algorithm III's exact `∂J/∂τ_D` at fixed τ_I (`alg3_criterion`: Parseval's derivative along
+/// ∂Cy/∂τ_D, K_C following Eq. 11 through `IpdLoop::phase_peak_dtd`) against Richardson's
+/// extrapolation of central differences of its own J (steps 1e-3 and 5e-4 τ_D: truncation
+/// O(h⁴) ≈ 1e-12, round-off 1e-13/5e-4 ≈ 2e-10 in units of J/τ_D; compared in those units,
+/// since ∂J/∂τ_D vanishes at the optimum; 1e-8 leaves room for J‴ larger than J/τ_D³ near
+/// the phase peak's edge), and `d ln K_C/dτ_D` against a central difference of Eq. (11)'s
+/// K_C (step 1e-4 τ_D: truncation ~1e-8, round-off ~1e-11; 1e-7).
+#[wasm_bindgen_test(unsupported = test)]
+fn algorithm3_derivative_is_the_derivative_of_j() {
+    use pidlab::rules::arvanitis2012::alg3_criterion;
+    let p = Process::new(0.547, 1.06, 0.418, 0.1).unwrap();
+    for (ti, td) in [(1.6, 0.5), (2.5, 1.07), (4.0, 0.2)] {
+        let (j, dj) = alg3_criterion(&p, ti, td, "isenscod").unwrap().unwrap();
+        let cd = |h: f64| {
+            let jp = alg3_criterion(&p, ti, td + h, "isenscod")
+                .unwrap()
+                .unwrap()
+                .0;
+            let jm = alg3_criterion(&p, ti, td - h, "isenscod")
+                .unwrap()
+                .unwrap()
+                .0;
+            (jp - jm) / (2.0 * h)
+        };
+        // Richardson's extrapolation of two central differences: truncation O(h⁴)
+        let h = 1e-3 * td;
+        let fd = (4.0 * cd(0.5 * h) - cd(h)) / 3.0;
+        println!("τ_I {ti} τ_D {td}: ∂J/∂τ_D {dj} vs {fd}");
+        assert!((dj - fd).abs() <= 1e-8 * j / td, "{dj} vs {fd}");
+        let h = 1e-4 * td;
+        let l = |y: f64| IpdLoop::new(p.d(), p.tz(), ti, y);
+        let (pk, dln) = l(td).phase_peak_dtd().unwrap();
+        let fd = (l(td + h).phase_peak().unwrap().kc.ln()
+            - l(td - h).phase_peak().unwrap().kc.ln())
+            / (2.0 * h);
+        assert!(
+            (dln - fd).abs() <= 1e-7 * dln.abs().max(1.0),
+            "{dln} vs {fd} (K_C {})",
+            pk.kc
+        );
+    }
+}

@@ -36,6 +36,12 @@
 //! over the panels, requested below 1e-13 of ∫|g|) and the tail's (the difference between the
 //! six- and five-term fits, plus the quadrature of the phase integral).
 //!
+//! **Near-neutral loops are refused.** ρ grows as 1/(1 − |L(j∞)|): as |L(j∞)| → 1 the peaks
+//! of |S| in each period narrow and drift with ω, and the expansion needs Ω ≫ ρ. A loop that
+//! would need more than [`MAX_PERIODS`] periods (|L(j∞)| within ~1e-3 of 1 for the Arvanitis
+//! family; such a load response decays over ~1/(1 − |L(j∞)|) dead times) is an error, as is a
+//! quadrature that misses its tolerance within its panel budget: the caller simulates instead.
+//!
 //! ISENSDCO-like weights (`w_du > 0`) are infinite when u jumps (`L(j∞) ≠ 0`: `sU` tends to
 //! a periodic non-zero function): `Ok(None)`. An unstable loop is refused (its load response
 //! diverges: J is not a number).
@@ -90,6 +96,9 @@ const REL_TOL: f64 = 1e-13;
 const OMEGA_RHO: f64 = 50.0;
 /// Terms of the tail's expansion in Ω/ω.
 const TERMS: usize = 6;
+/// At most this many periods 2π/θ up to Ω (each needs ~60 evaluations): a loop that needs
+/// more (|L(j∞)| within ~1e-3 of 1, where ρ grows as 1/(1 − |L(j∞)|)) is refused.
+const MAX_PERIODS: f64 = 400.0;
 
 /// The loop's polynomials, precomputed once (see the module docs for the formulas).
 struct Terms {
@@ -259,7 +268,7 @@ pub fn load_step_criterion(
         w,
         tan,
     };
-    Ok(Some(integrate(&terms, l_inf)))
+    integrate(&terms, l_inf).map(Some)
 }
 
 /// Fujiwara's bound on the roots of `D + zN` for every |z| ≤ 1 (`deg N ≤ deg D`, |L(j∞)| < 1),
@@ -267,7 +276,7 @@ pub fn load_step_criterion(
 fn radii(t: &Terms, l_inf: f64) -> (f64, f64) {
     let (d, n) = (t.d.asc(), t.n.asc());
     let deg = t.d.degree();
-    let lead = d[deg].abs() * (1.0 - l_inf);
+    let lead = d[deg].abs() * (1.0 - l_inf.abs());
     let c = |i: usize| d[i].abs() + n.get(i).map_or(0.0, |x| x.abs());
     let mut hi: f64 = 0.0;
     let mut lo_inv: f64 = 0.0;
@@ -283,7 +292,7 @@ fn radii(t: &Terms, l_inf: f64) -> (f64, f64) {
     (lo.min(hi), hi.max(f64::MIN_POSITIVE))
 }
 
-fn integrate(t: &Terms, l_inf: f64) -> LoadCriterion {
+fn integrate(t: &Terms, l_inf: f64) -> Result<LoadCriterion> {
     let (lo, rho) = radii(t, l_inf);
     // the period of the delay's phase in ω (any length without a delay: no phase there)
     let want = OMEGA_RHO * rho;
@@ -293,6 +302,15 @@ fn integrate(t: &Terms, l_inf: f64) -> LoadCriterion {
     } else {
         (want / 16.0, 16.0)
     };
+    if k > MAX_PERIODS {
+        return Err(Error::new(
+            "controller",
+            format!(
+                "a near-neutral loop (|L(j∞)| = {:.6}): its load response decays over ~1/(1 − |L(j∞)|) dead times and the frequency integral would need {k} periods of the delay's phase (more than {MAX_PERIODS})",
+                l_inf.abs()
+            ),
+        ));
+    }
     let omega = k * period;
     // panels: [0, lo/10], geometric (8 per decade) up to min(Ω, period/2), then quarter periods
     let mut breaks = vec![0.0];
@@ -335,15 +353,21 @@ fn integrate(t: &Terms, l_inf: f64) -> LoadCriterion {
         [0, 1, 0, 1].map(|c| REL_TOL * body.l1[c]),
         400,
     );
+    if !(body.converged && tail.converged) {
+        return Err(Error::new(
+            "controller",
+            "the frequency integral of the load response did not reach its tolerance within the panel budget",
+        ));
+    }
     let inv_pi = std::f64::consts::FRAC_1_PI;
-    LoadCriterion {
+    Ok(LoadCriterion {
         j: inv_pi * (body.value[0] + tail.value[0]),
         error: inv_pi * (body.error[0] + tail.error[0] + tail.value[2].abs()),
         dj: inv_pi * (body.value[1] + tail.value[1]),
         dj_error: inv_pi * (body.error[1] + tail.error[1] + tail.value[3].abs()),
         u_inf: t.b0.recip() * t.d0 - 1.0,
         evals: body.evals + TERMS * tail.evals,
-    }
+    })
 }
 
 /// `Σ_m b_m·wts[m]` for the polynomial `Σ_m b_m x^m` (m < `terms`) through the first `terms`
