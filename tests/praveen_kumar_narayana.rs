@@ -1,5 +1,7 @@
 //! Praveen Kumar & Narayana: PID × lead-lag by pole placement (seed 004_e7142b8c2f5ed265.txt).
 
+mod common;
+use common::Rng;
 use pidlab::analysis::freq::analyze;
 use pidlab::analysis::simulate;
 use pidlab::model::plant::Family;
@@ -125,20 +127,6 @@ fn characteristic_equation_has_the_designed_roots() {
         .unwrap();
         let r = char_residual(&p, &t.controller, lambda);
         assert!(r <= 1e-9, "λ = {lambda}: residual {r}");
-    }
-}
-
-/// Small deterministic generator (no dependency): xorshift64*.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo * (hi / lo).powf(self.next())
     }
 }
 

@@ -39,20 +39,28 @@ fn gains(t: &Tuning) -> Vec<u64> {
 /// pass moves τ_D by ≤ 1e-5 relative (its inner Brent minimization to ~1e-7), so the two agree
 /// to 1e-5 in τ_D, and τ_I, K_C follow from τ_D through the same fixed point of Eqs. (10),
 /// (11), (20) (their sensitivity to τ_D is O(1) here: 1e-5 again). J is flat at its minimum:
-/// a τ_D error δ moves it by O(δ²), far below 1e-6.
+/// a τ_D error δ moves it by O(δ²), far below 1e-6; the root solve's J is Parseval's over
+/// [0, ∞), the reference's is simulated over τ_P(60 + 20 τ_I), and at these solutions the
+/// response has decayed well inside that window (the difference is part of the 1e-6).
+/// Cases: the boiler, a slow plant, and issue 15's plant (ζ 1.79 and 0.6).
 #[test]
 fn algorithm3_root_solve_is_the_papers_fixed_point() {
     for (p, zeta) in [
         (Process::new(0.547, 1.06, 0.418, 0.1).unwrap(), 0.6),
         (Process::new(1.0, 2.0, 0.8, 1.0).unwrap(), 0.707),
+        (Process::new(0.478, 0.536, 2.80, 0.521).unwrap(), 0.6),
     ] {
         let (a, ia) = algorithm3(&p, zeta, "isenscod", None).unwrap();
         let (b, ib) = algorithm3_reference(&p, zeta, "isenscod", None).unwrap();
         println!(
-            "{p:?} ζ {zeta}: τ_D {} vs {} ({:.1e}), sims {} vs {}",
+            "{p:?} ζ {zeta}: τ_D {} vs {} ({:.1e}), J {} vs {} ({:.1e}), evaluations {}, sims {} vs {}",
             a.td,
             b.td,
             rel(a.td, b.td),
+            ia.j,
+            ib.j,
+            rel(ia.j, ib.j),
+            ia.evaluations,
             ia.simulations,
             ib.simulations
         );

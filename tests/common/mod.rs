@@ -135,3 +135,20 @@ pub fn rel_diff(a: &Response, reference: &Response) -> (f64, f64) {
         maxdiff(&a.u, &reference.u) / maxabs(&reference.u),
     )
 }
+
+/// A small deterministic generator (xorshift64*, no dependency), so random cases are the same
+/// each run.
+pub struct Rng(pub u64);
+impl Rng {
+    /// Uniform in [0, 1).
+    pub fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        (self.0.wrapping_mul(0x2545_F491_4F6C_DD1D) >> 11) as f64 / (1u64 << 53) as f64
+    }
+    /// Log-uniform in [lo, hi).
+    pub fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo * (hi / lo).powf(self.next())
+    }
+}

@@ -29,6 +29,7 @@ use crate::model::poly::C64;
 use crate::model::tf::Tf;
 
 mod closed;
+mod load;
 mod margins;
 mod response;
 mod solve;
@@ -36,6 +37,7 @@ mod stability;
 mod sweep;
 
 use closed::{bandwidth, mt_supremum};
+pub use load::{load_step_criterion, CyTangent, LoadCriterion, LoadWeights};
 use margins::{margins, ms_supremum};
 pub use response::{freqresp, FreqOptions, FreqResponse};
 pub use solve::solve_for_ms;

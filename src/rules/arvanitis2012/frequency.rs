@@ -219,6 +219,19 @@ impl IpdLoop {
         Ok(PhasePeak { w_p, kc, pm_max })
     }
 
+    /// [`Self::phase_peak`] with `d ln K_C/dτ_D` at fixed τ_I (Algorithm III's exact ∂J/∂τ_D):
+    /// w_P moves with τ_D as Eq. (10) stays zero, `dw_P/dτ_D = −(∂²φ_L/∂w∂τ_D)/(∂²φ_L/∂w²)`
+    /// with `∂²φ_L/∂w∂τ_D = (1 − τ_D²w²)/(1 + τ_D²w²)²`, and `ln K_C = −ln A_L(w_P)`.
+    pub fn phase_peak_dtd(&self) -> Result<(PhasePeak, f64)> {
+        let pk = self.phase_peak()?;
+        let w = pk.w_p;
+        let tw2 = (self.td * w).powi(2);
+        let phi_wt = (1.0 - tw2) / (1.0 + tw2).powi(2);
+        let dw_dtd = -phi_wt / self.eq10_dw(w);
+        let (_, dlna_dw, dlna_dtd) = self.ln_mag_partials(w);
+        Ok((pk, -(dlna_dtd + dlna_dw * dw_dtd)))
+    }
+
     /// The ultimate gain K_u(τ_I, τ_D): the smallest K_C at which the loop of Eq. (7) loses
     /// stability, with the frequency of the phase crossover (`None`: no crossover, infinite
     /// gain margin). Zero when τ_I ≤ τ_I,min (not stabilizable for any K_C). Exact: the critical

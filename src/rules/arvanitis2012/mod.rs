@@ -173,6 +173,17 @@ impl Process {
         self.tau_z / self.tau_p
     }
 
+    /// The process as the `ipdt_ir` plant `K̄(1 − τ̄_Z s)e^{−d̄s}/(s(τ̄_P s + 1))`.
+    pub fn plant(&self) -> crate::model::plant::Plant {
+        crate::model::plant::Family::IpdtIr {
+            k: self.k,
+            tau: self.tau_p,
+            tau_z: self.tau_z,
+            theta: self.theta,
+        }
+        .plant()
+    }
+
     /// Physically consistent I-PD gains (K̄_P, K̄_I, K̄_D) from normalized series-PID settings
     /// (K_C, τ_I, τ_D): corrected Table 1 (`K_C = K̄ τ̄_P K̄_C`, `τ_I = τ̄_I/τ̄_P`,
     /// `τ_D = τ̄_D/τ̄_P`) and Eq. (4) (`K̄_P = K̄_C(τ̄_D + τ̄_I)/τ̄_I`, `K̄_I = K̄_C/τ̄_I`,
@@ -545,7 +556,8 @@ impl super::Rule for Alg3 {
         })()
         .map_err(plant_error)
     }
-    /// Each design simulates the load response for each trial τ_D (10-50 simulations).
+    /// Each design evaluates the load criterion for each trial τ_D: 5-10 evaluations by
+    /// Parseval (under a millisecond each), or 10-50 simulations for near-neutral loops.
     fn slow_to_tune(&self) -> bool {
         true
     }
