@@ -514,6 +514,13 @@ pub(crate) fn col_major_rows<const R: usize>(cols: &[f64], z: &[f64], out: &mut 
 
 // ------------------------------------------------------------------------------------------
 // Quadrature (issue 15: Algorithm III's criterion by Parseval).
+//
+// Written here rather than taken from a crate: the Gauss–Kronrod crates (`quadrature`, `gkquad`)
+// integrate one scalar function, while the criterion's integrand returns several components
+// (J, ∂J/∂p, the tail's fits) from one evaluation of the loop, which must share the panels; the
+// Hurwitz zeta is needed for integer s ≥ 2 only (Euler–Maclaurin, below), where `spfunc` (0.1,
+// little used) takes a generic complex route of unstated accuracy and `GSL` binds C, which the
+// wasm32 build cannot link.
 
 /// Gauss–Kronrod 15-point abscissae on [−1, 1] (non-negative half, descending; QUADPACK qk15).
 const GK15_X: [f64; 8] = [
