@@ -100,21 +100,18 @@ const TERMS: usize = 6;
 /// more (|L(j∞)| within ~1e-3 of 1, where ρ grows as 1/(1 − |L(j∞)|)) is refused.
 const MAX_PERIODS: f64 = 400.0;
 
-/// The loop's polynomials, precomputed once (see the module docs for the formulas).
+/// The loop's polynomials, precomputed once (see the module docs for the formulas), and the
+/// same for the tangent.
 struct Terms {
-    n: Poly,
-    d: Poly,
-    a_s: Poly,
-    r: Poly,
-    d0: f64,
-    b0: f64,
+    p: Polys,
     theta: f64,
     w: LoadWeights,
-    tan: Option<TanTerms>,
+    tan: Option<Polys>,
 }
 
-/// The tangent's polynomials: N', D', (A/s)', R', D(0)', B₀'.
-struct TanTerms {
+/// N, D, A/s, R, D(0), B₀ of the loop (or their derivatives along the tangent: N′, D′, (A/s)′,
+/// R′, D(0)′, B₀′).
+struct Polys {
     n: Poly,
     d: Poly,
     a_s: Poly,
@@ -141,13 +138,13 @@ impl Terms {
             half.sin() / half
         };
         let e = C64::from_polar(self.theta * sinc, -half);
-        let nv = horner_jw(self.n.asc(), w);
-        let dv = horner_jw(self.d.asc(), w);
+        let nv = horner_jw(self.p.n.asc(), w);
+        let dv = horner_jw(self.p.d.asc(), w);
         let bd = dv + nv * z;
         let inv_b = bd.inv();
-        let y = horner_jw(self.a_s.asc(), w) * z * inv_b;
-        let q = horner_jw(self.r.asc(), w) + nv * e * self.d0;
-        let uu = q * inv_b / self.b0;
+        let y = horner_jw(self.p.a_s.asc(), w) * z * inv_b;
+        let q = horner_jw(self.p.r.asc(), w) + nv * e * self.p.d0;
+        let uu = q * inv_b / self.p.b0;
         let du = -nv * z * inv_b;
         let wt = &self.w;
         let g = wt.e * y.norm_sqr() + wt.u * uu.norm_sqr() + wt.du * du.norm_sqr();
@@ -158,8 +155,8 @@ impl Terms {
         let bd1 = horner_jw(t.d.asc(), w) + n1 * z;
         let rb = bd1 * inv_b;
         let y1 = horner_jw(t.a_s.asc(), w) * z * inv_b - y * rb;
-        let q1 = horner_jw(t.r.asc(), w) + (nv * t.d0 + n1 * self.d0) * e;
-        let uu1 = q1 * inv_b / self.b0 - uu * (rb + t.b0 / self.b0);
+        let q1 = horner_jw(t.r.asc(), w) + (nv * t.d0 + n1 * self.p.d0) * e;
+        let uu1 = q1 * inv_b / self.p.b0 - uu * (rb + t.b0 / self.p.b0);
         let du1 = -n1 * z * inv_b - du * rb;
         let dg = 2.0
             * (wt.e * (y.conj() * y1).re
@@ -247,7 +244,7 @@ pub fn load_step_criterion(
                 .asc()
                 .to_vec();
             rc[0] = 0.0;
-            Some(TanTerms {
+            Some(Polys {
                 r: div_s(&Poly::from_asc(&rc)),
                 a_s: div_s(&a1),
                 n: n1,
@@ -258,12 +255,14 @@ pub fn load_step_criterion(
         }
     };
     let terms = Terms {
-        r: r_of(n0, &d, d0, &n),
-        a_s: div_s(&a),
-        n,
-        d,
-        d0,
-        b0,
+        p: Polys {
+            r: r_of(n0, &d, d0, &n),
+            a_s: div_s(&a),
+            n,
+            d,
+            d0,
+            b0,
+        },
         theta: plant.delay,
         w,
         tan,
@@ -274,13 +273,13 @@ pub fn load_step_criterion(
 /// Fujiwara's bound on the roots of `D + zN` for every |z| ≤ 1 (`deg N ≤ deg D`, |L(j∞)| < 1),
 /// and a lower scale (the same bound for the reversed polynomials) for the first panels.
 fn radii(t: &Terms, l_inf: f64) -> (f64, f64) {
-    let (d, n) = (t.d.asc(), t.n.asc());
-    let deg = t.d.degree();
+    let (d, n) = (t.p.d.asc(), t.p.n.asc());
+    let deg = t.p.d.degree();
     let lead = d[deg].abs() * (1.0 - l_inf.abs());
     let c = |i: usize| d[i].abs() + n.get(i).map_or(0.0, |x| x.abs());
     let mut hi: f64 = 0.0;
     let mut lo_inv: f64 = 0.0;
-    let c0 = t.b0.abs();
+    let c0 = t.p.b0.abs();
     for i in 0..deg {
         hi = hi.max((c(i) / lead).powf(1.0 / (deg - i) as f64));
     }
@@ -365,7 +364,7 @@ fn integrate(t: &Terms, l_inf: f64) -> Result<LoadCriterion> {
         error: inv_pi * (body.error[0] + tail.error[0] + tail.value[2].abs()),
         dj: inv_pi * (body.value[1] + tail.value[1]),
         dj_error: inv_pi * (body.error[1] + tail.error[1] + tail.value[3].abs()),
-        u_inf: t.b0.recip() * t.d0 - 1.0,
+        u_inf: t.p.b0.recip() * t.p.d0 - 1.0,
         evals: body.evals + TERMS * tail.evals,
     })
 }
