@@ -515,11 +515,17 @@ enum Alg3Eval {
     Simulated,
 }
 
+/// Whether τ_D = y lies above Algorithm III's lower bound `max(0, d + τ_Z + 1 − τ_I)` at τ_I
+/// (normalized), where both criterion evaluations apply.
+fn alg3_in_region(d: f64, tz: f64, ti: f64, y: f64) -> bool {
+    y.partial_cmp(&(d + tz + 1.0 - ti).max(0.0)) == Some(std::cmp::Ordering::Greater)
+}
+
 /// The simulated J at fixed τ_I (K_C from Eq. 11 at (τ_I, y)), as the reference's Step 5
 /// evaluates it; `None` outside the admissible region or for a diverging response.
 fn alg3_simulated_j(p: &Process, ti: f64, y: f64, criterion: &str) -> Result<Option<f64>> {
     let (d, tz) = (p.d(), p.tz());
-    if y.partial_cmp(&(d + tz + 1.0 - ti).max(0.0)) != Some(std::cmp::Ordering::Greater) {
+    if !alg3_in_region(d, tz, ti, y) {
         return Ok(None);
     }
     let Ok(pk) = IpdLoop::new(d, tz, ti, y).phase_peak() else {
@@ -574,7 +580,7 @@ pub fn alg3_criterion(p: &Process, ti: f64, y: f64, criterion: &str) -> Result<O
     use crate::analysis::freq::{load_step_criterion, CyTangent, LoadWeights};
     use crate::model::poly::Poly;
     let (d, tz) = (p.d(), p.tz());
-    if y.partial_cmp(&(d + tz + 1.0 - ti).max(0.0)) != Some(std::cmp::Ordering::Greater) {
+    if !alg3_in_region(d, tz, ti, y) {
         return Ok(None);
     }
     let Ok((pk, dlnkc)) = IpdLoop::new(d, tz, ti, y).phase_peak_dtd() else {
