@@ -28,7 +28,7 @@ const WARMUP = 100;
 // V8 runs a wasm function first as Liftoff code and compiles it with TurboFan in the background
 // once it is hot (dynamic tiering): 100 warm-up updates (~0.15 s) left part of the first measured
 // phase, the update, on Liftoff code (update CPU median 1.15 ms against 0.98 ms with every
-// function compiled by TurboFan up front, `node --no-wasm-dynamic-tiering`, same run, load 5–6;
+// function compiled by TurboFan up front, `node --no-wasm-dynamic-tiering`, two consecutive runs, load 5–6;
 // the phases measured after it were the same either way). So the updates run for WARM_MS
 // before anything is timed: the steady state of a slider drag, which a page reaches within
 // seconds too.
