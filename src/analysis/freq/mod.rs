@@ -37,7 +37,9 @@ mod stability;
 mod sweep;
 
 use closed::{bandwidth, mt_supremum};
-pub use load::{load_step_criterion, CyTangent, LoadCriterion, LoadWeights};
+pub use load::{
+    load_step_criterion, load_step_criterion_with, CyTangent, LoadCriterion, LoadWeights, Tail,
+};
 use margins::{margins, ms_supremum};
 pub use response::{freqresp, FreqOptions, FreqResponse};
 pub use solve::solve_for_ms;
