@@ -32,15 +32,38 @@
 //! that the sum over the periods is `Σ_m b_m Ω^m T^{−m−2} ζ(m + 2, (Ω + t)/T)` (Hurwitz zeta).
 //! The fit's error is below (ρ/Ω)⁶ ≈ 6e-11 of the tail, itself ~ρ/Ω of J.
 //!
-//! **Error stated.** [`LoadCriterion::error`] adds the quadrature's estimate (Σ|K15 − G7|
-//! over the panels, requested below 1e-13 of ∫|g|) and the tail's (the difference between the
-//! six- and five-term fits, plus the quadrature of the phase integral).
+//! **The tail by modes (near-neutral loops, issue 15, branch `neutral`).** ρ grows as
+//! 1/(1 − |L(j∞)|): as |L(j∞)| → 1 the peaks of |S| in each period narrow and drift with ω,
+//! and the expansion needs Ω ≫ ρ. When it would need more than [`MAX_PERIODS`] periods (and
+//! θ > 0) the tail is taken by the modes of the integrand in `z = e^{−jωθ}` instead. Every
+//! term is `|α + βz|²/|D + Nz|²` (α, β polynomial in s = jω over s⁰ or s¹: E = (1 − z)/s is
+//! affine in z), so with `a = N/D` (|a| < 1 beyond the last crossing of |L| = 1), `c₀ = α/D`,
+//! `γ = (β − αa)/D`, `f = Σ cₙzⁿ` with `cₙ = γ(−a)ⁿ⁻¹` (n ≥ 1), and exactly
+//! `g = h₀ + 2·Re{H·z/(1 + a·z)}` with the period average `h₀ = Σ w(|c₀|² + |γ|²/(1 − |a|²))`
+//! and `H = Σ w(γc̄₀ − a|γ|²/(1 − |a|²))` (`h_k = (−a)^{k−1}H` for k ≥ 1). Beyond Ω:
+//! `∫h₀` by quadrature after ω = Ω/u, and `G = H·z/(1 + a·z)`, whose continuation (X̄ → X at
+//! s → −s) is analytic in `Re ω ≥ Ω, Im ω ≤ 0` — its poles there would be closed-loop poles in
+//! Re s > 0 — and O(ω⁻²), by contour rotation onto the ray `ω = Ω − jt` where
+//! `|z| = e^{−θt}` (to t = 48/θ). Ω is twice the radius of the modes' singularities (the
+//! roots of D and of `D(s)D(−s) − N(s)N(−s)`, Fujiwara bounds: ∝ (1 − |L(j∞)|)^{−1/2}, not
+//! its inverse) rounded up to whole periods plus the phase of `a(Ω)` (so that `a·z ≈ |a|`,
+//! `1 + a·z` far from 0). The tangent follows by dual numbers through the same formulas.
+//! The body resolves each resonance (`ωθ ≡ arg a + π`) narrower than 1/64 period with breaks
+//! at ±δ·8^i around it (δ = |1 − |a||/θ): adaptive panels started on quarter periods can
+//! step over such a peak unseen (measured 4e-7 of J on issue 15's plant before the breaks).
 //!
-//! **Near-neutral loops are refused.** ρ grows as 1/(1 − |L(j∞)|): as |L(j∞)| → 1 the peaks
-//! of |S| in each period narrow and drift with ω, and the expansion needs Ω ≫ ρ. A loop that
-//! would need more than [`MAX_PERIODS`] periods (|L(j∞)| within ~1e-3 of 1 for the Arvanitis
-//! family; such a load response decays over ~1/(1 − |L(j∞)|) dead times) is an error, as is a
-//! quadrature that misses its tolerance within its panel budget: the caller simulates instead.
+//! **Error stated.** [`LoadCriterion::error`] adds the quadratures' estimates (Σ|K15 − G7|
+//! over the panels, requested below 1e-13 of ∫|g|), the tail's (the difference between the
+//! six- and five-term fits; for the modes, the ray's truncation), and the rounding: 16ε of
+//! ∫|g| for the sums, and the near-neutral conditioning `ε/(1 − |L(j∞)|)` (|1 + a·z| and
+//! 1 − aa* are formed with an absolute rounding ε) twice for J, three times for ∂J/∂p.
+//!
+//! **Refused:** |L(j∞)| ≥ 1 and unstable loops (J is not a number), and the stated budget: a
+//! loop whose modes would need more than [`MAX_MODE_PERIODS`] periods, or a quadrature that
+//! misses its tolerance within [`MAX_PANELS`] panels (errors naming `controller`; Algorithm
+//! III then simulates). On issue 15's plant the modes need 3, 10, 17 periods at |L(j∞)| =
+//! 0.99, 0.999, 0.9997, and 298 at 1 − 1e-6 (the (1 − |L(j∞)|)^{−1/2} law; 2e5 evaluations,
+//! stated error 4e-10 of J); at 1 − 1e-7 the body exceeds the panel budget (measured).
 //!
 //! ISENSDCO-like weights (`w_du > 0`) are infinite when u jumps (`L(j∞) ≠ 0`: `sU` tends to
 //! a periodic non-zero function): `Ok(None)`. An unstable loop is refused (its load response
