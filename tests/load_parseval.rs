@@ -99,6 +99,24 @@ fn boiler_matches_the_simulated_criterion() {
     }
 }
 
+/// The i-th random loop of the family (K̄, τ̄_P, τ̄_Z (a third of them 0), d̄ over two decades
+/// each; τ_I, τ_D random): the process and (τ_I, τ_D).
+fn random_loop(rng: &mut Rng, i: usize) -> (Process, f64, f64) {
+    let k = rng.log_uniform(0.1, 10.0) * if i.is_multiple_of(5) { -1.0 } else { 1.0 };
+    let tau = rng.log_uniform(0.2, 20.0);
+    let tz = if i.is_multiple_of(3) {
+        0.0
+    } else {
+        tau * rng.log_uniform(0.01, 1.0)
+    };
+    let theta = tau * rng.log_uniform(0.02, 2.0);
+    let p = Process::new(k, tau, tz, theta).unwrap();
+    let ti_min = p.d() + p.tz() + 1.0;
+    let td = rng.log_uniform(0.05, 1.0) * ti_min;
+    let ti = (ti_min - td).max(0.0) + rng.log_uniform(0.2, 5.0) * ti_min;
+    (p, ti, td)
+}
+
 /// 60 random stable loops of the family (K̄, τ̄_P, τ̄_Z (a third of them 0), d̄ over two decades
 /// each; τ_I, τ_D random, K_C from Eq. 11): ISENSCOD by Parseval and simulated (windows from
 /// τ_P(60 + 20 τ_I), see [`simulated`]) agree to 1e-9 relative, ISENSDCO too where it is finite
@@ -111,18 +129,7 @@ fn random_loops_match_the_simulated_criterion() {
     let mut compared = 0;
     let mut worst: f64 = 0.0;
     for i in 0..60 {
-        let k = rng.log_uniform(0.1, 10.0) * if i % 5 == 0 { -1.0 } else { 1.0 };
-        let tau = rng.log_uniform(0.2, 20.0);
-        let tz = if i % 3 == 0 {
-            0.0
-        } else {
-            tau * rng.log_uniform(0.01, 1.0)
-        };
-        let theta = tau * rng.log_uniform(0.02, 2.0);
-        let p = Process::new(k, tau, tz, theta).unwrap();
-        let ti_min = p.d() + p.tz() + 1.0;
-        let td = rng.log_uniform(0.05, 1.0) * ti_min;
-        let ti = (ti_min - td).max(0.0) + rng.log_uniform(0.2, 5.0) * ti_min;
+        let (p, ti, td) = random_loop(&mut rng, i);
         let Some(g) = gains(&p, ti, td) else {
             continue;
         };
@@ -427,18 +434,7 @@ fn the_two_tails_agree_where_both_apply() {
         loops.push((boiler, gains(&boiler, ti, td).unwrap()));
     }
     for i in 0..60 {
-        let k = rng.log_uniform(0.1, 10.0) * if i % 5 == 0 { -1.0 } else { 1.0 };
-        let tau = rng.log_uniform(0.2, 20.0);
-        let tz = if i % 3 == 0 {
-            0.0
-        } else {
-            tau * rng.log_uniform(0.01, 1.0)
-        };
-        let theta = tau * rng.log_uniform(0.02, 2.0);
-        let p = Process::new(k, tau, tz, theta).unwrap();
-        let ti_min = p.d() + p.tz() + 1.0;
-        let td = rng.log_uniform(0.05, 1.0) * ti_min;
-        let ti = (ti_min - td).max(0.0) + rng.log_uniform(0.2, 5.0) * ti_min;
+        let (p, ti, td) = random_loop(&mut rng, i);
         if let Some(g) = gains(&p, ti, td) {
             loops.push((p, g));
         }
