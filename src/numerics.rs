@@ -193,6 +193,32 @@ pub fn real_roots_between(c: &[f64], lo: f64, hi: f64) -> Vec<f64> {
     out
 }
 
+/// Fujiwara's bound on the moduli of the roots of the polynomial with ascending coefficients
+/// `c` (trailing zeros ignored): `2·max(|c_i/c_n|^{1/(n−i)}, |c_0/(2c_n)|^{1/n})`, within a
+/// factor 2 of the largest modulus (Fujiwara 1916). 0 for a constant, infinite for a
+/// non-finite coefficient.
+pub fn root_modulus_bound(c: &[f64]) -> f64 {
+    let mut n = c.len();
+    while n > 0 && c[n - 1] == 0.0 {
+        n -= 1;
+    }
+    if n <= 1 {
+        return 0.0;
+    }
+    let deg = n - 1;
+    let lead = c[deg].abs();
+    let mut b: f64 = 0.0;
+    for (i, a) in c[..deg].iter().enumerate() {
+        let a = if i == 0 { 0.5 * a.abs() } else { a.abs() };
+        b = b.max((a / lead).powf(1.0 / (deg - i) as f64));
+    }
+    if b.is_nan() {
+        f64::INFINITY
+    } else {
+        2.0 * b
+    }
+}
+
 /// Every positive real root of a polynomial (ascending coefficients), within the Cauchy bound.
 pub fn positive_real_roots(c: &[f64]) -> Vec<f64> {
     let mut n = c.len();

@@ -42,15 +42,33 @@ fn gains(t: &Tuning) -> Vec<u64> {
 /// a τ_D error δ moves it by O(δ²), far below 1e-6; the root solve's J is Parseval's over
 /// [0, ∞), the reference's is simulated over τ_P(60 + 20 τ_I), and at these solutions the
 /// response has decayed well inside that window (the difference is part of the 1e-6).
-/// Cases: the boiler, a slow plant, and issue 15's plant at ζ 0.6 (at ζ 1.79 the two differ
-/// by 1.3e-5 in τ_D, above the 1e-5 asserted here, and did so before the Parseval criterion
-/// too (measured 2026-11-27); that design is near-neutral, |L(j∞)| = 0.9997).
+/// Cases: the boiler and a slow plant (tolerances as above), and issue 15's plant at ζ 0.6
+/// and 1.79, whose designs are near-neutral (|L(j∞)| = 0.9935 and 0.99968): until branch
+/// `neutral` the root solve simulated there (Parseval refused them) and matched the
+/// reference to the tolerances above at ζ 0.6 (at 1.79 its root was 1.3e-5 off in τ_D); now it
+/// takes J over [0, ∞) by Parseval (the tail by modes) while the reference simulates over
+/// the paper's window τ_P(60 + 20 τ_I), which ends before these responses settle: at the
+/// reference's ζ 0.6 design the window (234.5) misses 4.5e-6 of J (Parseval 82.0430730723,
+/// simulated 82.0427044846 over the window, 82.0430730719 over 938, settled), and that moves
+/// the minimum: measured τ_D 2.4e-5, J 1.5e-5 apart (2026-11-27); at ζ 1.79 (window 3468,
+/// the delay chain decaying as e^{−6.1e-4 t}, and the simulator's step capped by its piece
+/// budget: its J 3.2e-6 above Parseval's at its design) τ_D 2.8e-6, τ_I 5.1e-6, J 1.07e-5.
+/// These two cases assert the designs to 5e-5 and J to 3e-5: twice the largest measured
+/// difference, which is the two criteria's, not a solver's (the root solve's own tolerance
+/// is 1e-9, the reference's 1e-5).
 #[test]
 fn algorithm3_root_solve_is_the_papers_fixed_point() {
-    for (p, zeta) in [
-        (Process::new(0.547, 1.06, 0.418, 0.1).unwrap(), 0.6),
-        (Process::new(1.0, 2.0, 0.8, 1.0).unwrap(), 0.707),
-        (Process::new(0.478, 0.536, 2.80, 0.521).unwrap(), 0.6),
+    let issue15 = Process::new(0.478, 0.536, 2.80, 0.521).unwrap();
+    for (p, zeta, tol, j_tol) in [
+        (
+            Process::new(0.547, 1.06, 0.418, 0.1).unwrap(),
+            0.6,
+            1e-5,
+            1e-6,
+        ),
+        (Process::new(1.0, 2.0, 0.8, 1.0).unwrap(), 0.707, 1e-5, 1e-6),
+        (issue15, 0.6, 5e-5, 3e-5),
+        (issue15, 1.79, 5e-5, 3e-5),
     ] {
         let (a, ia) = algorithm3(&p, zeta, "isenscod", None).unwrap();
         let (b, ib) = algorithm3_reference(&p, zeta, "isenscod", None).unwrap();
@@ -66,10 +84,11 @@ fn algorithm3_root_solve_is_the_papers_fixed_point() {
             ia.simulations,
             ib.simulations
         );
-        assert!(rel(a.td, b.td) <= 1e-5, "τ_D {} vs {}", a.td, b.td);
-        assert!(rel(a.ti, b.ti) <= 1e-5, "τ_I {} vs {}", a.ti, b.ti);
-        assert!(rel(a.kc, b.kc) <= 1e-5, "K_C {} vs {}", a.kc, b.kc);
-        assert!(rel(ia.j, ib.j) <= 1e-6, "J {} vs {}", ia.j, ib.j);
+        println!("  τ_I {:.1e} K_C {:.1e}", rel(a.ti, b.ti), rel(a.kc, b.kc));
+        assert!(rel(a.td, b.td) <= tol, "τ_D {} vs {}", a.td, b.td);
+        assert!(rel(a.ti, b.ti) <= tol, "τ_I {} vs {}", a.ti, b.ti);
+        assert!(rel(a.kc, b.kc) <= tol, "K_C {} vs {}", a.kc, b.kc);
+        assert!(rel(ia.j, ib.j) <= j_tol, "J {} vs {}", ia.j, ib.j);
         assert!(ia.simulations < ib.simulations);
     }
 }

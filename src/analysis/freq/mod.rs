@@ -37,7 +37,9 @@ mod stability;
 mod sweep;
 
 use closed::{bandwidth, mt_supremum};
-pub use load::{load_step_criterion, CyTangent, LoadCriterion, LoadWeights};
+pub use load::{
+    load_step_criterion, load_step_criterion_with, CyTangent, LoadCriterion, LoadWeights, Tail,
+};
 use margins::{margins, ms_supremum};
 pub use response::{freqresp, FreqOptions, FreqResponse};
 pub use solve::solve_for_ms;
@@ -262,6 +264,16 @@ pub fn stability_and_ms(plant: &Plant, c: &Controller) -> Result<(bool, Option<f
 
 /// [`stability_and_ms`] of the feedback loop alone (the special loops as [`analyze_feedback`]).
 fn feedback_stability_and_ms(plant: &Plant, c: &Controller) -> Result<(bool, Option<f64>)> {
+    feedback_stability_with(plant, c, true)
+}
+
+/// [`feedback_stability_and_ms`], with Ms only when `want_ms` (its supremum search is skipped
+/// otherwise: the stability verdict does not use it; `None` then).
+fn feedback_stability_with(
+    plant: &Plant,
+    c: &Controller,
+    want_ms: bool,
+) -> Result<(bool, Option<f64>)> {
     let l = LoopTf::new(plant, c);
     if l.lr.num.is_zero() {
         let a = no_feedback(plant)?;
@@ -278,9 +290,13 @@ fn feedback_stability_and_ms(plant: &Plant, c: &Controller) -> Result<(bool, Opt
         return Ok((a.stable, a.ms));
     }
     let sweep = Sweep::run(&l, &band, &hf, &lim);
-    let ms = ms_supremum(&l, &sweep, &lim);
+    let ms = if want_ms {
+        ms_supremum(&l, &sweep, &lim).ms
+    } else {
+        None
+    };
     let st = stability(&l, c, &band, &hf, sweep.truncated)?;
-    Ok((st.stable, ms.ms))
+    Ok((st.stable, ms))
 }
 
 /// The feedback loop `L = Cy·P·e^{−θs}` alone (the model loop is [`analyze`]'s business):

@@ -186,8 +186,11 @@ pub enum Algorithm {
         criterion: String,
         /// Criterion value at the solution.
         j: f64,
-        /// Simulations run.
+        /// Simulations run (the paper's iteration, or the root solve's fallback on a loop
+        /// Parseval refuses; 0 when the root solve took J by Parseval alone).
         simulations: usize,
+        /// Criterion evaluations by Parseval (the root solve; 0 when it fell back to simulation).
+        evaluations: usize,
     },
 }
 

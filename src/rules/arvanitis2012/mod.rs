@@ -551,13 +551,15 @@ impl super::Rule for Alg3 {
                 criterion: crit,
                 j: a3.j,
                 simulations: a3.simulations,
+                evaluations: a3.evaluations,
             };
             method1_tuning(&info.id, &p, &s, warnings, algorithm)
         })()
         .map_err(plant_error)
     }
-    /// Each design evaluates the load criterion for each trial τ_D: 5-10 evaluations by
-    /// Parseval (under a millisecond each), or 10-50 simulations for near-neutral loops.
+    /// Each design evaluates the load criterion for each trial τ_D: 5-40 evaluations by
+    /// Parseval (under a millisecond each; a few ms on near-neutral loops, |L(j∞)| → 1, where
+    /// the tail by modes takes over), simulations only where Parseval refuses the loop.
     fn slow_to_tune(&self) -> bool {
         true
     }
