@@ -300,3 +300,27 @@ fn discrete_parameters_accept_only_their_values() {
     let ivs = admissible("medarametla", &plant, &Params::default()).unwrap();
     assert!(ivs.iter().all(|i| i.name != "p_order"));
 }
+
+/// A scan on which the rule refuses every value for one reason says that reason, not
+/// instability: Arvanitis Algorithm III with ISENSDCO (Eq. 14) on the boiler, whose every
+/// design has an ideal derivative on a plant of relative degree one (u jumps: the criterion
+/// is infinite for every ζ), while ISENSCOD on the same plant has an interval.
+#[wasm_bindgen_test::wasm_bindgen_test(unsupported = test)]
+fn a_scan_refused_for_one_reason_says_it() {
+    let plant = family_plant("ipdt_ir");
+    let p = Params::default().with("criterion", "isensdco");
+    let e = admissible("arvanitis_alg3", &plant, &p).unwrap_err();
+    let msg = e.to_string();
+    assert!(
+        msg.starts_with("params.zeta: no value of ")
+            && msg.contains("gives a design on this plant: the rule refuses every one (params.criterion: ISENSDCO (Eq. 14) is infinite here"),
+        "{msg}"
+    );
+    assert!(!msg.contains("stable loop"), "{msg}");
+    let ok = admissible(
+        "arvanitis_alg3",
+        &plant,
+        &Params::default().with("criterion", "isenscod"),
+    );
+    assert!(ok.is_ok(), "{:?}", ok.err());
+}

@@ -395,6 +395,25 @@ fn scan(judge: &Judge, base: &Params, decl: &ParamInfo) -> Result<Interval> {
         None => match nearest(&Outcome::stable) {
             Some(i) => (i, false),
             None => {
+                // The rule refuses every value for one reason (e.g. Algorithm III's ISENSDCO,
+                // infinite on every design of a plant whose u jumps): that reason, not
+                // stability, is what the user must change.
+                if let [Outcome::Fails(first), rest @ ..] = outs.as_slice() {
+                    if rest
+                        .iter()
+                        .all(|o| matches!(o, Outcome::Fails(m) if m == first))
+                    {
+                        return Err(Error::new(
+                            format!("params.{name}"),
+                            format!(
+                                "no value of {label} in [{}, {}] gives a design on this plant: \
+                                 the rule refuses every one ({first})",
+                                num(lo),
+                                num(hi)
+                            ),
+                        ));
+                    }
+                }
                 let why = outs
                     .iter()
                     .find_map(|o| match o {
