@@ -271,6 +271,31 @@ fn unstable_and_offset_loops_are_refused() {
     };
     let e = load_step_criterion(&plant(&p), &c, w, None).unwrap_err();
     assert_eq!(e.path, "weights.u");
+    // a forced tail by modes needs a finite f >= 1 and a delay
+    for f in [f64::NAN, f64::INFINITY, 0.5] {
+        let e = load_step_criterion_with(
+            &plant(&p),
+            &c,
+            weights(&p, false),
+            None,
+            Some(Tail::Modes(f)),
+        )
+        .unwrap_err();
+        assert_eq!(e.path, "tail", "{e}");
+        assert!(e.message.contains("finite and >= 1"), "{e}");
+    }
+    let mut no_delay = plant(&p);
+    no_delay.delay = 0.0;
+    let e = load_step_criterion_with(
+        &no_delay,
+        &c,
+        weights(&p, false),
+        None,
+        Some(Tail::Modes(2.0)),
+    )
+    .unwrap_err();
+    assert_eq!(e.path, "tail", "{e}");
+    assert!(e.message.contains("needs a delay"), "{e}");
 }
 
 /// Algorithm III's exact `∂J/∂τ_D` at fixed τ_I (`alg3_criterion`: Parseval's derivative along

@@ -58,3 +58,15 @@ test('admissible: bad input names the field', () => {
   assert.match(err({ method: 'shamsuzzoha_lee', plant, extra: 1 }), /^extra: unknown field/);
   assert.match(err({ method: 'shamsuzzoha_lee', plant, params: { gamma: 1e308 } }), /^params\.gamma: must lie in \[0, 1\] \(got 1e308\)/);
 });
+
+test('Algorithm III: details count Parseval evaluations; a scan refused for one reason says it', () => {
+  const plant = { family: 'ipdt_ir', k: 0.547, tau: 1.06, tau_z: 0.418, theta: 0.1 };
+  const t = pidlab.tune({ method: 'arvanitis_alg3', plant, params: { zeta: 0.6 } });
+  // the boiler's design is taken by Parseval alone: no simulation, a few evaluations
+  assert.equal(t.details.simulations, 0);
+  assert.ok(Number.isInteger(t.details.evaluations) && t.details.evaluations > 0, String(t.details.evaluations));
+  assert.throws(
+    () => pidlab.admissible({ method: 'arvanitis_alg3', plant, params: { criterion: 'isensdco' } }),
+    (e) => e.message.startsWith('params.zeta: no value of ') && e.message.includes('the rule refuses every one (params.criterion: ISENSDCO'),
+  );
+});

@@ -457,10 +457,16 @@ fn integrate(t: &Terms, l_inf: f64, tail: Option<Tail>) -> Result<LoadCriterion>
             expansion(t, lo, period, k, l_inf)
         }
         Tail::Modes(f) => {
-            if !(t.theta > 0.0 && f >= 1.0) {
+            if !(f.is_finite() && f >= 1.0) {
                 return Err(Error::new(
-                    "controller",
-                    "the tail by modes needs a delay (θ > 0) and Ω at least the modes' radius (f ≥ 1)",
+                    "tail",
+                    format!("Modes(f): f must be finite and >= 1 (Ω at least the modes' radius; got {f})"),
+                ));
+            }
+            if !(t.theta > 0.0) {
+                return Err(Error::new(
+                    "tail",
+                    "Modes: the tail by modes needs a delay (plant.delay > 0)",
                 ));
             }
             modes(t, lo, period, l_inf, f)?
