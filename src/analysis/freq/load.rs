@@ -463,7 +463,7 @@ fn integrate(t: &Terms, l_inf: f64, tail: Option<Tail>) -> Result<LoadCriterion>
                     format!("Modes(f): f must be finite and >= 1 (Ω at least the modes' radius; got {f})"),
                 ));
             }
-            if !(t.theta > 0.0) {
+            if t.theta <= 0.0 {
                 return Err(Error::new(
                     "tail",
                     "Modes: the tail by modes needs a delay (plant.delay > 0)",
