@@ -53,9 +53,15 @@ fn gains(t: &Tuning) -> Vec<u64> {
 /// the minimum: measured τ_D 2.4e-5, J 1.5e-5 apart (2026-11-27); at ζ 1.79 (window 3468,
 /// the delay chain decaying as e^{−6.1e-4 t}, and the simulator's step capped by its piece
 /// budget: its J 3.2e-6 above Parseval's at its design) τ_D 2.8e-6, τ_I 5.1e-6, J 1.07e-5.
-/// These two cases assert the designs to 5e-5 and J to 3e-5: twice the largest measured
+/// The ζ 0.6 case asserts the design to 5e-5 and J to 3e-5: twice the largest measured
 /// difference, which is the two criteria's, not a solver's (the root solve's own tolerance
-/// is 1e-9, the reference's 1e-5).
+/// is 1e-9, the reference's 1e-5). The ζ 1.79 case is no longer compared: since the
+/// simulator checks a run whose step its piece limit caps on a nearly neutral loop
+/// (`sim/neutral.rs`), the reference is refused there — one of its iterates (|L(j∞)| =
+/// 0.99926, window 9984) would be simulated at θ/52 where the rule asks θ/2236, and that run
+/// differs from its check run at θ/26 by 2.2e-2 of its largest value: the reference's J there
+/// was never certified (it agreed within 1.07e-5 because J is an average). The test asserts
+/// that refusal, and that the root solve (Parseval, no simulation) still answers.
 #[test]
 fn algorithm3_root_solve_is_the_papers_fixed_point() {
     let issue15 = Process::new(0.478, 0.536, 2.80, 0.521).unwrap();
@@ -68,7 +74,6 @@ fn algorithm3_root_solve_is_the_papers_fixed_point() {
         ),
         (Process::new(1.0, 2.0, 0.8, 1.0).unwrap(), 0.707, 1e-5, 1e-6),
         (issue15, 0.6, 5e-5, 3e-5),
-        (issue15, 1.79, 5e-5, 3e-5),
     ] {
         let (a, ia) = algorithm3(&p, zeta, "isenscod", None).unwrap();
         let (b, ib) = algorithm3_reference(&p, zeta, "isenscod", None).unwrap();
@@ -91,6 +96,14 @@ fn algorithm3_root_solve_is_the_papers_fixed_point() {
         assert!(rel(ia.j, ib.j) <= j_tol, "J {} vs {}", ia.j, ib.j);
         assert!(ia.simulations < ib.simulations);
     }
+    let (a, ia) = algorithm3(&issue15, 1.79, "isenscod", None).unwrap();
+    assert!(a.td > 0.0 && ia.j.is_finite() && ia.simulations == 0);
+    let e = algorithm3_reference(&issue15, 1.79, "isenscod", None).unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("scenario.t_end: this loop is nearly neutral"),
+        "{e}"
+    );
 }
 
 /// A warm start (a τ_D 3 % off, as after a small slider move) converges to the cold solve's

@@ -24,7 +24,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::model::ss::{balance, realize, realize_paths, Ss};
-use crate::sim::single::{divisor_step, neutral_bound, DELAY_PIECES, FAST_STEP};
+use crate::sim::single::{capped_need, divisor_step, neutral_bound, DELAY_PIECES, FAST_STEP};
 use crate::sim::{
     interpolation_inverse, lagrange, piece_exponential, sample, Response, Scenario, Trajectory,
     DEG, NODES,
@@ -608,10 +608,30 @@ fn fill_histories(
     }
 }
 
+/// [`integrate`] at the rule's step ([`internal_step`]); a run whose step the piece cap set
+/// above the neutral rule's is checked against a second run at about twice the step and
+/// refused if less accurate than 1e-10 (`super::neutral`, as the one-delay loop).
+fn integrate_checked(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
+    let h = internal_step(mm, sc);
+    let run = integrate(mm, sc, h)?;
+    let (theta, ae) = (mm.min_delay(), mm.neutral_gain());
+    if let Some(need) = capped_need(theta, ae, h) {
+        // the grid divides the plant's dead time (or t_end without one): `internal_step`
+        let span = if mm.delays[0] > 0.0 {
+            mm.delays[0]
+        } else {
+            sc.t_end
+        };
+        let (hc, ratio) = super::neutral::coarse_step(span, h);
+        let coarse = integrate(mm, sc, hc)?;
+        super::neutral::verify(&run.0, &coarse.0, ratio, ae, need, sc.t_end)?;
+    }
+    Ok(run)
+}
+
 /// Integrates the loop piece by piece (see the module docs): the continuous response and the
 /// time divergence was detected, if it was.
-fn integrate(mm: &MultiModel, sc: &Scenario, h: Option<f64>) -> Result<(Trajectory, Option<f64>)> {
-    let h = h.unwrap_or_else(|| internal_step(mm, sc));
+fn integrate(mm: &MultiModel, sc: &Scenario, h: f64) -> Result<(Trajectory, Option<f64>)> {
     let tol = 1e-9 * h;
     let events: Vec<f64> = [&sc.setpoint, &sc.disturbance]
         .iter()
@@ -622,7 +642,7 @@ fn integrate(mm: &MultiModel, sc: &Scenario, h: Option<f64>) -> Result<(Trajecto
     let n_steps = ((sc.t_end + tol) / h).ceil().max(1.0) as usize;
     if n_steps.saturating_add(brk.len()) > MAX_PIECES {
         return Err(Error::new(
-            "dt",
+            "scenario.t_end",
             format!(
                 "the loop needs an internal step of {h:.3e}; more than {MAX_PIECES} pieces: \
                  shorten t_end"
@@ -747,6 +767,9 @@ pub(crate) fn simulate_at(
         c,
         sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
     )?;
-    let (traj, diverged_at) = integrate(&mm, sc, h)?;
+    let (traj, diverged_at) = match h {
+        Some(h) => integrate(&mm, sc, h)?,
+        None => integrate_checked(&mm, sc)?,
+    };
     Ok(sample(sc, traj, diverged_at, &|r, d| mm.steady_state(r, d)))
 }

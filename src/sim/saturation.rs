@@ -85,7 +85,7 @@
 
 use super::bernstein::{casteljau, first_crossing, PieceForms, ZERO_DEPTH};
 use super::scenario::Scenario;
-use super::single::{divisor_step, neutral_bound, LoopModel, DELAY_PIECES, FAST_STEP};
+use super::single::{capped_need, divisor_step, neutral_bound, LoopModel, DELAY_PIECES, FAST_STEP};
 use super::trajectory::{lagrange, start_interpolation_inverse, Trajectory, DEG, NODES};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
@@ -876,7 +876,9 @@ fn classify(mode: Mode, p: Point, lim: Limits, conditional: bool, eps: f64) -> M
     Mode::Free
 }
 
-/// Simulates the continuous loop with limits (module docs).
+/// Simulates the continuous loop with limits (module docs). A run whose step the piece cap set
+/// above the neutral rule's is checked against a second run at about twice the step and
+/// refused if less accurate than 1e-10 (`super::neutral`, as the one-delay loop).
 pub(crate) fn integrate(
     plant: &Plant,
     c: &Controller,
@@ -891,9 +893,18 @@ pub(crate) fn integrate(
         aw,
         sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
     )?;
-    let conditional = m.cond.is_some();
-    let n = m.order();
-    let sz = n + NODES + 2;
+    let h = sat_step(&m, theta, sc);
+    let run = integrate_at(&m, theta, sc, lim, h)?;
+    if let Some(need) = capped_need(theta, m.e.abs(), h) {
+        let (hc, ratio) = super::neutral::coarse_step(theta, h);
+        let coarse = integrate_at(&m, theta, sc, lim, hc)?;
+        super::neutral::verify(&run.traj, &coarse.traj, ratio, m.e.abs(), need, sc.t_end)?;
+    }
+    Ok(run)
+}
+
+/// The internal step of the loop with limits.
+fn sat_step(m: &SatLoop, theta: f64, sc: &Scenario) -> f64 {
     // grid h = θ/N (θ = 0: t_end/N), h ≤ FAST_STEP/ρ over every mode's matrix,
     // N ≥ DELAY_PIECES, the neutral bound, as the one-delay loop (`single::internal_step`):
     // not by dt. Every limit switch on a piece is found on the interpolant of its validity
@@ -914,12 +925,19 @@ pub(crate) fn integrate(
     if let Some(b) = neutral_bound(theta, m.e.abs(), sc.t_end, MAX_PIECES) {
         hmax = hmax.min(b);
     }
-    let h = divisor_step(if theta > 0.0 { theta } else { sc.t_end }, hmax);
+    divisor_step(if theta > 0.0 { theta } else { sc.t_end }, hmax)
+}
+
+/// [`integrate`] on the grid `h` (a divisor of `θ`, or of `t_end` without a dead time).
+fn integrate_at(m: &SatLoop, theta: f64, sc: &Scenario, lim: Limits, h: f64) -> Result<SatRun> {
+    let conditional = m.cond.is_some();
+    let n = m.order();
+    let sz = n + NODES + 2;
     let tol = 1e-9 * h;
     let t_end = sc.t_end;
     if t_end / h > MAX_PIECES as f64 {
         return Err(Error::new(
-            "scenario.dt",
+            "scenario.t_end",
             format!(
                 "the loop needs an internal step of {h:.3e}; {:.0} pieces exceed the limit \
                  {MAX_PIECES}: shorten t_end",
@@ -1127,12 +1145,12 @@ pub(crate) fn integrate(
             zs[0] += (lval(mode) - p.v) / m.g[0];
         }
         let mi = mode.kind();
-        let mut pp = props.get(&m, mi, len);
+        let mut pp = props.get(m, mi, len);
         pp.propagate(&zs, &mut pts, &mut x_end);
         // the first place on the piece where a validity function turns negative (on its
         // interpolant: `switch_first`), refined on the exact function
         let first = switch_first(&SwitchScan {
-            m: &m,
+            m,
             forms,
             z0: &zs,
             pts: &pts,
@@ -1174,7 +1192,7 @@ pub(crate) fn integrate(
             col_major_rows::<NODES>(&vinv, &wn, &mut xi);
             zs[n..n + NODES].copy_from_slice(&xi);
             len = pos.to(end, h);
-            pp = props.get(&m, mi, len);
+            pp = props.get(m, mi, len);
             pp.propagate(&zs, &mut pts, &mut x_end);
         }
         zero_switches = 0;

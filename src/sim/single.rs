@@ -255,16 +255,28 @@ pub(crate) const DELAY_PIECES: f64 = 3.0;
 /// The neutral bound on the internal step (module docs, "Near the neutral limit"), shared by
 /// every loop with dead time (one delay, several delays, actuator limits): on a neutral loop
 /// (`0 < |E| < 1`, `θ > 0`) `h ≤ NEUTRAL_STEP·θ·(1 − |E|)`, but never below a quarter of the
-/// piece cap (`4·t_end/max_pieces`); `None` when the loop is not neutral.
+/// piece cap (`4·t_end/max_pieces`); `None` when the loop is not neutral. A run so capped is
+/// checked (`super::neutral`).
 pub(crate) fn neutral_bound(theta: f64, ae: f64, t_end: f64, max_pieces: usize) -> Option<f64> {
-    (theta > 0.0 && ae > 0.0 && ae < 1.0)
-        .then(|| (NEUTRAL_STEP * theta * (1.0 - ae)).max(4.0 * t_end / max_pieces as f64))
+    neutral_need(theta, ae).map(|b| b.max(4.0 * t_end / max_pieces as f64))
+}
+
+/// The neutral rule's step itself, `NEUTRAL_STEP·θ·(1 − |E|)`, uncapped (`None`: not neutral).
+pub(crate) fn neutral_need(theta: f64, ae: f64) -> Option<f64> {
+    (theta > 0.0 && ae > 0.0 && ae < 1.0).then_some(NEUTRAL_STEP * theta * (1.0 - ae))
+}
+
+/// The step the neutral rule asked for when the piece cap set a longer one `h` (then the run
+/// must pass [`super::neutral::verify`]); `None` when the rule's step was taken (or the loop is
+/// not neutral).
+pub(crate) fn capped_need(theta: f64, ae: f64, h: f64) -> Option<f64> {
+    neutral_need(theta, ae).filter(|&b| h > b * (1.0 + 1e-9))
 }
 
 /// The internal step h = θ/N (so the delay maps steps onto steps exactly), with
 /// h ≤ 0.55/ρ(A) ([`FAST_STEP`]), N ≥ 3 ([`DELAY_PIECES`]), h ≤ t_end and, on a neutral loop (0 < |E| < 1),
 /// h ≤ 0.6·θ·(1 − |E|) ([`NEUTRAL_STEP`]; but never more pieces than a quarter of
-/// [`MAX_PIECES`] for that last bound alone). Not bounded by `dt`: the samples `k·dt` are read
+/// [`MAX_PIECES`] for that last bound alone: a step so capped is checked by [`integrate`]). Not bounded by `dt`: the samples `k·dt` are read
 /// on the piece polynomials, and the metrics are located on them (module docs of
 /// [`crate::sim`], "The internal step"). Without dead time the loop is an ODE propagated
 /// exactly from node to node; its pieces are `t_end/N`, the longest within `0.55/ρ(A)` (the
@@ -283,6 +295,20 @@ fn internal_step(m: &LoopModel, sc: &Scenario) -> f64 {
         hmax = hmax.min(b);
     }
     divisor_step(if m.delay > 0.0 { m.delay } else { sc.t_end }, hmax)
+}
+
+/// The finest step the piece limit allows for the neutral bound (`None`: no finer than `h`):
+/// `θ/N` with the largest `N` whose `⌈t_end·N/θ⌉` steps of at most `pps` pieces each (1 + the
+/// events inside the window: an event on a step boundary, e.g. at t = 0, cuts none) stay
+/// within [`MAX_PIECES`], or the neutral bound's own step if that is longer.
+fn finest_neutral_step(m: &LoopModel, sc: &Scenario, need: f64, h: f64) -> Option<f64> {
+    let pps = 1 + [&sc.setpoint, &sc.disturbance]
+        .iter()
+        .filter(|e| e.size != 0.0 && e.time > 0.0 && e.time <= sc.t_end)
+        .count();
+    let n_max = ((MAX_PIECES / pps - 1) as f64 * m.delay / sc.t_end).floor();
+    let hf = divisor_step(m.delay, need.max(m.delay / n_max.max(1.0)));
+    (hf < h * (1.0 - 1e-9)).then_some(hf)
 }
 
 /// `span/N` with the smallest `N ≥ 1` that gives at most `hmax` (a relative 1e-9 of slack, so
@@ -321,8 +347,33 @@ fn step_pieces(sc: &Scenario, h: f64, tol: f64) -> (Vec<f64>, Vec<f64>) {
 
 /// Integrates the loop and returns the continuous response, or the error that explains why
 /// it cannot be simulated. `diverged_at` is set when the response left the bounds.
+/// A run whose step the piece cap (a quarter of [`MAX_PIECES`] for the neutral bound) set
+/// above the neutral rule's is checked against a second run at about twice the step
+/// ([`super::neutral`]); if refused, it is run once more at the finest step the whole limit
+/// allows ([`finest_neutral_step`]), checked against the first, and refused if that fails too.
 pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
-    integrate_at(m, sc, internal_step(m, sc))
+    let h = internal_step(m, sc);
+    let run = integrate_at(m, sc, h)?;
+    let ae = m.e.abs();
+    let Some(need) = capped_need(m.delay, ae, h) else {
+        return Ok(run);
+    };
+    let (hc, ratio) = super::neutral::coarse_step(m.delay, h);
+    let coarse = integrate_at(m, sc, hc)?;
+    let Err(refused) = super::neutral::verify(&run.0, &coarse.0, ratio, ae, need, sc.t_end) else {
+        return Ok(run);
+    };
+    // refused at a quarter of the piece limit: once more at the finest step the whole limit
+    // allows (the refused run its check run), else the refusal stands
+    let Some(hf) = finest_neutral_step(m, sc, need, h) else {
+        return Err(refused);
+    };
+    let fine = integrate_at(m, sc, hf)?;
+    if capped_need(m.delay, ae, hf).is_none() {
+        return Ok(fine);
+    }
+    super::neutral::verify(&fine.0, &run.0, h / hf, ae, need, sc.t_end)?;
+    Ok(fine)
 }
 
 /// [`integrate`] with the internal step `h` (a divisor of the dead time, or of `t_end` without
@@ -344,7 +395,7 @@ pub(crate) fn integrate_at(
     let total = n_steps.saturating_mul(pps);
     if total > MAX_PIECES {
         return Err(Error::new(
-            "dt",
+            "scenario.t_end",
             format!(
                 "the loop needs an internal step of {h:.3e} (dead time {} / fast dynamics); \
                  {total} pieces exceed the limit {MAX_PIECES}: shorten t_end",
