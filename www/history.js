@@ -32,8 +32,9 @@ function updateButtons() {
   if (r) r.disabled = h.index >= h.top;
 }
 
-/** Starts the history with the current state as its first entry; `onRestore()` is called
- *  after Back/Forward (or Undo/Redo) has put a decoded state in store.state. */
+/** Starts the history with the current state as its first entry; `onRestore(built)` is called
+ *  after Back/Forward (or Undo/Redo) has put a decoded state in store.state (`built()`: to be
+ *  called once the page's panels show it). */
 export function init(onRestore) {
   h.onRestore = onRestore;
   h.current = hashOf();
@@ -53,8 +54,11 @@ export function init(onRestore) {
     h.index = s && typeof s.pidlab === 'number' ? s.pidlab : 0;
     h.current = location.hash;
     store.state = d.state;
-    h.onRestore();
+    // (its panels are built after the frame: the state as they leave it, its defaults filled
+    // in, is the committed one then, unless a change came meanwhile)
     h.current = hashOf();
+    const at = h.current;
+    h.onRestore(() => { if (h.current === at) h.current = hashOf(); });
     updateButtons();
   });
   document.addEventListener('pointerdown', () => { h.down = true; }, true);
