@@ -91,6 +91,10 @@ export function init(onRestore) {
 /** Commits the state as one change (a new history entry) if it differs from the last one. */
 export function commit() {
   clearTimeout(h.timer);
+  // a λ standing in while the worker solves it (store.hold: the method's panel built after a
+  // reset or a new method waits for it) is no state to enter: the state is entered once it has
+  // been replaced and settled (every render asks commitSoon)
+  if (store.hold) { commitSoon(); return; }
   const hash = hashOf();
   if (hash === h.current) return;
   h.current = hash;
