@@ -41,6 +41,10 @@
 // press and the release) the longest of its events counts, and per control the p95 and max
 // over its actions are printed (`<16` when fewer than 5 % of the actions reached 16 ms). Times are the page's performance.now(). Needs dist/pidlab.html (bash
 // scripts/page.sh --no-serve) and Debian's /usr/bin/chromium (PIDLAB_CHROMIUM overrides).
+// --event-timing --trace: also a Chromium trace of each control's run; per action of 16 ms or
+// more, where its time went (bench/event-trace.mjs): the handlers, the wait for the frame, the
+// page thread's frame (style, layout, paint with the painted areas, commit), the compositor's
+// draw, and the page's other tasks in that window.
 import { existsSync } from 'node:fs';
 import { cpus, loadavg } from 'node:os';
 import { join, resolve, dirname } from 'node:path';
@@ -48,6 +52,7 @@ import { fileURLToPath, pathToFileURL } from 'node:url';
 import * as S from '../www/state.js';
 import * as U from '../www/url.js';
 import { launch, serveWww } from '../tests/browser/harness.mjs';
+import { startTrace, explain } from './event-trace.mjs';
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), '..');
 const dist = process.env.PIDLAB_PAGE ? resolve(process.env.PIDLAB_PAGE) : join(root, 'dist', 'pidlab.html');
@@ -59,6 +64,7 @@ let maxOptions = 30; // a select steps through up to this many of its options
 let json = false;
 let allPresets = false;
 let eventTiming = false;
+let traceOn = false;
 const only = [];
 for (let i = 0; i < args.length; i++) {
   if (args[i] === '--n') n = Number(args[++i]);
@@ -68,6 +74,7 @@ for (let i = 0; i < args.length; i++) {
   else if (args[i] === '--json') json = true;
   else if (args[i] === '--all-presets') allPresets = true;
   else if (args[i] === '--event-timing') eventTiming = true;
+  else if (args[i] === '--trace') traceOn = true;
   else only.push(args[i]);
 }
 // --all-presets: the preset select alone, through every one of its options (the probe of issue
@@ -358,7 +365,7 @@ async function runReal(c) {
     const x = document.querySelector(sel);
     if (!x) return false;
     window.__et = [];
-    new PerformanceObserver((l) => { for (const e of l.getEntries()) window.__et.push({ name: e.name, start: e.startTime, d: e.duration }); })
+    new PerformanceObserver((l) => { for (const e of l.getEntries()) window.__et.push({ name: e.name, start: e.startTime, d: e.duration, ps: e.processingStart }); })
       .observe({ type: 'event', durationThreshold: 16, buffered: false });
     // the trusted input events the control received (a drag frame is one of them; counted on
     // the document, since a rebuilt panel replaces the element)
@@ -367,6 +374,7 @@ async function runReal(c) {
     return true;
   }, c.sel);
   if (!ok) { await page.close(); return { missing: true }; }
+  const trace = traceOn ? await startTrace(page) : null;
   const marks = []; // [action, performance.now() at its start]
   const mark = async (what) => marks.push([what, await page.evaluate(() => performance.now())]);
   const frame = () => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
@@ -445,14 +453,16 @@ async function runReal(c) {
   }
   await page.waitForTimeout(300); // the last entries delivered
   const { et, inputs } = await page.evaluate(() => ({ et: window.__et, inputs: window.__inputs }));
+  const events = trace ? await trace.stop() : null;
   await page.close();
   // each entry to the action it started in
   const per = marks.map(([what]) => ({ what, d: 0, names: [] }));
   for (const e of et) {
     let k = -1;
     for (let j = 0; j < marks.length && marks[j][1] <= e.start + 0.5; j++) k = j;
-    if (k >= 0 && e.d > per[k].d) { per[k].d = e.d; per[k].names.push(e.name); }
+    if (k >= 0 && e.d > per[k].d) { per[k].d = e.d; per[k].names.push(e.name); per[k].entry = e; }
   }
+  if (events) for (const a of per) if (a.d >= 16) a.why = explain(events, a.entry);
   return { per, inputs, errors, unsettled };
 }
 
@@ -479,6 +489,7 @@ if (eventTiming) {
     const lab = (x) => (x >= 16 ? String(x) : '<16');
     const kinds = Object.entries(slow.reduce((m, a) => ({ ...m, [a.what + ' ' + a.d]: (m[a.what + ' ' + a.d] || 0) + 1 }), {})).map(([k, v]) => `${k}×${v}`).join(', ');
     console.log(`| ${c.what} | ${d.length} | ${r.inputs} | ${slow.length} | ${lab(p95)} | ${lab(d[d.length - 1] ?? 0)} | ${kinds}${r.unsettled ? ` (not settled within 30 s after ${r.unsettled} actions)` : ''}${r.errors.length ? ' ERRORS: ' + r.errors.slice(0, 2).join(' | ') : ''} |`);
+    if (traceOn) for (const a of r.per) if (a.why) console.log(`|   ${a.what} ${a.d}: ${a.why} | | | | | | |`);
     results[c.name || c.what] = { actions: d.length, inputs: r.inputs, slow: slow.length, p95, max: d[d.length - 1] ?? 0, per: r.per.map((a) => [a.what, a.d]) };
   }
 }

@@ -54,31 +54,40 @@ function buildAll() {
 }
 
 // A structural change of the state (another plant family or method, a preset, the embed API's
-// state): the input's frame shows the control's own change (the select's value, the family's
-// sliders, the preset's text); the other panels (the method's, built anew: 5–10 ms of
-// script, style and layout) are built in the task after that frame, and the render follows
-// them. Until then the results are marked busy, and a render (another input meanwhile) waits
-// for the panels: it is the panels' build that renders.
-const structure = { due: false };
+// state) and a whole state restored (undo, redo, reset, Back/Forward, a typed URL): the input's
+// frame shows the control's own change only (the select's value, the button pressed); every
+// panel (the family's sliders, the preset's text, the method's panel built anew, the pins' list)
+// is built in the task after that frame, and the render follows them. Rows added or removed,
+// a text that wraps otherwise, change the page's layout and its height: Chromium then repaints
+// and redraws the whole page (in software, headless: 5–12 ms), which put the input's own frame
+// one or two frames late (docs/PERFORMANCE.md, "Discrete inputs: the input's frame first").
+// Until then the results are marked busy, and a render (another input meanwhile) waits for the
+// panels: it is the panels' build that renders.
+const structure = { due: false, pins: false };
 function rebuildSoon() {
-  C.buildFamily();
-  Pr.showPresetInfo();
   panelsSoon();
 }
 
-/** Every panel built (buildAll), then a render, in the task after the frame (see rebuildSoon).
- *  The previous design's pending work stops now, not when the panels are built: its classroom
- *  panels' chunks, its freqresp requests not yet posted (the fast worker then takes the new
- *  design's calls first) and its trade-off sweep. */
-function panelsSoon() {
+/** Every panel built (buildAll; the pins' list too after a restored state), then a render, in
+ *  the task after the frame (see rebuildSoon). The previous design's pending work stops now, not
+ *  when the panels are built: its classroom panels' chunks, its freqresp requests not yet posted
+ *  (the fast worker then takes the new design's calls first) and its trade-off sweep. `after`:
+ *  called once the panels are built (the history's hash of the restored state). */
+const builtHooks = [];
+function panelsSoon(after = null) {
   setBusy(true);
+  if (after) builtHooks.push(after);
   if (structure.due) return;
   beginPass();
   supersedeSweep();
   structure.due = true;
   afterPaint(() => {
-    if (!structure.due) return; // (built meanwhile: a restored state)
-    buildAll();
+    // (not due: built meanwhile, with a render, by the identification's "Use this model")
+    const due = structure.due;
+    if (due) buildAll();
+    if (structure.pins) { structure.pins = false; P.refreshPins(); }
+    for (const f of builtHooks.splice(0)) f();
+    if (!due) return;
     W.mark('panels');
     changed();
   });
@@ -391,11 +400,11 @@ function finishRender(t0) {
   Sh.saveHashSoon();
 }
 
-/** A whole state was put in the store (Back/Forward, a typed URL, reset): show it. */
-function restored() {
-  buildAll();
-  P.refreshPins();
-  changed();
+/** A whole state was put in the store (Back/Forward, a typed URL, reset): shown after the
+ *  input's frame (panelsSoon); `after()` once its panels are built. */
+function restored(after = null) {
+  structure.pins = true;
+  panelsSoon(after);
 }
 
 function wire() {
@@ -459,7 +468,7 @@ function wire() {
 function isCurrent(all = false, sweep = true, panels = true) {
   // (the frequency-response panel's freqresp counts as the design's, as when it was asked by
   // the render consumer: a result is painted once its answer is in)
-  const waiting = (panels && classroom.scheduled) || W.busy('bode') || secondary.due || later.due || firstTables.due || structure.due || embedSoon.due || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
+  const waiting = (panels && classroom.scheduled) || W.busy('bode') || secondary.due || later.due || firstTables.due || structure.due || embedSoon.due || Er.messagesPending() || W.busy('render') || W.busy('presets') || W.busy('standin') || isPending() || store.hold || C.rangesPending() || (all && (C.rangesDue() || W.busy('ranges') || W.busy('identify') || (sweep && !sweepDone())));
   return !waiting && perf.shown === perf.inputs;
 }
 

@@ -110,9 +110,10 @@ export function slider({ id, key, label, unit, min, max, step, value, onInput, d
   });
   num.addEventListener('input', () => {
     const v = Number(num.value);
-    if (num.value.trim() === '' || !Number.isFinite(v)) { Er.setLocal(num, label + ': type a number.'); return; }
+    // (the field's message after the keystroke's frame: Er.setLocal)
+    if (num.value.trim() === '' || !Number.isFinite(v)) { Er.setLocal(num, label + ': type a number.', true); return; }
     const bad = check(v);
-    Er.setLocal(num, bad);
+    Er.setLocal(num, bad, true);
     if (bad) return;
     range.value = String(v);
     onInput(v);
@@ -586,7 +587,7 @@ export function buildScenario() {
       inp.addEventListener('input', () => {
         const v = Number(inp.value);
         const bad = inp.value.trim() === '' || !Number.isFinite(v) ? 'type a number' : check ? check(v) : '';
-        Er.setLocal(inp, bad ? label + ': ' + bad + '; not applied.' : '');
+        Er.setLocal(inp, bad ? label + ': ' + bad + '; not applied.' : '', true);
         if (!bad) { set(v); changed(); }
       });
       return el('div', { class: 'row small', 'data-key': id, 'data-label': label }, el('label', { for: id }, label, el('span', { class: 'unit', text: id === 'sc-sp_size' || id === 'sc-d_size' ? '' : ' [time units]' })), inp);

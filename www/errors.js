@@ -4,7 +4,7 @@
 // a few significant digits, and the message is shown beside the field (aria-invalid, linked with
 // aria-describedby) as well as in the banner. The page's own checks of typed values (a value
 // outside a control's range) use the same field messages.
-import { $, el } from './dom.js';
+import { $, el, afterPaint } from './dom.js';
 
 /** A number written with `digits` significant digits; exponent form outside 1e-4 … 1e6. */
 export function short(x, digits = 4) {
@@ -146,14 +146,34 @@ function paint(input) {
   if (!d.includes(mid)) input.setAttribute('aria-describedby', [...d, mid].join(' '));
 }
 
-/** Sets (text) or clears (null) the page's own message on a field. */
-export function setLocal(input, text) {
+// Fields whose message is shown after the frame (setLocal's `later`).
+const soon = { inputs: new Set(), due: false };
+
+/** Sets (text) or clears (null) the page's own message on a field. `later`: the field's own
+ *  input event (a key typed): the message is known at once (localOf) but shown in a task after
+ *  the frame that shows the keystroke. A message added or removed moves every row below it, and
+ *  the document's height: Chromium then repaints and redraws the whole page (in software, headless:
+ *  5–12 ms), which put the keystroke's own frame one frame late. */
+export function setLocal(input, text, later = false) {
   if (!input || !input.id) return;
   const f = fields.get(input.id) || {};
   f.local = text || '';
   fields.set(input.id, f);
-  paint(input);
+  if (!later) { soon.inputs.delete(input); paint(input); return; }
+  soon.inputs.add(input);
+  if (soon.due) return;
+  soon.due = true;
+  afterPaint(() => {
+    soon.due = false;
+    const list = [...soon.inputs];
+    soon.inputs.clear();
+    // (a field built anew meanwhile has its own messages; one forgotten shows none)
+    for (const x of list) if (x.isConnected && fields.has(x.id)) paint(x);
+  });
 }
+
+/** Whether a field's message waits for the frame (setLocal's `later`). */
+export const messagesPending = () => soon.due;
 
 /** The page's own message on a field, or ''. */
 export const localOf = (input) => (input && fields.get(input.id) ? fields.get(input.id).local || '' : '');

@@ -32,8 +32,9 @@ function updateButtons() {
   if (r) r.disabled = h.index >= h.top;
 }
 
-/** Starts the history with the current state as its first entry; `onRestore()` is called
- *  after Back/Forward (or Undo/Redo) has put a decoded state in store.state. */
+/** Starts the history with the current state as its first entry; `onRestore(built)` is called
+ *  after Back/Forward (or Undo/Redo) has put a decoded state in store.state (`built()`: to be
+ *  called once the page's panels show it). */
 export function init(onRestore) {
   h.onRestore = onRestore;
   h.current = hashOf();
@@ -53,8 +54,11 @@ export function init(onRestore) {
     h.index = s && typeof s.pidlab === 'number' ? s.pidlab : 0;
     h.current = location.hash;
     store.state = d.state;
-    h.onRestore();
+    // (its panels are built after the frame: the state as they leave it, its defaults filled
+    // in, is the committed one then, unless a change came meanwhile)
     h.current = hashOf();
+    const at = h.current;
+    h.onRestore(() => { if (h.current === at) h.current = hashOf(); });
     updateButtons();
   });
   document.addEventListener('pointerdown', () => { h.down = true; }, true);
@@ -87,6 +91,10 @@ export function init(onRestore) {
 /** Commits the state as one change (a new history entry) if it differs from the last one. */
 export function commit() {
   clearTimeout(h.timer);
+  // a λ standing in while the worker solves it (store.hold: the method's panel built after a
+  // reset or a new method waits for it) is no state to enter: the state is entered once it has
+  // been replaced and settled (every render asks commitSoon)
+  if (store.hold) { commitSoon(); return; }
   const hash = hashOf();
   if (hash === h.current) return;
   h.current = hash;

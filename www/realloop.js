@@ -63,7 +63,8 @@ function numRow(id, label, value, onValue, blank) {
     if (s === '' && !blank) bad = 'type a number';
     else if (v !== undefined && !Number.isFinite(v)) bad = 'type a number';
     else bad = onValue(v, true);
-    Er.setLocal(inp, bad ? label + ': ' + bad + '; not applied.' : '');
+    // (the field's message after the keystroke's frame: Er.setLocal)
+    Er.setLocal(inp, bad ? label + ': ' + bad + '; not applied.' : '', true);
     if (!bad) { onValue(v, false); typed(); changed(); }
   });
   return el('div', { class: 'row small', 'data-key': id, 'data-label': label }, el('label', { for: id }, label), inp);
@@ -107,7 +108,8 @@ export function buildReal() {
   // the panel shows these settings already, with no message beside a field (a restored state
   // whose real loop is unchanged: undo of another control, reset, most presets): kept
   const key = JSON.stringify([st.actuator, st.sampling, st.noise]);
-  if (box.shownKey === key && box.childElementCount && !box.querySelector('.field-error')) return;
+  // (a field's own message may still wait for its frame: Er.localOf knows it already)
+  if (box.shownKey === key && box.childElementCount && !box.querySelector('.field-error') && ![...box.querySelectorAll('input')].some((x) => Er.localOf(x))) return;
   box.shownKey = key;
   const a = st.actuator;
   const smp = st.sampling;
