@@ -12,7 +12,8 @@
 //! calls ran for 25 s to many minutes. Run natively and in wasm (`wasm-pack test --node`), as
 //! `tests/trap_limits.rs`.
 
-use pidlab::model::plant::{Family, Plant};
+use pidlab::model::plant::Plant;
+use pidlab::rules::arvanitis2012::Process;
 use pidlab::rules::work::{
     design_limit, scan_limit, spent, with_limits, DESIGN_MAX_PIECES, SCAN_MAX_PIECES,
 };
@@ -20,14 +21,9 @@ use pidlab::rules::{self, admissible::admissible, sweep::sweep, Params};
 use pidlab::sim::Scenario;
 use wasm_bindgen_test::wasm_bindgen_test;
 
+/// The ipdt_ir plant k(1 − τ_Z s)e^{−θs}/(s(τ s + 1)), as Algorithm III reads it.
 fn ipdt_ir(k: f64, tau: f64, tau_z: f64, theta: f64) -> Plant {
-    Family::IpdtIr {
-        k,
-        tau,
-        tau_z,
-        theta,
-    }
-    .plant()
+    Process::new(k, tau, tau_z, theta).unwrap().plant()
 }
 
 /// Case 16258's plant (k −0.275, τ 10, τ_Z 544, θ 89.7).
