@@ -220,6 +220,10 @@ struct Judge<'a> {
     n: usize,
     rel: f64,
     seen: std::cell::RefCell<Vec<(LoopKey, Outcome)>>,
+    /// [`super::work::spent`] when the scan began.
+    work0: u64,
+    /// The scan's designs passed [`super::work::SCAN_MAX_PIECES`]: no further design is tuned.
+    over: std::cell::Cell<bool>,
 }
 
 /// What identifies the loop a controller closes around the plant: the exact bit patterns of
@@ -251,11 +255,40 @@ impl<'a> Judge<'a> {
             n: if rule.slow_to_tune() { GRID_SLOW } else { GRID },
             rel: if rule.slow_to_tune() { REL_SLOW } else { REL },
             seen: Default::default(),
+            work0: super::work::spent(),
+            over: Default::default(),
         })
     }
 
-    /// Tunes with `params` and judges the nominal loop.
+    /// Whether the designs tuned so far passed [`super::work::SCAN_MAX_PIECES`] (remembered).
+    fn over_budget(&self) -> bool {
+        if super::work::spent() - self.work0 > super::work::scan_limit() {
+            self.over.set(true);
+        }
+        self.over.get()
+    }
+
+    /// The refusal of a scan of `decl` that passed [`super::work::SCAN_MAX_PIECES`].
+    fn too_costly(&self, decl: &ParamInfo) -> Error {
+        Error::new(
+            format!("params.{}", decl.name),
+            format!(
+                "the scan of {} on this plant would need more than {} simulated pieces of the \
+                 rule's own searches ({} spent; the designs cannot be taken without simulation \
+                 here): no interval",
+                decl.label,
+                super::work::scan_limit(),
+                super::work::spent() - self.work0
+            ),
+        )
+    }
+
+    /// Tunes with `params` and judges the nominal loop; once the scan is over its budget, no
+    /// design (the scan is then refused: [`intervals`]).
     fn outcome(&self, params: &Params) -> Outcome {
+        if self.over_budget() {
+            return Outcome::Fails("over the scan's budget".into());
+        }
         let t = match self.rule.tune(self.plant, params) {
             Err(e) => return Outcome::Fails(e.to_string()),
             Ok(t) => t,
@@ -600,7 +633,11 @@ pub fn intervals(rule: &dyn Rule, plant: &Plant, params: &Params) -> Result<Vec<
     for d in order {
         let mut held = base.clone();
         held.0.remove(&d.name);
-        let iv = scan(&judge, &held, d)?;
+        let iv = scan(&judge, &held, d);
+        if judge.over_budget() {
+            return Err(judge.too_costly(d));
+        }
+        let iv = iv?;
         if !base.0.contains_key(&d.name) && d.required {
             base = base.with(&d.name, iv.suggested);
         }

@@ -31,6 +31,7 @@ pub mod medarametla_manimozhi2018;
 pub mod praveen_kumar_narayana;
 pub mod shamsuzzoha_lee2008;
 pub mod sweep;
+pub mod work;
 
 /// What `methods()` lists for one rule (API.md `MethodInfo`).
 #[derive(Debug, Clone, Serialize, PartialEq)]

@@ -210,9 +210,25 @@ pub fn sweep(
     let mut others = base.clone();
     others.0.remove(&p.name);
     others.validate(&info.id, &info.params)?;
+    // the rules' own searches of all the points together, bounded as an admissible() scan's
+    let work0 = super::work::spent();
     let points = values
         .iter()
         .map(|&v| {
+            let spent = super::work::spent() - work0;
+            if spent > super::work::scan_limit() {
+                return Err(Error::new(
+                    "values",
+                    format!(
+                        "the designs of these {} values would need more than {} simulated pieces \
+                         of the rule's own searches ({spent} spent before {} = {v}): sweep fewer \
+                         values",
+                        values.len(),
+                        super::work::scan_limit(),
+                        p.name
+                    ),
+                ));
+            }
             let mut params = base.clone();
             params.0.insert(p.name.clone(), ParamValue::Number(v));
             point(method, plant, &params, v, sc)

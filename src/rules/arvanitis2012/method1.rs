@@ -292,6 +292,73 @@ pub fn load_criterion(
     criterion: &str,
     t_end: f64,
 ) -> Result<f64> {
+    load_criterion_metered(
+        p,
+        (kp, ki, kd),
+        criterion,
+        t_end,
+        &mut SimMeter::unlimited(),
+    )
+}
+
+/// The simulated pieces of one search, against its limit (a count: the refusal does not depend
+/// on the machine's speed).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct SimMeter {
+    /// Pieces simulated so far.
+    pub(crate) pieces: u64,
+    /// No simulation starts once `pieces` reaches this.
+    pub(crate) limit: u64,
+    /// Set when a simulation was refused for the limit.
+    pub(crate) exhausted: bool,
+}
+
+impl SimMeter {
+    pub(crate) fn new(limit: u64) -> Self {
+        SimMeter {
+            pieces: 0,
+            limit,
+            exhausted: false,
+        }
+    }
+    pub(crate) fn unlimited() -> Self {
+        SimMeter::new(u64::MAX)
+    }
+}
+
+/// The error of a design whose simulated search reached its limit
+/// ([`crate::rules::work::design_limit`]).
+fn alg3_too_costly(zeta: f64, meter: &SimMeter) -> Error {
+    Error::new(
+        "params.zeta",
+        format!(
+            "Algorithm III at ζ = {zeta}: J cannot be taken by Parseval on this loop (|L(j∞)| ≥ 1, \
+             an unstable loop, or a τ_D outside the region where it applies), and the search on \
+             simulations of the load step would need more than {} simulated pieces ({} spent): \
+             no design; try another ζ or plant",
+            meter.limit,
+            meter.pieces
+        ),
+    )
+}
+
+/// [`load_criterion`] with the I-PD gains `(kp, ki, kd)`, counting the simulated pieces in
+/// `meter`: a simulation is not started once the meter has reached its limit (an error then,
+/// and `meter.exhausted` set).
+fn load_criterion_metered(
+    p: &Process,
+    (kp, ki, kd): (f64, f64, f64),
+    criterion: &str,
+    t_end: f64,
+    meter: &mut SimMeter,
+) -> Result<f64> {
+    if meter.pieces >= meter.limit {
+        meter.exhausted = true;
+        return Err(Error::new(
+            "params.zeta",
+            "the simulated search reached its piece limit",
+        ));
+    }
     let plant = p.plant();
     let c = Pid::ipd(kp, ki, kd).to_controller()?;
     let dt = (t_end / 1500.0).max(p.theta / 4.0).min(t_end / 200.0);
@@ -300,6 +367,7 @@ pub fn load_criterion(
     // the regulatory window [0, t_end] and its u∞ exactly as `analysis::metrics` takes them,
     // so the value is the one `criteria::regulatory` gives on `analysis::simulate`'s result.
     let res = crate::sim::simulate(&plant, &c, &sc)?;
+    meter.pieces = meter.pieces.saturating_add(res.trajectory.n_pieces as u64);
     if res.diverged_at.is_some() {
         return Ok(f64::INFINITY);
     }
@@ -336,6 +404,9 @@ pub struct Alg3Info {
     pub simulations: usize,
     /// Criterion evaluations by Parseval ([`algorithm3`]'s root solve; 0 in the reference).
     pub evaluations: usize,
+    /// Simulated pieces of all the simulations counted in `simulations` (what
+    /// [`crate::rules::work::DESIGN_MAX_PIECES`] bounds; 0 when none).
+    pub pieces: u64,
 }
 
 /// Algorithm III's result: `sol` with the criterion of a unit load step there (one more
@@ -345,13 +416,16 @@ fn alg3_result(
     criterion: &str,
     sol: MethodISolution,
     sims: usize,
+    meter: &mut SimMeter,
 ) -> Result<(MethodISolution, Alg3Info)> {
-    let (kp, ki, kd) = p.ipd_from_series(sol.kc, sol.ti, sol.td);
-    let j = load_criterion(p, kp, ki, kd, criterion, p.tau_p * (60.0 + 20.0 * sol.ti))?;
+    let g = p.ipd_from_series(sol.kc, sol.ti, sol.td);
+    let t_end = p.tau_p * (60.0 + 20.0 * sol.ti);
+    let j = load_criterion_metered(p, g, criterion, t_end, meter)?;
     let info = Alg3Info {
         j,
         simulations: sims + 1,
         evaluations: 0,
+        pieces: meter.pieces,
     };
     Ok((sol, info))
 }
@@ -379,6 +453,18 @@ pub fn algorithm3_reference(
     criterion: &str,
     init: Option<(f64, f64)>,
 ) -> Result<(MethodISolution, Alg3Info)> {
+    algorithm3_reference_metered(p, zeta, criterion, init, &mut SimMeter::unlimited())
+}
+
+/// [`algorithm3_reference`] counting its simulated pieces in `meter` (and stopping with an
+/// error at its limit).
+fn algorithm3_reference_metered(
+    p: &Process,
+    zeta: f64,
+    criterion: &str,
+    init: Option<(f64, f64)>,
+    meter: &mut SimMeter,
+) -> Result<(MethodISolution, Alg3Info)> {
     let (d, tz) = (p.d(), p.tz());
     let (td0, ti0) = alg3_init(d, tz, init)?;
     let mut sims = 0usize;
@@ -399,8 +485,8 @@ pub fn algorithm3_reference(
                 Ok(v) => v,
                 Err(_) => return Ok(f64::INFINITY),
             };
-            let (kp, ki, kd) = p.ipd_from_series(pk.kc, ti, x);
-            load_criterion(p, kp, ki, kd, criterion, t_end)
+            let g = p.ipd_from_series(pk.kc, ti, x);
+            load_criterion_metered(p, g, criterion, t_end, meter)
         };
         let (a, b) = match bracket {
             Some(br) => br,
@@ -437,7 +523,7 @@ pub fn algorithm3_reference(
             let fp = fixed_point(d, tz, td, zeta, ti)?;
             total += fp.4;
             let sol = MethodISolution::at(td, fp, total, outer, (td0, ti0));
-            return alg3_result(p, criterion, sol, sims);
+            return alg3_result(p, criterion, sol, sims, meter);
         }
     }
     Err(Error::new(
@@ -489,18 +575,38 @@ pub fn algorithm3_near(
     init: Option<(f64, f64)>,
     hint: Option<f64>,
 ) -> Result<(MethodISolution, Alg3Info)> {
+    let mut meter = SimMeter::new(crate::rules::work::design_limit());
+    let r = algorithm3_metered(p, zeta, criterion, init, hint, &mut meter);
+    // what the design cost, charged also when it fails (a cache hit charges it again)
+    crate::rules::work::charge(meter.pieces);
+    if meter.exhausted {
+        return Err(alg3_too_costly(zeta, &meter));
+    }
+    r
+}
+
+/// [`algorithm3_near`] with its simulations counted in `meter`.
+fn algorithm3_metered(
+    p: &Process,
+    zeta: f64,
+    criterion: &str,
+    init: Option<(f64, f64)>,
+    hint: Option<f64>,
+    meter: &mut SimMeter,
+) -> Result<(MethodISolution, Alg3Info)> {
     let (d, tz) = (p.d(), p.tz());
     let (td0, ti0) = alg3_init(d, tz, init)?;
     // the reference's first step, so that its errors (ζ with no I-PD setting) are the same
     fixed_point(d, tz, td0, zeta, ti0)?;
     for how in [Alg3Eval::Parseval, Alg3Eval::Simulated] {
-        match alg3_root(p, zeta, criterion, (td0, ti0), hint, how) {
+        match alg3_root(p, zeta, criterion, (td0, ti0), hint, how, meter) {
             Ok(Some(r)) => return Ok(r),
             Err(e) if e.path == "params.criterion" => return Err(e),
+            _ if meter.exhausted => return Err(alg3_too_costly(zeta, meter)),
             _ => {}
         }
     }
-    algorithm3_reference(p, zeta, criterion, Some((td0, ti0)))
+    algorithm3_reference_metered(p, zeta, criterion, Some((td0, ti0)), meter)
 }
 
 /// Relative tolerance on τ_D of the root of g.
@@ -528,7 +634,13 @@ fn alg3_in_region(d: f64, tz: f64, ti: f64, y: f64) -> bool {
 
 /// The simulated J at fixed τ_I (K_C from Eq. 11 at (τ_I, y)), as the reference's Step 5
 /// evaluates it; `None` outside the admissible region or for a diverging response.
-fn alg3_simulated_j(p: &Process, ti: f64, y: f64, criterion: &str) -> Result<Option<f64>> {
+fn alg3_simulated_j(
+    p: &Process,
+    ti: f64,
+    y: f64,
+    criterion: &str,
+    meter: &mut SimMeter,
+) -> Result<Option<f64>> {
     let (d, tz) = (p.d(), p.tz());
     if !alg3_in_region(d, tz, ti, y) {
         return Ok(None);
@@ -536,8 +648,8 @@ fn alg3_simulated_j(p: &Process, ti: f64, y: f64, criterion: &str) -> Result<Opt
     let Ok(pk) = IpdLoop::new(d, tz, ti, y).phase_peak() else {
         return Ok(None);
     };
-    let (kp, ki, kd) = p.ipd_from_series(pk.kc, ti, y);
-    let j = load_criterion(p, kp, ki, kd, criterion, p.tau_p * (60.0 + 20.0 * ti))?;
+    let g = p.ipd_from_series(pk.kc, ti, y);
+    let j = load_criterion_metered(p, g, criterion, p.tau_p * (60.0 + 20.0 * ti), meter)?;
     Ok(j.is_finite().then_some(j))
 }
 
@@ -549,6 +661,7 @@ fn alg3_eval(
     criterion: &str,
     how: Alg3Eval,
     n: &mut (usize, usize),
+    meter: &mut SimMeter,
 ) -> Result<Option<(f64, f64)>> {
     match how {
         Alg3Eval::Parseval => {
@@ -560,8 +673,8 @@ fn alg3_eval(
             let h = ALG3_FD * y;
             n.0 += 2;
             let (Some(jm), Some(jp)) = (
-                alg3_simulated_j(p, ti, y - h, criterion)?,
-                alg3_simulated_j(p, ti, y + h, criterion)?,
+                alg3_simulated_j(p, ti, y - h, criterion, meter)?,
+                alg3_simulated_j(p, ti, y + h, criterion, meter)?,
             ) else {
                 return Ok(None);
             };
@@ -630,6 +743,7 @@ fn alg3_root(
     (td0, ti0): (f64, f64),
     hint: Option<f64>,
     how: Alg3Eval,
+    meter: &mut SimMeter,
 ) -> Result<Option<(MethodISolution, Alg3Info)>> {
     let (d, tz) = (p.d(), p.tz());
     let mut evals = 0usize;
@@ -663,8 +777,8 @@ fn alg3_root(
     let h = 1e-3 * x0;
     evals += 2;
     let (Some((_, g0)), Some((_, gh))) = (
-        alg3_eval(p, ti, x0, criterion, how, &mut n)?,
-        alg3_eval(p, ti, x0 + h, criterion, how, &mut n)?,
+        alg3_eval(p, ti, x0, criterion, how, &mut n, meter)?,
+        alg3_eval(p, ti, x0 + h, criterion, how, &mut n, meter)?,
     ) else {
         return Ok(None);
     };
@@ -677,7 +791,7 @@ fn alg3_root(
             return Ok(None);
         };
         *evals += 1;
-        Ok(alg3_eval(p, ti, x, criterion, how, &mut n)?.map(|r| r.1))
+        Ok(alg3_eval(p, ti, x, criterion, how, &mut n, meter)?.map(|r| r.1))
     };
     let (mut xa, mut ga) = (x0, g0);
     let mut xb = (x0 - g0 / c0).clamp(0.5 * x0, 2.0 * x0);
@@ -741,9 +855,9 @@ fn alg3_root(
     let sol = MethodISolution::at(td, fp, total, evals, (td0, ti0));
     if how == Alg3Eval::Simulated {
         // the reference's last step: J simulated there
-        return alg3_result(p, criterion, sol, n.0).map(Some);
+        return alg3_result(p, criterion, sol, n.0, meter).map(Some);
     }
-    let Some((j, _)) = alg3_eval(p, sol.ti, td, criterion, how, &mut n)? else {
+    let Some((j, _)) = alg3_eval(p, sol.ti, td, criterion, how, &mut n, meter)? else {
         return Ok(None);
     };
     Ok(Some((
@@ -752,6 +866,7 @@ fn alg3_root(
             j,
             simulations: n.0,
             evaluations: n.1,
+            pieces: meter.pieces,
         },
     )))
 }

@@ -568,9 +568,10 @@ impl super::Rule for Alg3 {
 /// How many Algorithm III solutions [`alg3_cached`] keeps.
 const ALG3_CACHE_SIZE: usize = 16;
 
-/// An Algorithm III design's cache key: the exact bit patterns of K̄, τ̄_P, τ̄_Z, d̄, ζ and the
-/// criterion (a hit is the same design, never a neighbour's).
-type Alg3Key = ([u64; 5], bool);
+/// An Algorithm III design's cache key: the exact bit patterns of K̄, τ̄_P, τ̄_Z, d̄, ζ, the
+/// criterion and the design's simulated-piece limit (a hit is the same design, never a
+/// neighbour's).
+type Alg3Key = ([u64; 5], bool, u64);
 
 std::thread_local! {
     /// The last Algorithm III solutions by key.
@@ -582,6 +583,8 @@ fn alg3_key(p: &Process, zeta: f64, criterion: &str) -> Alg3Key {
     (
         [p.k, p.tau_p, p.tau_z, p.theta, zeta].map(f64::to_bits),
         criterion == "isensdco",
+        // a design is found (or refused) under the limit in force: kept apart per limit
+        crate::rules::work::design_limit(),
     )
 }
 
@@ -595,6 +598,9 @@ pub fn alg3_cached(p: &Process, zeta: f64, criterion: &str) -> Result<(MethodISo
     let key = alg3_key(p, zeta, criterion);
     let hit = ALG3_CACHE.with(|c| c.borrow().get(&key));
     if let Some(r) = hit {
+        // the work the design cost when computed ([`crate::rules::work`]: a scan's count does
+        // not depend on what the cache holds)
+        crate::rules::work::charge(r.1.pieces);
         return Ok(r);
     }
     let r = algorithm3(p, zeta, criterion, None)?;
