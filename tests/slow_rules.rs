@@ -61,7 +61,8 @@ fn gains(t: &Tuning) -> Vec<u64> {
 /// 0.99926, window 9984) would be simulated at θ/52 where the rule asks θ/2236, and that run
 /// differs from its check run at θ/26 by 2.2e-2 of its largest value: the reference's J there
 /// was never certified (it agreed within 1.07e-5 because J is an average). The test asserts
-/// that refusal, and that the root solve (Parseval, no simulation) still answers.
+/// that refusal (on `params.zeta`, the simulator's reason inside), and that the root solve
+/// (Parseval, no simulation) still answers.
 #[test]
 fn algorithm3_root_solve_is_the_papers_fixed_point() {
     let issue15 = Process::new(0.478, 0.536, 2.80, 0.521).unwrap();
@@ -98,10 +99,15 @@ fn algorithm3_root_solve_is_the_papers_fixed_point() {
     }
     let (a, ia) = algorithm3(&issue15, 1.79, "isenscod", None).unwrap();
     assert!(a.td > 0.0 && ia.j.is_finite() && ia.simulations == 0);
-    let e = algorithm3_reference(&issue15, 1.79, "isenscod", None).unwrap_err();
+    let e = algorithm3_reference(&issue15, 1.79, "isenscod", None)
+        .unwrap_err()
+        .to_string();
     assert!(
-        e.to_string()
-            .starts_with("scenario.t_end: this loop is nearly neutral"),
+        e.starts_with("params.zeta: Algorithm III at ζ = 1.79"),
+        "{e}"
+    );
+    assert!(
+        e.contains("(scenario.t_end: this loop is nearly neutral"),
         "{e}"
     );
 }

@@ -454,6 +454,24 @@ pub fn algorithm3_reference(
     init: Option<(f64, f64)>,
 ) -> Result<(MethodISolution, Alg3Info)> {
     algorithm3_reference_metered(p, zeta, criterion, init, &mut SimMeter::unlimited())
+        .map_err(|e| simulation_refused(zeta, e))
+}
+
+/// A simulation of the search that the simulator refused (its error is on the scenario's
+/// fields: a window it cannot simulate accurately, e.g. on a nearly neutral loop,
+/// `crate::sim`'s "Near the neutral limit") is the design's refusal, on `params.zeta`: the
+/// scenario is the search's own, not the caller's.
+fn simulation_refused(zeta: f64, e: Error) -> Error {
+    if !e.path.starts_with("scenario") {
+        return e;
+    }
+    Error::new(
+        "params.zeta",
+        format!(
+            "Algorithm III at ζ = {zeta}: J cannot be taken by Parseval on this loop and a \
+             simulation of the load step its search needs is refused ({e}); try another ζ or plant"
+        ),
+    )
 }
 
 /// [`algorithm3_reference`] counting its simulated pieces in `meter` (and stopping with an
@@ -582,7 +600,7 @@ pub fn algorithm3_near(
     if meter.exhausted {
         return Err(alg3_too_costly(zeta, &meter));
     }
-    r
+    r.map_err(|e| simulation_refused(zeta, e))
 }
 
 /// [`algorithm3_near`] with its simulations counted in `meter`.
