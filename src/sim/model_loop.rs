@@ -24,7 +24,7 @@ use crate::error::{Error, Result};
 use crate::model::controller::Controller;
 use crate::model::plant::Plant;
 use crate::model::ss::{balance, realize, realize_paths, Ss};
-use crate::sim::single::{capped_need, divisor_step, neutral_bound, DELAY_PIECES, FAST_STEP};
+use crate::sim::single::{divisor_step, neutral_bound, DELAY_PIECES, FAST_STEP};
 use crate::sim::{
     interpolation_inverse, lagrange, piece_exponential, sample, Response, Scenario, Trajectory,
     DEG, NODES,
@@ -610,23 +610,24 @@ fn fill_histories(
 
 /// [`integrate`] at the rule's step ([`internal_step`]); a run whose step the piece cap set
 /// above the neutral rule's is checked against a second run at about twice the step and
-/// refused if less accurate than 1e-10 (`super::neutral`, as the one-delay loop).
+/// refused if they differ by more than 1e-9 (`super::neutral::checked`; no retry at a finer
+/// step: the breakpoints add pieces).
 fn integrate_checked(mm: &MultiModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
-    let h = internal_step(mm, sc);
-    let run = integrate(mm, sc, h)?;
-    let (theta, ae) = (mm.min_delay(), mm.neutral_gain());
-    if let Some(need) = capped_need(theta, ae, h) {
-        // the grid divides the plant's dead time (or t_end without one): `internal_step`
-        let span = if mm.delays[0] > 0.0 {
-            mm.delays[0]
-        } else {
-            sc.t_end
-        };
-        let (hc, ratio) = super::neutral::coarse_step(span, h);
-        let coarse = integrate(mm, sc, hc)?;
-        super::neutral::verify(&run.0, &coarse.0, ratio, ae, need, sc.t_end)?;
-    }
-    Ok(run)
+    // the grid divides the plant's dead time (or t_end without one): `internal_step`
+    let span = if mm.delays[0] > 0.0 {
+        mm.delays[0]
+    } else {
+        sc.t_end
+    };
+    super::neutral::checked(
+        (mm.min_delay(), mm.neutral_gain()),
+        span,
+        internal_step(mm, sc),
+        sc.t_end,
+        |_| None,
+        |h| integrate(mm, sc, h),
+        |r| &r.0,
+    )
 }
 
 /// Integrates the loop piece by piece (see the module docs): the continuous response and the

@@ -6,9 +6,8 @@
 //! interpolation error injected on each piece, which returns every θ multiplied by `E`, could
 //! be amplified by the scheme on the barely damped chain of roots near `Re s = ln|E|/θ`. Over a
 //! long window on a loop very close to the limit that step needs more pieces than the limit
-//! allows, and the step is then capped by that limit (`single::internal_step`,
-//! `single::neutral_bound`). Such a run is often still
-//! accurate, but its error then grows exponentially in time (measured on issue 15's plant under
+//! allows, and the step is then capped by that limit (`single::neutral_bound`). Such a run is
+//! often still accurate, but its error then grows exponentially in time (measured on issue 15's plant under
 //! Algorithm III at ζ 1.79, |E| = 0.99968, at θ/131 against θ/262, samples every 0.01: 2e-14
 //! over [0, 100], 2.9e-12 at 150, 1.2e-10 at 350, 3.9e-9 at 500 — largest at the jumps of u,
 //! `t_load + kθ`; at θ/66, 3.4e-4 by t = 1000), not as `h⁸`, so no Richardson factor bounds it.
@@ -17,12 +16,49 @@
 //! difference of y and u, relative to their largest magnitude, is taken as the capped run's
 //! error — an upper bound whenever the finer run is at most half as wrong as the coarser one,
 //! which both regimes give (`O(h⁸)`: 1/256; exponential growth: a rate that rises with h) and
-//! 256 times too cautious in the first. Above [`CHECK_TOL`] the run is refused with an error
-//! saying so, and the time up to which the two runs agreed within it as the window to try; a
-//! capped run is never returned silently inaccurate.
+//! 256 times too cautious in the first. Above [`CHECK_TOL`] the one-delay loop tries once more
+//! at the finest step its whole piece limit allows (checked against the first run); what still
+//! fails is refused with an error saying so, and the time up to which the two runs agreed
+//! within it as the window to try. [`checked`] is that procedure, for every integrator: a capped
+//! run is never returned silently inaccurate.
 
+use super::single::capped_need;
 use super::trajectory::Trajectory;
 use crate::error::{Error, Result};
+
+/// A run at the rule's step `h`, checked when the piece cap set `h` above the neutral rule's
+/// step (module docs). `run(h)` integrates at a step and `traj` reads a run's trajectory;
+/// `(θ, |E|)` are the loop's delay and neutral gain (its smallest delay and `ρ(|E|)` for several
+/// delays), `span` what the grid divides (θ, or t_end without a dead time); `finest(need)` a
+/// finer step the integrator's whole piece limit allows (the one-delay loop), tried once when
+/// the first check fails, checked against the first run.
+pub(crate) fn checked<R>(
+    (theta, ae): (f64, f64),
+    span: f64,
+    h: f64,
+    t_end: f64,
+    finest: impl FnOnce(f64) -> Option<f64>,
+    run: impl Fn(f64) -> Result<R>,
+    traj: impl Fn(&R) -> &Trajectory,
+) -> Result<R> {
+    let first = run(h)?;
+    let Some(need) = capped_need(theta, ae, h) else {
+        return Ok(first);
+    };
+    let (hc, ratio) = coarse_step(span, h);
+    let coarse = run(hc)?;
+    let Err(refused) = verify(traj(&first), traj(&coarse), ratio, ae, need, t_end) else {
+        return Ok(first);
+    };
+    let Some(hf) = finest(need) else {
+        return Err(refused);
+    };
+    let fine = run(hf)?;
+    if capped_need(theta, ae, hf).is_some() {
+        verify(traj(&fine), traj(&first), h / hf, ae, need, t_end)?;
+    }
+    Ok(fine)
+}
 
 /// The largest difference between a capped run and its check run that is accepted, relative
 /// to the response's largest |y|, |u|: an order above the simulator's stated 1e-10, because on
@@ -32,11 +68,11 @@ use crate::error::{Error, Result};
 /// one over [0, 20], and two of its capped runs, θ/4342 against θ/2171 over t_end = 60, differ
 /// by 2.2e-10; linear runs at θ/2171…θ/5239 agree to 2e-12), while a run in the growth regime
 /// passes 1e-9 within a few dozen time units of passing 1e-10 (×3 per 50 time units there).
-pub(crate) const CHECK_TOL: f64 = 1e-9;
+const CHECK_TOL: f64 = 1e-9;
 
 /// The check's coarse step and the ratio of the steps: for `h = span/N`, `span/⌊N/2⌋` (at least
 /// one piece per span) and `N/⌊N/2⌋`.
-pub(crate) fn coarse_step(span: f64, h: f64) -> (f64, f64) {
+fn coarse_step(span: f64, h: f64) -> (f64, f64) {
     let n = (span / h).round().max(1.0);
     let nc = (n / 2.0).floor().max(1.0);
     (span / nc, n / nc)
@@ -57,7 +93,7 @@ fn rel(d: f64, m: f64) -> f64 {
 /// differences relative to the fine run's largest |y|, |u| there. Returns the bound and the last
 /// check time at which the differences so far were still within [`CHECK_TOL`] of those
 /// magnitudes (`None` if they always were).
-pub(crate) fn estimate(fine: &Trajectory, coarse: &Trajectory) -> (f64, Option<f64>) {
+fn estimate(fine: &Trajectory, coarse: &Trajectory) -> (f64, Option<f64>) {
     let end = fine.end().min(coarse.end());
     let (mut ym, mut um, mut dy, mut du) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
     // the running largest differences, recorded where they grow: (time before, dy, du)
@@ -100,7 +136,7 @@ pub(crate) fn estimate(fine: &Trajectory, coarse: &Trajectory) -> (f64, Option<f
 
 /// Refuses a capped run whose error bound ([`estimate`]) is above [`CHECK_TOL`]; `ae` is `|E|`,
 /// `need` the step the neutral rule asked for, `ratio` the coarse run's step over the fine's.
-pub(crate) fn verify(
+fn verify(
     fine: &Trajectory,
     coarse: &Trajectory,
     ratio: f64,

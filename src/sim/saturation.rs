@@ -85,7 +85,7 @@
 
 use super::bernstein::{casteljau, first_crossing, PieceForms, ZERO_DEPTH};
 use super::scenario::Scenario;
-use super::single::{capped_need, divisor_step, neutral_bound, LoopModel, DELAY_PIECES, FAST_STEP};
+use super::single::{divisor_step, neutral_bound, LoopModel, DELAY_PIECES, FAST_STEP};
 use super::trajectory::{lagrange, start_interpolation_inverse, Trajectory, DEG, NODES};
 use crate::error::{Error, Result};
 use crate::model::controller::Controller;
@@ -878,7 +878,8 @@ fn classify(mode: Mode, p: Point, lim: Limits, conditional: bool, eps: f64) -> M
 
 /// Simulates the continuous loop with limits (module docs). A run whose step the piece cap set
 /// above the neutral rule's is checked against a second run at about twice the step and
-/// refused if less accurate than 1e-10 (`super::neutral`, as the one-delay loop).
+/// refused if they differ by more than 1e-9 (`super::neutral::checked`; no retry at a finer
+/// step: switches add pieces the step cannot foresee).
 pub(crate) fn integrate(
     plant: &Plant,
     c: &Controller,
@@ -894,13 +895,15 @@ pub(crate) fn integrate(
         sc.setpoint.size != 0.0 && sc.setpoint.time <= sc.t_end,
     )?;
     let h = sat_step(&m, theta, sc);
-    let run = integrate_at(&m, theta, sc, lim, h)?;
-    if let Some(need) = capped_need(theta, m.e.abs(), h) {
-        let (hc, ratio) = super::neutral::coarse_step(theta, h);
-        let coarse = integrate_at(&m, theta, sc, lim, hc)?;
-        super::neutral::verify(&run.traj, &coarse.traj, ratio, m.e.abs(), need, sc.t_end)?;
-    }
-    Ok(run)
+    super::neutral::checked(
+        (theta, m.e.abs()),
+        theta,
+        h,
+        sc.t_end,
+        |_| None,
+        |h| integrate_at(&m, theta, sc, lim, h),
+        |r| &r.traj,
+    )
 }
 
 /// The internal step of the loop with limits.

@@ -353,27 +353,15 @@ fn step_pieces(sc: &Scenario, h: f64, tol: f64) -> (Vec<f64>, Vec<f64>) {
 /// allows ([`finest_neutral_step`]), checked against the first, and refused if that fails too.
 pub(crate) fn integrate(m: &LoopModel, sc: &Scenario) -> Result<(Trajectory, Option<f64>)> {
     let h = internal_step(m, sc);
-    let run = integrate_at(m, sc, h)?;
-    let ae = m.e.abs();
-    let Some(need) = capped_need(m.delay, ae, h) else {
-        return Ok(run);
-    };
-    let (hc, ratio) = super::neutral::coarse_step(m.delay, h);
-    let coarse = integrate_at(m, sc, hc)?;
-    let Err(refused) = super::neutral::verify(&run.0, &coarse.0, ratio, ae, need, sc.t_end) else {
-        return Ok(run);
-    };
-    // refused at a quarter of the piece limit: once more at the finest step the whole limit
-    // allows (the refused run its check run), else the refusal stands
-    let Some(hf) = finest_neutral_step(m, sc, need, h) else {
-        return Err(refused);
-    };
-    let fine = integrate_at(m, sc, hf)?;
-    if capped_need(m.delay, ae, hf).is_none() {
-        return Ok(fine);
-    }
-    super::neutral::verify(&fine.0, &run.0, h / hf, ae, need, sc.t_end)?;
-    Ok(fine)
+    super::neutral::checked(
+        (m.delay, m.e.abs()),
+        m.delay,
+        h,
+        sc.t_end,
+        |need| finest_neutral_step(m, sc, need, h),
+        |h| integrate_at(m, sc, h),
+        |r| &r.0,
+    )
 }
 
 /// [`integrate`] with the internal step `h` (a divisor of the dead time, or of `t_end` without
