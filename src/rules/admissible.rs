@@ -220,8 +220,8 @@ struct Judge<'a> {
     n: usize,
     rel: f64,
     seen: std::cell::RefCell<Vec<(LoopKey, Outcome)>>,
-    /// [`super::work::spent`] when the scan began.
-    work0: u64,
+    /// The rules' own simulated work since the scan began ([`super::work`]).
+    work: super::work::Scan,
     /// The scan's designs passed [`super::work::SCAN_MAX_PIECES`]: no further design is tuned.
     over: std::cell::Cell<bool>,
 }
@@ -255,14 +255,14 @@ impl<'a> Judge<'a> {
             n: if rule.slow_to_tune() { GRID_SLOW } else { GRID },
             rel: if rule.slow_to_tune() { REL_SLOW } else { REL },
             seen: Default::default(),
-            work0: super::work::spent(),
+            work: super::work::Scan::begin(),
             over: Default::default(),
         })
     }
 
     /// Whether the designs tuned so far passed [`super::work::SCAN_MAX_PIECES`] (remembered).
     fn over_budget(&self) -> bool {
-        if super::work::spent() - self.work0 > super::work::scan_limit() {
+        if self.work.over() {
             self.over.set(true);
         }
         self.over.get()
@@ -278,7 +278,7 @@ impl<'a> Judge<'a> {
                  here): no interval",
                 decl.label,
                 super::work::scan_limit(),
-                super::work::spent() - self.work0
+                self.work.spent()
             ),
         )
     }

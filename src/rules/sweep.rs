@@ -211,12 +211,12 @@ pub fn sweep(
     others.0.remove(&p.name);
     others.validate(&info.id, &info.params)?;
     // the rules' own searches of all the points together, bounded as an admissible() scan's
-    let work0 = super::work::spent();
+    let work = super::work::Scan::begin();
     let points = values
         .iter()
         .map(|&v| {
-            let spent = super::work::spent() - work0;
-            if spent > super::work::scan_limit() {
+            if work.over() {
+                let spent = work.spent();
                 return Err(Error::new(
                     "values",
                     format!(

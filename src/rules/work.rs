@@ -63,3 +63,26 @@ pub(crate) fn charge(pieces: u64) {
 pub fn spent() -> u64 {
     SPENT.with(Cell::get)
 }
+
+/// The rules' own simulated work of one `admissible()` scan or one sweep since it began,
+/// against [`scan_limit`].
+pub(crate) struct Scan {
+    start: u64,
+}
+
+impl Scan {
+    /// A scan beginning now.
+    pub(crate) fn begin() -> Scan {
+        Scan { start: spent() }
+    }
+
+    /// Simulated pieces charged since the scan began.
+    pub(crate) fn spent(&self) -> u64 {
+        spent() - self.start
+    }
+
+    /// Whether the scan passed its limit.
+    pub(crate) fn over(&self) -> bool {
+        self.spent() > scan_limit()
+    }
+}
