@@ -58,9 +58,10 @@ fn gains(t: &Tuning) -> Vec<u64> {
 /// is 1e-9, the reference's 1e-5). The ζ 1.79 case is no longer compared: since the
 /// simulator checks a run whose step its piece limit caps on a nearly neutral loop
 /// (`sim/neutral.rs`), the reference is refused there — one of its iterates (|L(j∞)| =
-/// 0.99926, window 9984) would be simulated at θ/52 where the rule asks θ/2236, and that run
-/// differs from its check run at θ/26 by 2.2e-2 of its largest value: the reference's J there
-/// was never certified (it agreed within 1.07e-5 because J is an average). The test asserts
+/// 0.99926, window 9984) would be simulated at θ/52 (the finest the piece limit allows) where
+/// the rule asks θ/2236, and that run differs from the first, capped run at θ/14 by 2.2e-2 of
+/// its largest value (measured 2026-11-28): the reference's J there was never certified (it
+/// agreed within 1.07e-5, measured 2026-11-27, because J is an average). The test asserts
 /// that refusal (on `params.zeta`, the simulator's reason inside), and that the root solve
 /// (Parseval, no simulation) still answers.
 #[test]
